@@ -1,0 +1,23 @@
+// `shotlab run`: a scene file simulated headless, with its result, events and trajectory written out.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shotlab {
+
+struct RunOptions {
+  std::string scene;
+  std::optional<double> duration;      // s, overrides the scene's
+  std::vector<std::string> overrides;  // PATH=VALUE
+  std::string out;                     // RESULT.json, empty: none
+  std::string trajectory;              // CSV, empty: none
+  double sample_rate = 60;             // Hz, trajectory samples (also the advance() slice)
+  bool until_rest = false;             // stop early once every ball is at rest
+  bool quiet = false;
+};
+
+// Exit status: 0 success, 1 bad input (message on stderr), 3 the simulation stopped (step limit, non-finite).
+int run_scene(const RunOptions& options);
+
+}  // namespace shotlab

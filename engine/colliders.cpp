@@ -1,0 +1,61 @@
+#include "colliders.hpp"
+
+namespace shotlab {
+namespace {
+
+bool over_hole(const std::vector<Hole>& holes, const Vec3& p, const Vec3& n) {
+  for (const Hole& h : holes) {
+    Vec3 d = p - h.center;
+    d -= glm::dot(d, n) * n;  // in-plane offset
+    if (glm::dot(d, d) < h.radius * h.radius) return true;
+  }
+  return false;
+}
+
+// Ball centre p against the point q nearest to it on a convex core of radius rc (sphere, capsule axis).
+Penetration from_point(const Vec3& p, double r, const Vec3& q, double rc) {
+  const Vec3 d = p - q;
+  const double dist = glm::length(d);
+  // A centre exactly on the core has no defined normal; any direction is as good, up is the least surprising.
+  const Vec3 n = dist > 0 ? d / dist : kUp;
+  return {r + rc - dist, n};
+}
+
+struct Probe {
+  const Vec3& p;
+  double r;
+
+  std::optional<Penetration> operator()(const Plane& s) const {
+    if (over_hole(s.holes, p, s.normal)) return std::nullopt;
+    return Penetration{r - glm::dot(p - s.point, s.normal), s.normal};
+  }
+  std::optional<Penetration> operator()(const BoundedPlane& s) const {
+    const Vec3 n = glm::normalize(glm::cross(s.u, s.v));
+    const Vec3 d = p - s.origin;
+    const double du = glm::dot(d, s.u), dv = glm::dot(d, s.v);
+    if (du <= 0 || du >= glm::dot(s.u, s.u) || dv <= 0 || dv >= glm::dot(s.v, s.v)) return std::nullopt;
+    if (over_hole(s.holes, p, n)) return std::nullopt;
+    return Penetration{r - glm::dot(d, n), n};
+  }
+  std::optional<Penetration> operator()(const StaticSphere& s) const { return from_point(p, r, s.center, s.radius); }
+  std::optional<Penetration> operator()(const Capsule& s) const {
+    // Nearest point of segment a-b: clamp the projection parameter to [0, 1].
+    const Vec3 ab = s.b - s.a;
+    const double len2 = glm::dot(ab, ab);
+    const double t = len2 > 0 ? std::clamp(glm::dot(p - s.a, ab) / len2, 0.0, 1.0) : 0.0;
+    return from_point(p, r, s.a + t * ab, s.radius);
+  }
+};
+
+}  // namespace
+
+std::optional<Penetration> penetration(const Shape& shape, const Vec3& p, double r) {
+  return std::visit(Probe{p, r}, shape);
+}
+
+const char* shape_name(const Shape& shape) {
+  static constexpr const char* names[] = {"plane", "bounded_plane", "sphere", "capsule"};
+  return names[shape.index()];
+}
+
+}  // namespace shotlab

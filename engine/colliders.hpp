@@ -1,0 +1,64 @@
+// Static colliders (MODEL.md section 4.4). Each answers one question about a ball of radius R at centre p:
+// how deep is it in (penetration depth, > 0 when touching) and along which unit normal is it pushed out.
+#pragma once
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "vec.hpp"
+
+namespace shotlab {
+
+struct Penetration {
+  double depth;  // m, > 0 means overlap
+  Vec3 normal;   // unit, from the collider towards the ball centre
+};
+
+// A circular opening in a plane (a pocket): a ball whose centre is over it gets no support from the plane.
+struct Hole {
+  Vec3 center;    // on the plane
+  double radius;  // m
+};
+
+// Infinite plane through `point` with unit `normal` pointing to the free side (eq. 4.8). Optional holes.
+struct Plane {
+  Vec3 point;
+  Vec3 normal;
+  std::vector<Hole> holes;
+};
+
+// Parallelogram spanned by u and v at origin; normal = u^ x v^ (eq. 4.9). Contact only while the centre projects
+// inside it. Optional holes.
+struct BoundedPlane {
+  Vec3 origin, u, v;
+  std::vector<Hole> holes;
+};
+
+// Fixed sphere (eq. 4.10).
+struct StaticSphere {
+  Vec3 center;
+  double radius;
+};
+
+// Sphere of radius `radius` swept from a to b (eq. 4.11): cushions and pocket jaws.
+struct Capsule {
+  Vec3 a, b;
+  double radius;
+};
+
+using Shape = std::variant<Plane, BoundedPlane, StaticSphere, Capsule>;
+
+struct Collider {
+  std::string name;      // "bed", "cushion-3", ... used in events and diagnostics
+  Shape shape;
+  std::string material;  // key into Model::materials
+};
+
+// Depth and normal for a ball (centre p, radius r); nullopt when the collider cannot touch it at all (outside a
+// bounded plane, over a hole). A returned depth may be negative: the gap to contact, used to bound steps.
+std::optional<Penetration> penetration(const Shape& shape, const Vec3& p, double r);
+
+const char* shape_name(const Shape& shape);
+
+}  // namespace shotlab

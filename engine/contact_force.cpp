@@ -1,0 +1,41 @@
+#include "contact_force.hpp"
+
+namespace shotlab {
+
+ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& k, double sharpness) {
+  ContactForce out;
+  const Vec3& n = k.normal;
+  const double rate = -glm::dot(k.v_rel, n);  // d' > 0 while the bodies approach
+  const double elastic = mat.stiffness * std::pow(k.depth, mat.exponent);
+  const double fn = mat.damping_law == DampingLaw::Linear ? elastic + mat.damping * rate
+                                                          : elastic * (1.0 + mat.damping * rate);
+  // Clamp: the damping term turns negative while the bodies separate; a contact can push but never pull.
+  out.normal = std::max(fn, 0.0);
+  out.force = out.normal * n;
+  if (out.normal == 0.0) return out;
+
+  // Coulomb friction against the tangential slip, its sign smoothed by fricstep (MODEL.md appendix B).
+  const Vec3 u = k.slip - glm::dot(k.slip, n) * n;
+  const double u_len = glm::length(u);
+  const double slide = fricstep(sharpness * u_len);  // 0 at no slip, 1 once slip > 1/sharpness
+  if (mat.friction > 0 && u_len > 0) {
+    out.friction = -(mat.friction * out.normal * slide / u_len) * u;
+    out.force += out.friction;
+  }
+  // Rolling resistance: only while (nearly) rolling, i.e. weighted by 1 - slide, against the tangential motion.
+  if (mat.rolling_resistance > 0) {
+    const Vec3 vt = k.v_rel - glm::dot(k.v_rel, n) * n;
+    const double vt_len = glm::length(vt);
+    if (vt_len > 0) {
+      const double mag = mat.rolling_resistance * out.normal * fricstep(sharpness * vt_len) * (1.0 - slide);
+      out.rolling = -(mag / vt_len) * vt;
+      out.force += out.rolling;
+    }
+  }
+  // Spin friction about the normal; the contact patch speed r*w sets the smoothing, like any slip.
+  if (mat.spin_friction > 0)
+    out.spin_torque = -mat.spin_friction * k.radius * out.normal * fricstep(sharpness * k.radius * k.spin_rel);
+  return out;
+}
+
+}  // namespace shotlab

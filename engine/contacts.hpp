@@ -1,0 +1,48 @@
+// Contact detection: which bodies touch, and the force each contact carries. The right-hand side, the diagnostics
+// and the event detector all see contacts through for_each_contact, so there is one definition of "touching".
+#pragma once
+#include <utility>
+#include <vector>
+
+#include "contact_force.hpp"
+#include "model.hpp"
+#include "state.hpp"
+
+namespace shotlab {
+
+struct Contact {
+  int ball;          // ball A
+  int other_ball;    // ball B, or -1 when B is a collider
+  int collider;      // collider index, or -1 when B is a ball
+  double depth;      // m
+  Vec3 normal;       // unit, from B towards A
+  Vec3 point;        // contact point (on A's surface), m
+  ContactForce force;  // on A
+};
+
+// Per-model lookups done once (material of each collider) plus reusable buffers, so that the right-hand side does
+// no map lookups and no allocation. Holds pointers into the Model it was made from: rebuild it with the model.
+struct ContactCache {
+  explicit ContactCache(const Model& model);
+  std::vector<const ContactMaterial*> collider_material;
+  const ContactMaterial* ball_ball;
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<int> order;
+};
+
+// Ball pairs whose spheres overlap, found by sweep-and-prune along x: O(n log n + pairs), not O(n^2).
+void overlapping_pairs(const Model& model, const State& state, const double* x, ContactCache& cache);
+
+// Calls fn(const Contact&) for every touching ball-collider and ball-ball pair of balls in play.
+// `x` is the state vector (9 numbers a ball), which may differ from state.x (the integrator's trial states).
+template <class Fn>
+void for_each_contact(const Model& model, const State& state, const double* x, ContactCache& cache, Fn&& fn);
+
+// Smallest time before any still-separated pair (ball-ball or ball-collider) could touch, given current speeds and
+// an acceleration bound; +inf when nothing can. Adaptive steps are capped by it so that no contact, however
+// glancing, falls between two steps (MODEL.md, "Numerical facts").
+double time_to_possible_contact(const Model& model, const State& state, const double* x);
+
+}  // namespace shotlab
+
+#include "contacts_impl.hpp"

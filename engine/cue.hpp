@@ -1,0 +1,45 @@
+// Cue strike: from cue speed, aim, elevation and tip offset to the ball's initial velocity and spin.
+//
+// Model (the standard rigid-cue impulse model, as in pooltool and Dr. Dave Alciatore's technical proofs): the cue is
+// a rigid body of mass M moving at V0 along its axis d; the tip hits the ball (mass m, radius R, I = 2/5 m R^2) at
+// the surface point Q, with an impulse J along d and restitution e between tip and ball along d. Momentum:
+// ball v = J d / m, w = (Q x d) J / I; cue V = V0 - J / M. Restitution of the normal approach at Q:
+// (v + w x Q).d - V = e V0, and (w x Q).d = J |Q x d|^2 / I, so
+//     J = (1 + e) V0 / (1/m + 1/M + |Q x d|^2 / I).
+// Q is where the cue meets the ball: `side` (right, +) and `height` (up, +) are offsets in ball radii in the
+// vertical plane across the aim line, Q = R (side s + height y - sqrt(1 - side^2 - height^2) h), with h the
+// horizontal aim and s = h x y the shooter's right. The cue axis is tilted down by the elevation: d = cos(el) h -
+// sin(el) y, so an elevated cue drives the ball into the cloth; the table contact then makes it bounce (jump shots)
+// and swerve. The impulse along d gives no squirt (cue-ball deflection): a known simplification.
+#pragma once
+#include <string>
+
+#include "vec.hpp"
+
+namespace shotlab {
+
+struct CueStrike {
+  std::string ball;               // id of the struck ball
+  double speed = 2.0;             // V0, m/s
+  double aim = 0.0;               // heading in the table plane, rad: 0 = +x, pi/2 = -z (counter-clockwise from above)
+  double elevation = 0.0;         // rad, 0 = level cue
+  double side = 0.0;              // tip offset right of centre, ball radii
+  double height = 0.0;            // tip offset above centre, ball radii (+ follow, - draw)
+  double cue_mass = 0.54;         // M, kg (19 oz)
+  double tip_restitution = 0.75;  // e between tip and ball
+  double miscue_limit = 0.5;      // tip offsets beyond this fraction of R miscue in practice
+};
+
+struct StrikeResult {
+  Vec3 velocity;     // m/s
+  Vec3 spin;         // rad/s
+  double impulse;    // N s
+  bool miscue;       // tip offset beyond miscue_limit: the result is reported, and a real cue would likely slip
+};
+
+// Horizontal unit aim direction of a heading angle (rad).
+Vec3 aim_direction(double aim);
+
+StrikeResult strike(const CueStrike& cue, double mass, double radius);
+
+}  // namespace shotlab

@@ -1,0 +1,36 @@
+#include "diagnostics.hpp"
+
+namespace shotlab {
+
+Energy energy(const Model& model, const State& state) {
+  Energy e;
+  for (int i = 0; i < state.ball_count(); ++i) {
+    if (!state.in_play[i]) continue;
+    const BallSpec& b = model.balls[i];
+    const Vec3 v = velocity(state.x, i), w = spin(state.x, i);
+    e.kinetic += 0.5 * b.mass * glm::dot(v, v) + 0.5 * (0.4 * b.mass * b.radius * b.radius) * glm::dot(w, w);
+    e.potential -= b.mass * glm::dot(model.options.gravity, position(state.x, i));
+  }
+  for (const Contact& c : contacts(model, state)) {
+    const ContactMaterial& m = c.other_ball >= 0 ? model.material(kBallBall)
+                                                 : model.material(model.colliders[c.collider].material);
+    e.elastic += m.stiffness * std::pow(c.depth, m.exponent + 1) / (m.exponent + 1);
+  }
+  return e;
+}
+
+Vec3 momentum(const Model& model, const State& state) {
+  Vec3 p{0.0};
+  for (int i = 0; i < state.ball_count(); ++i)
+    if (state.in_play[i]) p += model.balls[i].mass * velocity(state.x, i);
+  return p;
+}
+
+std::vector<Contact> contacts(const Model& model, const State& state) {
+  std::vector<Contact> out;
+  ContactCache cache(model);
+  for_each_contact(model, state, state.x.data(), cache, [&](const Contact& c) { out.push_back(c); });
+  return out;
+}
+
+}  // namespace shotlab

@@ -1,0 +1,60 @@
+#include "dynamics.hpp"
+
+namespace shotlab {
+
+Dynamics::Dynamics(const Model& model, const State& state)
+    : model_(model), state_(state), cache_(model), force_(model.balls.size()), torque_(model.balls.size()) {}
+
+void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/) {
+  ++evaluations_;
+  const int n = state_.ball_count();
+  dxdt.assign(x.size(), 0.0);
+  for (int i = 0; i < n; ++i) {
+    force_[i] = state_.in_play[i] ? model_.balls[i].mass * model_.options.gravity : Vec3{0.0};
+    torque_[i] = Vec3{0.0};
+  }
+  for_each_contact(model_, state_, x.data(), cache_, [&](const Contact& c) {
+    force_[c.ball] += c.force.force;
+    torque_[c.ball] += contact_torque(c.force, c.normal, model_.balls[c.ball].radius);
+    if (c.other_ball >= 0) {
+      // Newton's third law. B sees the normal -n, so its spin torque (spin_torque * normal) keeps the same scalar.
+      force_[c.other_ball] -= c.force.force;
+      ContactForce opposite = c.force;
+      opposite.friction = -opposite.friction;
+      opposite.rolling = -opposite.rolling;
+      torque_[c.other_ball] += contact_torque(opposite, -c.normal, model_.balls[c.other_ball].radius);
+    }
+  });
+  for (int i = 0; i < n; ++i) {
+    if (!state_.in_play[i]) continue;
+    const BallSpec& b = model_.balls[i];
+    const double inertia = 0.4 * b.mass * b.radius * b.radius;  // solid sphere, 2/5 m R^2
+    set_position(dxdt, i, velocity(x, i));
+    set_velocity(dxdt, i, force_[i] / b.mass);
+    set_spin(dxdt, i, torque_[i] / inertia);
+  }
+  apply_rods(x, dxdt);
+}
+
+// A rod holds |p - anchor| = L. Its force acts along d^ = (p - anchor)/|p - anchor| and sets the radial
+// acceleration to what circular motion needs: a.d^ = -|v_perp|^2/|d|. With a_free the acceleration from all other
+// forces, the rod adds (lambda) d^ with lambda = -|v_perp|^2/|d| - a_free.d^, plus a Baumgarte term
+// -2 beta (v.d^) - beta^2 (|d| - L) that pulls numerical drift of length and radial speed back to zero.
+void Dynamics::apply_rods(const StateVector& x, StateVector& dxdt) const {
+  constexpr double beta = 50.0;  // 1/s: drift correction rate, slow against contacts, fast against a swing
+  for (const Rod& rod : model_.rods) {
+    if (!state_.in_play[rod.ball]) continue;
+    const Vec3 d = position(x, rod.ball) - rod.anchor;
+    const double len = glm::length(d);
+    if (len <= 0) continue;
+    const Vec3 dh = d / len;
+    const Vec3 v = velocity(x, rod.ball);
+    const double vr = glm::dot(v, dh);
+    const double vperp2 = glm::dot(v, v) - vr * vr;
+    const Vec3 a_free = velocity(dxdt, rod.ball);  // the v-slot of dxdt holds the acceleration
+    const double lambda = -vperp2 / len - glm::dot(a_free, dh) - 2.0 * beta * vr - beta * beta * (len - rod.length);
+    set_velocity(dxdt, rod.ball, a_free + lambda * dh);
+  }
+}
+
+}  // namespace shotlab

@@ -1,0 +1,36 @@
+// THE right-hand side of the ODE (MODEL.md eq. 3.1-3.2): given the state, the time derivative of every ball's
+// position, velocity and angular velocity. Force sources, each in one place:
+//   gravity ............ here (accumulate_gravity)
+//   contacts ........... contact_force.cpp (one law for ball-ball, cloth, cushions, any collider),
+//                        found by contacts.hpp
+//   rods ............... here (apply_rods): constraint forces, computed last because they cancel the others
+#pragma once
+#include <vector>
+
+#include "contacts.hpp"
+#include "model.hpp"
+#include "state.hpp"
+
+namespace shotlab {
+
+class Dynamics {
+ public:
+  // Both references must outlive the Dynamics; `state` supplies which balls are in play.
+  Dynamics(const Model& model, const State& state);
+
+  // odeint's system signature: dxdt = f(x, t).
+  void operator()(const StateVector& x, StateVector& dxdt, double t);
+
+  long evaluations() const { return evaluations_; }
+
+ private:
+  void apply_rods(const StateVector& x, StateVector& dxdt) const;
+
+  const Model& model_;
+  const State& state_;
+  ContactCache cache_;
+  std::vector<Vec3> force_, torque_;
+  long evaluations_ = 0;
+};
+
+}  // namespace shotlab

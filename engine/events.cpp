@@ -1,0 +1,150 @@
+#include "events.hpp"
+
+#include <algorithm>
+#include <functional>
+
+namespace shotlab {
+namespace {
+
+// A ball counts as supported while its gap to a collider is under 10 um: it stays "on the table" through the
+// micrometre bounces of a settling contact instead of flickering between airborne and landed.
+constexpr double kSupportGap = 1e-5;
+// Bisection stops when the bracket is this short (s).
+constexpr double kTimeResolution = 1e-10;
+
+// First time in (lo, hi] at which changed(t) holds, given !changed(lo) and changed(hi).
+double bisect(double lo, double hi, const std::function<bool(double)>& changed) {
+  while (hi - lo > kTimeResolution) {
+    const double mid = 0.5 * (lo + hi);
+    (changed(mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+const char* transition_kind(Motion from, Motion to) {
+  if (from == Motion::Airborne) return "landed";
+  switch (to) {
+    case Motion::Stationary: return "stopped";
+    case Motion::Spinning: return "spinning";
+    case Motion::Rolling: return "rolling";
+    case Motion::Sliding: return "sliding";
+    case Motion::Airborne: return "airborne";
+    case Motion::Pocketed: return "pocketed";
+  }
+  return "?";
+}
+
+}  // namespace
+
+const char* motion_name(Motion m) {
+  static constexpr const char* names[] = {"stationary", "spinning", "rolling", "sliding", "airborne", "pocketed"};
+  return names[static_cast<int>(m)];
+}
+
+Motion classify(const Model& model, const State& state, const double* x, int i) {
+  if (!state.in_play[i]) return Motion::Pocketed;
+  const double r = model.balls[i].radius;
+  const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
+  Vec3 n{0.0};
+  double best_up = -2;
+  for (const Collider& c : model.colliders) {
+    const auto pen = penetration(c.shape, p, r);
+    if (pen && pen->depth > -kSupportGap && glm::dot(pen->normal, kUp) > best_up) {
+      best_up = glm::dot(pen->normal, kUp);
+      n = pen->normal;
+    }
+  }
+  if (best_up == -2) return Motion::Airborne;
+  const double eps = model.options.rest_speed;
+  const Vec3 vt = v - glm::dot(v, n) * n;
+  const Vec3 u = vt + r * glm::cross(n, w);  // slip at the support (MODEL.md eq. 3.4), tangential part
+  const bool no_slip = glm::length(u - glm::dot(u, n) * n) < eps;
+  if (glm::length(vt) < eps && no_slip) return r * std::abs(glm::dot(w, n)) < eps ? Motion::Stationary : Motion::Spinning;
+  return no_slip ? Motion::Rolling : Motion::Sliding;
+}
+
+void EventDetector::collect(const State& state, const double* x, std::vector<Key>& keys) {
+  keys.clear();
+  const int n = state.ball_count();
+  for (int i = 0; i < n; ++i) {
+    if (!state.in_play[i]) continue;
+    for (int c = 0; c < static_cast<int>(model_.colliders.size()); ++c)
+      if (depth({i, -1 - c}, x) > 0) keys.emplace_back(i, -1 - c);
+  }
+  overlapping_pairs(model_, state, x, cache_);
+  for (const auto& [i, j] : cache_.pairs) keys.emplace_back(std::min(i, j), std::max(i, j));
+  std::sort(keys.begin(), keys.end());
+}
+
+double EventDetector::depth(const Key& key, const double* x) const {
+  const auto [i, other] = key;
+  const double ri = model_.balls[i].radius;
+  if (other >= 0) return ri + model_.balls[other].radius - glm::length(position(x, i) - position(x, other));
+  const auto pen = penetration(model_.colliders[-1 - other].shape, position(x, i), ri);
+  return pen ? pen->depth : -1.0;
+}
+
+std::string EventDetector::body_name(int other) const {
+  return other >= 0 ? model_.balls[other].id : model_.colliders[-1 - other].name;
+}
+
+void EventDetector::reset(const State& state) {
+  collect(state, state.x.data(), contacts_);
+  motion_.resize(state.ball_count());
+  for (int i = 0; i < state.ball_count(); ++i) motion_[i] = classify(model_, state, state.x.data(), i);
+}
+
+void EventDetector::scan(const StepSpan& span, const State& state, std::vector<Event>& events,
+                         std::vector<Exit>& exits) {
+  auto at = [&](double t) -> const double* {
+    span.interpolate(t, scratch_);
+    return scratch_.data();
+  };
+  const size_t first_new = events.size();
+
+  // Balls leaving play: the centre falls a radius below the bed (y = 0), through a pocket or off the table.
+  for (int i = 0; i < state.ball_count(); ++i) {
+    if (!state.in_play[i]) continue;
+    const double r = model_.balls[i].radius;
+    if (span.x1[9 * i + 1] >= -r) continue;
+    const double t = bisect(span.t0, span.t1, [&](double s) { return at(s)[9 * i + 1] < -r; });
+    const Vec3 p = position(at(t), i);
+    std::string kind = "off_table", where;
+    for (const Pocket& pk : model_.pockets) {
+      const Vec3 d = p - pk.center;
+      if (d.x * d.x + d.z * d.z < (pk.radius + r) * (pk.radius + r)) kind = "pocketed", where = pk.name;
+    }
+    events.push_back({t, kind, where.empty() ? std::vector<std::string>{model_.balls[i].id}
+                                             : std::vector<std::string>{model_.balls[i].id, where}});
+    exits.push_back({i, t});
+  }
+
+  // Contacts that began or ended: set difference of sorted key lists, each change located on its own depth.
+  std::vector<Key> now;
+  collect(state, span.x1.data(), now);
+  std::vector<Key> begun, ended;
+  std::set_difference(now.begin(), now.end(), contacts_.begin(), contacts_.end(), std::back_inserter(begun));
+  std::set_difference(contacts_.begin(), contacts_.end(), now.begin(), now.end(), std::back_inserter(ended));
+  for (const Key& k : begun)
+    events.push_back({bisect(span.t0, span.t1, [&](double s) { return depth(k, at(s)) > 0; }), "contact_begin",
+                      {model_.balls[k.first].id, body_name(k.second)}});
+  for (const Key& k : ended)
+    events.push_back({bisect(span.t0, span.t1, [&](double s) { return depth(k, at(s)) <= 0; }), "contact_end",
+                      {model_.balls[k.first].id, body_name(k.second)}});
+  contacts_ = std::move(now);
+
+  // Motion state changes.
+  for (int i = 0; i < state.ball_count(); ++i) {
+    if (!state.in_play[i]) continue;
+    const Motion m1 = classify(model_, state, span.x1.data(), i);
+    if (m1 == motion_[i]) continue;
+    const Motion m0 = motion_[i];
+    const double t = bisect(span.t0, span.t1, [&](double s) { return classify(model_, state, at(s), i) != m0; });
+    events.push_back({t, transition_kind(m0, m1), {model_.balls[i].id}});
+    motion_[i] = m1;
+  }
+  std::stable_sort(events.begin() + first_new, events.end(),
+                   [](const Event& a, const Event& b) { return a.time < b.time; });
+}
+
+}  // namespace shotlab

@@ -1,0 +1,58 @@
+// Motion states and events. After every accepted step the detector compares what holds at the step's end with
+// what held at its start (contacts, motion state, in play) and locates each change by bisection on the step's
+// dense output, so an event's time does not depend on where the step happened to end.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "contacts.hpp"
+#include "hermite.hpp"
+#include "model.hpp"
+#include "state.hpp"
+
+namespace shotlab {
+
+enum class Motion { Stationary, Spinning, Rolling, Sliding, Airborne, Pocketed };
+const char* motion_name(Motion m);
+
+// Motion state of ball i in state vector x: judged relative to its supporting collider (the touching collider
+// whose normal points most upwards) with the model's rest_speed threshold on tangential speed and slip.
+Motion classify(const Model& model, const State& state, const double* x, int i);
+
+struct Event {
+  double time;                      // s
+  std::string kind;                 // contact_begin, contact_end, sliding, rolling, spinning, stopped, airborne,
+                                    // landed, pocketed, off_table, miscue
+  std::vector<std::string> bodies;  // ball ids and collider names
+};
+
+// A ball that leaves play during a step (fell through a pocket or off the table).
+struct Exit {
+  int ball;
+  double time;
+};
+
+class EventDetector {
+ public:
+  explicit EventDetector(const Model& model) : model_(model), cache_(model) {}
+  // Snapshot of what holds in `state` (call at the start and after any discontinuity).
+  void reset(const State& state);
+  // Compares the end of `span` against the snapshot, appends located events and the balls that left play, and takes
+  // the end of the span as the new snapshot.
+  void scan(const StepSpan& span, const State& state, std::vector<Event>& events, std::vector<Exit>& exits);
+
+ private:
+  using Key = std::pair<int, int>;  // (ball, other): other >= 0 a ball, other < 0 the collider -1 - other
+  void collect(const State& state, const double* x, std::vector<Key>& keys);
+  double depth(const Key& key, const double* x) const;
+  std::string body_name(int other) const;
+
+  const Model& model_;
+  ContactCache cache_;
+  std::vector<Key> contacts_;
+  std::vector<Motion> motion_;
+  StateVector scratch_;
+};
+
+}  // namespace shotlab

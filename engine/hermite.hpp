@@ -1,0 +1,29 @@
+// Dense output for every method: the cubic Hermite interpolant of one accepted step, built from the states and
+// derivatives at both ends. Between contacts the ball paths on the cloth are polynomials of degree <= 2 (MODEL.md:
+// parabolic sliding, linear deceleration, linear spin decay), which a cubic reproduces exactly; inside contacts the
+// steps are short. Error O(h^4) in general.
+#pragma once
+#include "state.hpp"
+
+namespace shotlab {
+
+struct StepSpan {
+  double t0 = 0, t1 = 0;
+  StateVector x0, f0, x1, f1;
+
+  // State at t in [t0, t1], written to out (resized).
+  void interpolate(double t, StateVector& out) const {
+    const double h = t1 - t0;
+    out.resize(x0.size());
+    if (h <= 0) {
+      out = x1;
+      return;
+    }
+    const double s = (t - t0) / h, s2 = s * s, s3 = s2 * s;
+    // Hermite basis: h00 = 2s^3 - 3s^2 + 1, h10 = s^3 - 2s^2 + s, h01 = -2s^3 + 3s^2, h11 = s^3 - s^2.
+    const double h00 = 2 * s3 - 3 * s2 + 1, h10 = (s3 - 2 * s2 + s) * h, h01 = -2 * s3 + 3 * s2, h11 = (s3 - s2) * h;
+    for (size_t k = 0; k < out.size(); ++k) out[k] = h00 * x0[k] + h10 * f0[k] + h01 * x1[k] + h11 * f1[k];
+  }
+};
+
+}  // namespace shotlab

@@ -1,0 +1,89 @@
+#include "json_reader.hpp"
+
+#include <cmath>
+
+namespace shotlab {
+
+JsonNode::JsonNode(const nlohmann::json& j, std::string source, std::string path)
+    : j_(&j), source_(std::move(source)), path_(std::move(path)), used_(std::make_shared<std::set<std::string>>()) {}
+
+void JsonNode::finish() const {
+  if (!j_->is_object()) return;
+  for (const auto& item : j_->items())
+    if (!used_->count(item.key())) JsonNode(item.value(), source_, child_path(item.key())).fail("unknown field");
+}
+
+std::string JsonNode::child_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+void JsonNode::fail(const std::string& problem) const {
+  throw InputError(source_ + ": " + (path_.empty() ? "(top level)" : path_) + ": " + problem);
+}
+
+bool JsonNode::has(const std::string& key) const { return j_->is_object() && j_->contains(key); }
+
+JsonNode JsonNode::operator[](const std::string& key) const {
+  if (!j_->is_object()) fail("must be an object");
+  used_->insert(key);
+  const auto it = j_->find(key);
+  if (it == j_->end()) JsonNode(*j_, source_, child_path(key)).fail("missing required field");
+  return JsonNode(*it, source_, child_path(key));
+}
+
+void JsonNode::optional(const std::string& key, const std::function<void(const JsonNode&)>& read) const {
+  if (!j_->is_object()) fail("must be an object");
+  used_->insert(key);
+  if (has(key)) read((*this)[key]);
+}
+
+std::vector<JsonNode> JsonNode::items() const {
+  if (!j_->is_array()) fail("must be an array");
+  std::vector<JsonNode> out;
+  for (size_t i = 0; i < j_->size(); ++i) out.emplace_back((*j_)[i], source_, path_ + "[" + std::to_string(i) + "]");
+  return out;
+}
+
+double JsonNode::number() const {
+  if (!j_->is_number()) fail("must be a number, got " + std::string(j_->type_name()));
+  const double v = j_->get<double>();
+  if (!std::isfinite(v)) fail("must be a finite number");
+  return v;
+}
+
+double JsonNode::positive() const {
+  const double v = number();
+  if (!(v > 0)) fail("must be positive, got " + j_->dump());
+  return v;
+}
+
+double JsonNode::non_negative() const {
+  const double v = number();
+  if (v < 0) fail("must not be negative, got " + j_->dump());
+  return v;
+}
+
+int JsonNode::integer(int min, int max) const {
+  if (!j_->is_number_integer()) fail("must be an integer, got " + j_->dump());
+  const long long v = j_->get<long long>();
+  if (v < min || v > max) fail("must be between " + std::to_string(min) + " and " + std::to_string(max));
+  return static_cast<int>(v);
+}
+
+bool JsonNode::boolean() const {
+  if (!j_->is_boolean()) fail("must be true or false, got " + std::string(j_->type_name()));
+  return j_->get<bool>();
+}
+
+std::string JsonNode::string() const {
+  if (!j_->is_string()) fail("must be a string, got " + std::string(j_->type_name()));
+  return j_->get<std::string>();
+}
+
+Vec3 JsonNode::vec3() const {
+  if (!j_->is_array() || j_->size() != 3) fail("must be an array of 3 numbers [x, y, z]");
+  const auto e = items();
+  return {e[0].number(), e[1].number(), e[2].number()};
+}
+
+double JsonNode::angle_degrees() const { return number() * M_PI / 180.0; }
+
+}  // namespace shotlab

@@ -1,0 +1,53 @@
+// Strict, path-aware reading of JSON documents: every error names the file, the field (as a path such as
+// balls[2].mass) and the problem, and a field nobody asked for is an error, not silently ignored.
+#pragma once
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "engine/vec.hpp"
+
+namespace shotlab {
+
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class JsonNode {
+ public:
+  JsonNode(const nlohmann::json& j, std::string source, std::string path);
+
+  bool has(const std::string& key) const;
+  JsonNode operator[](const std::string& key) const;  // required field
+  // Calls read(child) when the field is present.
+  void optional(const std::string& key, const std::function<void(const JsonNode&)>& read) const;
+  std::vector<JsonNode> items() const;  // array elements
+
+  double number() const;                  // finite
+  double positive() const;                // > 0
+  double non_negative() const;            // >= 0
+  int integer(int min, int max) const;
+  bool boolean() const;
+  std::string string() const;
+  Vec3 vec3() const;
+  double angle_degrees() const;  // a number in degrees, returned in radians
+
+  // Call after reading an object: any field that was not asked for is an error (a typo must not pass silently).
+  void finish() const;
+
+  [[noreturn]] void fail(const std::string& problem) const;
+  const std::string& path() const { return path_; }
+  const nlohmann::json& raw() const { return *j_; }
+
+ private:
+  std::string child_path(const std::string& key) const;
+  const nlohmann::json* j_;
+  std::string source_, path_;
+  std::shared_ptr<std::set<std::string>> used_;
+};
+
+}  // namespace shotlab

@@ -1,0 +1,382 @@
+#include "scene_json.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "engine/rack.hpp"
+
+namespace shotlab {
+namespace {
+
+using nlohmann::json;
+
+json vec(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
+double degrees(double rad) { return rad * 180.0 / M_PI; }
+
+void read_material(const JsonNode& n, ContactMaterial& m) {
+  n.optional("stiffness", [&](const JsonNode& v) { m.stiffness = v.positive(); });
+  n.optional("damping", [&](const JsonNode& v) { m.damping = v.non_negative(); });
+  n.optional("exponent", [&](const JsonNode& v) { m.exponent = v.positive(); });
+  n.optional("damping_law", [&](const JsonNode& v) {
+    const std::string law = v.string();
+    if (law == "linear") m.damping_law = DampingLaw::Linear;
+    else if (law == "hunt_crossley") m.damping_law = DampingLaw::HuntCrossley;
+    else v.fail("unknown damping law '" + law + "' (linear, hunt_crossley)");
+  });
+  n.optional("friction", [&](const JsonNode& v) { m.friction = v.non_negative(); });
+  n.optional("rolling_resistance", [&](const JsonNode& v) { m.rolling_resistance = v.non_negative(); });
+  n.optional("spin_friction", [&](const JsonNode& v) { m.spin_friction = v.non_negative(); });
+  n.finish();
+}
+
+json material_json(const ContactMaterial& m) {
+  return {{"stiffness", m.stiffness},
+          {"damping", m.damping},
+          {"exponent", m.exponent},
+          {"damping_law", m.damping_law == DampingLaw::Linear ? "linear" : "hunt_crossley"},
+          {"friction", m.friction},
+          {"rolling_resistance", m.rolling_resistance},
+          {"spin_friction", m.spin_friction}};
+}
+
+void read_integrator(const JsonNode& n, IntegratorOptions& o) {
+  n.optional("method", [&](const JsonNode& v) {
+    if (!parse_method(v.string(), o.method))
+      v.fail("unknown integrator '" + v.string() + "' (euler, rk4, cash_karp54, dopri5, bulirsch_stoer, rosenbrock4)");
+  });
+  n.optional("abs_tol", [&](const JsonNode& v) { o.abs_tol = v.positive(); });
+  n.optional("rel_tol", [&](const JsonNode& v) { o.rel_tol = v.positive(); });
+  n.optional("fixed_step", [&](const JsonNode& v) { o.fixed_step = v.positive(); });
+  n.optional("initial_step", [&](const JsonNode& v) { o.initial_step = v.positive(); });
+  n.optional("max_steps_per_call", [&](const JsonNode& v) { o.max_steps_per_call = v.integer(1, 1 << 30); });
+  n.finish();
+}
+
+void read_table(const JsonNode& n, TableSpec& t) {
+  const std::string type = n["type"].string();
+  if (type == "pool") t = pool_table();
+  else if (type == "carom") t = carom_table();
+  else n["type"].fail("unknown table type '" + type + "' (pool, carom)");
+  n.optional("length", [&](const JsonNode& v) { t.length = v.positive(); });
+  n.optional("width", [&](const JsonNode& v) { t.width = v.positive(); });
+  n.optional("nose_height", [&](const JsonNode& v) { t.nose_height = v.positive(); });
+  n.optional("cushion_radius", [&](const JsonNode& v) { t.cushion_radius = v.positive(); });
+  n.optional("corner_mouth", [&](const JsonNode& v) { t.corner_mouth = v.positive(); });
+  n.optional("side_mouth", [&](const JsonNode& v) { t.side_mouth = v.positive(); });
+  n.optional("pocket_radius", [&](const JsonNode& v) { t.pocket_radius = v.positive(); });
+  n.optional("rail_width", [&](const JsonNode& v) { t.rail_width = v.non_negative(); });
+  n.finish();
+}
+
+json table_json(const TableSpec& t) {
+  return {{"type", t.kind == TableKind::Pool ? "pool" : "carom"},
+          {"length", t.length},
+          {"width", t.width},
+          {"nose_height", t.nose_height},
+          {"cushion_radius", t.cushion_radius},
+          {"corner_mouth", t.corner_mouth},
+          {"side_mouth", t.side_mouth},
+          {"pocket_radius", t.pocket_radius},
+          {"rail_width", t.rail_width}};
+}
+
+std::vector<Hole> read_holes(const JsonNode& n) {
+  std::vector<Hole> holes;
+  for (const JsonNode& h : n.items()) {
+    holes.push_back({h["center"].vec3(), h["radius"].positive()});
+    h.finish();
+  }
+  return holes;
+}
+
+Collider read_collider(const JsonNode& n, const Model& model) {
+  Collider c;
+  const std::string type = n["type"].string();
+  c.name = n.has("name") ? n["name"].string() : type;
+  c.material = n.has("material") ? n["material"].string() : kBallCushion;
+  if (!model.materials.count(c.material)) n["material"].fail("unknown material '" + c.material + "'");
+  std::vector<Hole> holes;
+  n.optional("holes", [&](const JsonNode& v) { holes = read_holes(v); });
+  if (type == "plane") {
+    const Vec3 normal = n["normal"].vec3();
+    if (glm::length(normal) == 0) n["normal"].fail("must not be zero");
+    c.shape = Plane{n["point"].vec3(), glm::normalize(normal), holes};
+  } else if (type == "bounded_plane") {
+    const Vec3 u = n["u"].vec3(), v = n["v"].vec3();
+    if (glm::length(glm::cross(u, v)) == 0) n["v"].fail("u and v must span a parallelogram");
+    c.shape = BoundedPlane{n["origin"].vec3(), u, v, holes};
+  } else if (type == "sphere") {
+    c.shape = StaticSphere{n["center"].vec3(), n["radius"].positive()};
+  } else if (type == "capsule") {
+    c.shape = Capsule{n["a"].vec3(), n["b"].vec3(), n["radius"].positive()};
+  } else {
+    n["type"].fail("unknown collider type '" + type + "' (plane, bounded_plane, sphere, capsule)");
+  }
+  n.finish();
+  return c;
+}
+
+json holes_json(const std::vector<Hole>& holes) {
+  json out = json::array();
+  for (const Hole& h : holes) out.push_back({{"center", vec(h.center)}, {"radius", h.radius}});
+  return out;
+}
+
+struct ColliderJson {
+  json operator()(const Plane& s) const {
+    return {{"type", "plane"}, {"point", vec(s.point)}, {"normal", vec(s.normal)}, {"holes", holes_json(s.holes)}};
+  }
+  json operator()(const BoundedPlane& s) const {
+    return {{"type", "bounded_plane"}, {"origin", vec(s.origin)}, {"u", vec(s.u)}, {"v", vec(s.v)},
+            {"holes", holes_json(s.holes)}};
+  }
+  json operator()(const StaticSphere& s) const {
+    return {{"type", "sphere"}, {"center", vec(s.center)}, {"radius", s.radius}};
+  }
+  json operator()(const Capsule& s) const {
+    return {{"type", "capsule"}, {"a", vec(s.a)}, {"b", vec(s.b)}, {"radius", s.radius}};
+  }
+};
+
+InitialBall read_ball(const JsonNode& n, const BallKind& default_kind) {
+  const BallKind* kind = &default_kind;
+  n.optional("kind", [&](const JsonNode& v) {
+    kind = find_ball_kind(v.string());
+    if (!kind) v.fail("unknown ball kind '" + v.string() + "' (pool, snooker, carom)");
+  });
+  InitialBall b;
+  b.spec = {n["id"].string(), kind->mass, kind->radius};
+  n.optional("mass", [&](const JsonNode& v) { b.spec.mass = v.positive(); });
+  n.optional("radius", [&](const JsonNode& v) { b.spec.radius = v.positive(); });
+  b.position = n["position"].vec3();
+  n.optional("velocity", [&](const JsonNode& v) { b.velocity = v.vec3(); });
+  n.optional("angular_velocity", [&](const JsonNode& v) { b.angular_velocity = v.vec3(); });
+  n.finish();
+  return b;
+}
+
+void read_rack(const JsonNode& n, const BallKind& kind, std::vector<InitialBall>& balls) {
+  RackSpec r;
+  const std::string type = n["type"].string();
+  if (type != "triangle") n["type"].fail("unknown rack type '" + type + "' (triangle)");
+  n.optional("rows", [&](const JsonNode& v) { r.rows = v.integer(1, 50); });
+  n.optional("apex", [&](const JsonNode& v) {
+    const Vec3 p = v.vec3();
+    r.apex_x = p.x;
+    r.apex_z = p.z;
+  });
+  n.optional("gap", [&](const JsonNode& v) { r.gap = v.non_negative(); });
+  n.optional("jitter", [&](const JsonNode& v) { r.jitter = v.non_negative(); });
+  n.optional("seed", [&](const JsonNode& v) { r.seed = static_cast<uint32_t>(v.integer(0, 1 << 30)); });
+  n.optional("first_number", [&](const JsonNode& v) { r.first_number = v.integer(0, 1 << 20); });
+  n.finish();
+  for (InitialBall& b : triangle_rack(r, kind)) balls.push_back(std::move(b));
+}
+
+void read_cue(const JsonNode& n, CueStrike& c) {
+  c.ball = n["ball"].string();
+  c.speed = n["speed"].positive();
+  n.optional("aim_deg", [&](const JsonNode& v) { c.aim = v.angle_degrees(); });
+  n.optional("elevation_deg", [&](const JsonNode& v) {
+    c.elevation = v.angle_degrees();
+    if (c.elevation < 0 || c.elevation > M_PI / 2) v.fail("must be between 0 and 90 degrees");
+  });
+  n.optional("side", [&](const JsonNode& v) { c.side = v.number(); });
+  n.optional("height", [&](const JsonNode& v) { c.height = v.number(); });
+  if (c.side * c.side + c.height * c.height >= 1) n["side"].fail("tip offset (side, height) must lie inside the ball");
+  n.optional("cue_mass", [&](const JsonNode& v) { c.cue_mass = v.positive(); });
+  n.optional("tip_restitution", [&](const JsonNode& v) {
+    c.tip_restitution = v.non_negative();
+    if (c.tip_restitution > 1) v.fail("must be at most 1");
+  });
+  n.optional("miscue_limit", [&](const JsonNode& v) { c.miscue_limit = v.positive(); });
+  n.finish();
+}
+
+}  // namespace
+
+Scene parse_scene(const json& doc, const std::string& source) {
+  const JsonNode n(doc, source, "");
+  if (!doc.is_object()) n.fail("a scene file must hold a JSON object");
+  Scene s;
+  s.model = empty_model();
+  n.optional("name", [&](const JsonNode& v) { s.name = v.string(); });
+  n.optional("description", [&](const JsonNode& v) { s.description = v.string(); });
+  n.optional("duration", [&](const JsonNode& v) { s.duration = v.positive(); });
+  n.optional("allow_overlap", [&](const JsonNode& v) { s.allow_overlap = v.boolean(); });
+  n.optional("gravity", [&](const JsonNode& v) { s.model.options.gravity = v.vec3(); });
+  n.optional("model", [&](const JsonNode& m) {
+    m.optional("friction_sharpness", [&](const JsonNode& v) { s.model.options.friction_sharpness = v.positive(); });
+    m.optional("rest_speed", [&](const JsonNode& v) { s.model.options.rest_speed = v.positive(); });
+    m.optional("contact_margin", [&](const JsonNode& v) { s.model.options.contact_margin = v.non_negative(); });
+    m.finish();
+  });
+  n.optional("integrator", [&](const JsonNode& v) { read_integrator(v, s.model.integrator); });
+  n.optional("materials", [&](const JsonNode& m) {
+    for (const auto& item : m.raw().items()) {
+      const bool known = s.model.materials.count(item.key()) > 0;
+      read_material(m[item.key()], s.model.materials[item.key()]);
+      if (!known && s.model.materials[item.key()].stiffness == 0)
+        m[item.key()].fail("a new material needs a stiffness (the standard ones are ball_ball, ball_cloth, ball_cushion)");
+    }
+  });
+  n.optional("table", [&](const JsonNode& v) {
+    s.table.emplace();
+    read_table(v, *s.table);
+  });
+  n.optional("colliders", [&](const JsonNode& v) {
+    for (const JsonNode& c : v.items()) s.model.colliders.push_back(read_collider(c, s.model));
+  });
+  const BallKind* kind = &kPoolBall;
+  n.optional("ball_kind", [&](const JsonNode& v) {
+    kind = find_ball_kind(v.string());
+    if (!kind) v.fail("unknown ball kind '" + v.string() + "' (pool, snooker, carom)");
+  });
+  n.optional("balls", [&](const JsonNode& v) {
+    for (const JsonNode& b : v.items()) s.balls.push_back(read_ball(b, *kind));
+  });
+  n.optional("rack", [&](const JsonNode& v) { read_rack(v, *kind, s.balls); });
+  std::map<std::string, int> index;
+  for (size_t i = 0; i < s.balls.size(); ++i) index[s.balls[i].spec.id] = static_cast<int>(i);
+  n.optional("rods", [&](const JsonNode& v) {
+    for (const JsonNode& r : v.items()) {
+      const std::string id = r["ball"].string();
+      if (!index.count(id)) r["ball"].fail("no ball with id '" + id + "'");
+      Rod rod{index[id], r["anchor"].vec3(), 0.0};
+      rod.length = glm::length(s.balls[rod.ball].position - rod.anchor);
+      r.optional("length", [&](const JsonNode& l) { rod.length = l.positive(); });
+      r.finish();
+      s.model.rods.push_back(rod);
+    }
+  });
+  n.optional("cue", [&](const JsonNode& v) {
+    s.cue.emplace();
+    read_cue(v, *s.cue);
+  });
+  n.finish();
+  try {
+    validate(s);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(source + ": " + e.what());
+  }
+  return s;
+}
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the file");
+  json doc;
+  try {
+    doc = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw InputError(path + ": malformed JSON: " + e.what());
+  }
+  for (const std::string& o : overrides) apply_override(doc, o);
+  return parse_scene(doc, overrides.empty() ? path : path + " (with --set overrides)");
+}
+
+void apply_override(json& doc, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) throw InputError("--set " + assignment + ": expected PATH=VALUE");
+  const std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+  json value;
+  try {
+    value = json::parse(text);
+  } catch (const json::parse_error&) {
+    value = text;  // a bare word: a string such as an integrator name
+  }
+  // Split "a.b[2].c" into a, b, 2, c.
+  std::vector<std::string> parts;
+  std::string cur;
+  for (char ch : path) {
+    if (ch == '.' || ch == '[' || ch == ']') {
+      if (!cur.empty()) parts.push_back(cur);
+      cur.clear();
+    } else {
+      cur += ch;
+    }
+  }
+  if (!cur.empty()) parts.push_back(cur);
+  json* node = &doc;
+  for (size_t k = 0; k < parts.size(); ++k) {
+    const std::string& key = parts[k];
+    const bool last = k + 1 == parts.size();
+    if (node->is_array()) {
+      json* found = nullptr;
+      if (!key.empty() && std::all_of(key.begin(), key.end(), ::isdigit)) {
+        const size_t i = std::stoul(key);
+        if (i < node->size()) found = &(*node)[i];
+      } else {
+        for (json& e : *node)
+          if (e.is_object() && e.value("id", "") == key) found = &e;
+      }
+      if (!found) throw InputError("--set " + assignment + ": no element '" + key + "' in " + path);
+      node = found;
+    } else {
+      if (node->is_null()) *node = json::object();
+      if (!node->is_object()) throw InputError("--set " + assignment + ": '" + key + "' is inside a non-object");
+      node = &(*node)[key];
+    }
+    if (last) *node = value;
+  }
+}
+
+json scene_to_json(const Scene& s) {
+  json doc;
+  doc["name"] = s.name;
+  doc["description"] = s.description;
+  doc["duration"] = s.duration;
+  doc["allow_overlap"] = s.allow_overlap;
+  doc["gravity"] = vec(s.model.options.gravity);
+  doc["model"] = {{"friction_sharpness", s.model.options.friction_sharpness},
+                  {"rest_speed", s.model.options.rest_speed},
+                  {"contact_margin", s.model.options.contact_margin}};
+  const IntegratorOptions& o = s.model.integrator;
+  doc["integrator"] = {{"method", method_name(o.method)}, {"abs_tol", o.abs_tol}, {"rel_tol", o.rel_tol},
+                       {"fixed_step", o.fixed_step}, {"initial_step", o.initial_step},
+                       {"max_steps_per_call", o.max_steps_per_call}};
+  for (const auto& [name, m] : s.model.materials) doc["materials"][name] = material_json(m);
+  if (s.table) doc["table"] = table_json(*s.table);
+  doc["colliders"] = json::array();
+  for (const Collider& c : s.model.colliders) {
+    json j = std::visit(ColliderJson{}, c.shape);
+    j["name"] = c.name;
+    j["material"] = c.material;
+    doc["colliders"].push_back(j);
+  }
+  doc["balls"] = json::array();
+  for (const InitialBall& b : s.balls)
+    doc["balls"].push_back({{"id", b.spec.id}, {"mass", b.spec.mass}, {"radius", b.spec.radius},
+                            {"position", vec(b.position)}, {"velocity", vec(b.velocity)},
+                            {"angular_velocity", vec(b.angular_velocity)}});
+  doc["rods"] = json::array();
+  for (const Rod& r : s.model.rods)
+    doc["rods"].push_back({{"ball", s.balls[r.ball].spec.id}, {"anchor", vec(r.anchor)}, {"length", r.length}});
+  if (s.cue) {
+    const CueStrike& c = *s.cue;
+    doc["cue"] = {{"ball", c.ball}, {"speed", c.speed}, {"aim_deg", degrees(c.aim)},
+                  {"elevation_deg", degrees(c.elevation)}, {"side", c.side}, {"height", c.height},
+                  {"cue_mass", c.cue_mass}, {"tip_restitution", c.tip_restitution},
+                  {"miscue_limit", c.miscue_limit}};
+  }
+  return doc;
+}
+
+void save_scene(const std::string& path, const Scene& scene) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << scene_to_json(scene).dump(2) << "\n";
+    if (!out.flush()) {
+      std::remove(tmp.c_str());
+      throw InputError(path + ": cannot write the file");
+    }
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw InputError(path + ": cannot replace the file");
+  }
+}
+
+}  // namespace shotlab

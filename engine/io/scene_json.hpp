@@ -1,0 +1,31 @@
+// Scene files: JSON, documented field by field in docs/scene-format.md. Conventions: SI units, y up, bed at y = 0;
+// angles in the file are degrees (fields end in _deg).
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "engine/scene.hpp"
+#include "json_reader.hpp"
+
+namespace shotlab {
+
+// Reads a scene file, applies PATH=VALUE overrides (see apply_override), and parses it. Throws InputError naming
+// the file, the field and the problem.
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// Parses a scene document; `source` names it in error messages.
+Scene parse_scene(const nlohmann::json& doc, const std::string& source);
+
+// "materials.ball_cloth.friction=0.3", "balls[0].velocity=[1,0,0]", "balls.cue.velocity=[1,0,0]" (an array element
+// by its "id"), "integrator.method=rk4". VALUE is JSON; a bare word is taken as a string. Throws InputError.
+void apply_override(nlohmann::json& doc, const std::string& assignment);
+
+// The scene as a document that parse_scene reads back to the same scene (every field explicit).
+nlohmann::json scene_to_json(const Scene& scene);
+
+// Writes the scene to a temporary file beside `path` and renames it over `path`: a failed write never leaves a
+// half-written scene behind. Throws InputError.
+void save_scene(const std::string& path, const Scene& scene);
+
+}  // namespace shotlab

@@ -1,0 +1,78 @@
+// The constant side of a simulation (MuJoCo's mjModel): bodies, colliders, materials, options. Nothing here changes
+// while the engine runs; the changing side is State (state.hpp).
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include "colliders.hpp"
+#include "material.hpp"
+#include "vec.hpp"
+
+namespace shotlab {
+
+struct BallSpec {
+  std::string id;
+  double mass;    // kg
+  double radius;  // m
+};
+
+// Rod actor (thesis, Newton's cradle): keeps a ball's centre at `length` from a fixed anchor, by a force through
+// the centre (no torque): a pendulum rod.
+struct Rod {
+  int ball;
+  Vec3 anchor;
+  double length;  // m
+};
+
+// A pocket: the hole in the bed plus where a falling ball counts as pocketed.
+struct Pocket {
+  std::string name;
+  Vec3 center;    // on the bed
+  double radius;  // m
+};
+
+enum class Method { Euler, RK4, CashKarp54, DormandPrince5, BulirschStoer, Rosenbrock4 };
+
+const char* method_name(Method m);
+bool parse_method(const std::string& name, Method& out);
+bool is_adaptive(Method m);
+
+struct IntegratorOptions {
+  Method method = Method::DormandPrince5;
+  double abs_tol = 1e-8;          // absolute error per step (m, m/s, rad/s alike)
+  double rel_tol = 1e-8;          // relative error per step
+  double fixed_step = 1e-5;       // s, for Euler and RK4
+  double initial_step = 1e-4;     // s, first trial step of the adaptive methods
+  int max_steps_per_call = 20000; // steps one advance() call may take before it stops and reports
+};
+
+struct Options {
+  Vec3 gravity{0.0, -9.81, 0.0};  // m/s^2
+  double friction_sharpness = 1000.0;  // k of fricstep(k s), s/m: friction reaches full strength at 1/k m/s of slip
+  double rest_speed = 1e-3;            // m/s: below this a ball (and R|w|) counts as stopped / rolling without slip
+  double contact_margin = 1e-6;        // m: a step may bring a still separated pair this far into contact
+};
+
+// Names of the three standard material pairs.
+inline const std::string kBallBall = "ball_ball";
+inline const std::string kBallCloth = "ball_cloth";
+inline const std::string kBallCushion = "ball_cushion";
+
+struct Model {
+  std::vector<BallSpec> balls;
+  std::vector<Collider> colliders;
+  std::vector<Rod> rods;
+  std::vector<Pocket> pockets;
+  std::map<std::string, ContactMaterial> materials;  // always holds the three standard pairs
+  Options options;
+  IntegratorOptions integrator;
+
+  const ContactMaterial& material(const std::string& name) const;
+  int ball_index(const std::string& id) const;  // -1 when absent
+};
+
+// A model with the standard materials and no bodies.
+Model empty_model();
+
+}  // namespace shotlab

@@ -1,0 +1,76 @@
+#include "scene.hpp"
+
+#include <set>
+#include <stdexcept>
+
+namespace shotlab {
+
+const BallKind* find_ball_kind(const std::string& name) {
+  for (const BallKind* k : {&kPoolBall, &kSnookerBall, &kCaromBall})
+    if (name == k->name) return k;
+  return nullptr;
+}
+
+void validate(const Scene& s) {
+  auto fail = [](const std::string& what) { throw std::invalid_argument(what); };
+  std::set<std::string> ids;
+  for (size_t i = 0; i < s.balls.size(); ++i) {
+    const InitialBall& b = s.balls[i];
+    const std::string where = "balls[" + std::to_string(i) + "]";
+    if (!ids.insert(b.spec.id).second) fail(where + ".id: duplicate id '" + b.spec.id + "'");
+    if (!(b.spec.mass > 0)) fail(where + ".mass: must be positive");
+    if (!(b.spec.radius > 0)) fail(where + ".radius: must be positive");
+    for (const Vec3& v : {b.position, b.velocity, b.angular_velocity})
+      if (!is_finite(v)) fail(where + ": non-finite number");
+  }
+  if (!s.allow_overlap)
+    for (size_t i = 0; i < s.balls.size(); ++i)
+      for (size_t j = i + 1; j < s.balls.size(); ++j) {
+        const double gap = glm::length(s.balls[i].position - s.balls[j].position) - s.balls[i].spec.radius -
+                           s.balls[j].spec.radius;
+        if (gap < -1e-9)
+          fail("balls[" + std::to_string(j) + "].position: ball '" + s.balls[j].spec.id + "' overlaps ball '" +
+               s.balls[i].spec.id + "' by " + std::to_string(-gap * 1e3) +
+               " mm (set \"allow_overlap\": true if this is intended)");
+      }
+  for (size_t r = 0; r < s.model.rods.size(); ++r)
+    if (s.model.rods[r].ball < 0 || s.model.rods[r].ball >= static_cast<int>(s.balls.size()))
+      fail("rods[" + std::to_string(r) + "].ball: no such ball");
+  if (s.cue && !ids.count(s.cue->ball)) fail("cue.ball: no ball with id '" + s.cue->ball + "'");
+  if (!(s.duration > 0) || !std::isfinite(s.duration)) fail("duration: must be a positive number of seconds");
+}
+
+Prepared prepare(const Scene& scene) {
+  Prepared out{scene.model, {}, std::nullopt};
+  if (scene.table) add_table(out.model, *scene.table);
+  out.model.balls.clear();
+  const int n = static_cast<int>(scene.balls.size());
+  out.state.x.assign(kBallDofs * n, 0.0);
+  out.state.in_play.assign(n, 1);
+  const ContactMaterial& cloth = out.model.material(kBallCloth);
+  const double g = glm::length(out.model.options.gravity);
+  for (int i = 0; i < n; ++i) {
+    const InitialBall& b = scene.balls[i];
+    out.model.balls.push_back(b.spec);
+    Vec3 p = b.position;
+    // Static sink on the bed: C_s d^m = m g gives d = (m g / C_s)^(1/m) (6.5 um for a pool ball on the cloth).
+    for (const Collider& c : out.model.colliders) {
+      if (c.material != kBallCloth) continue;
+      const auto pen = penetration(c.shape, p, b.spec.radius);
+      if (pen && std::abs(pen->depth) < 1e-9 && glm::dot(pen->normal, kUp) > 0.999)
+        p -= pen->normal * std::pow(b.spec.mass * g / cloth.stiffness, 1.0 / cloth.exponent);
+    }
+    set_position(out.state.x, i, p);
+    set_velocity(out.state.x, i, b.velocity);
+    set_spin(out.state.x, i, b.angular_velocity);
+  }
+  if (scene.cue) {
+    const int i = out.model.ball_index(scene.cue->ball);
+    out.strike = strike(*scene.cue, scene.balls[i].spec.mass, scene.balls[i].spec.radius);
+    set_velocity(out.state.x, i, velocity(out.state.x, i) + out.strike->velocity);
+    set_spin(out.state.x, i, spin(out.state.x, i) + out.strike->spin);
+  }
+  return out;
+}
+
+}  // namespace shotlab

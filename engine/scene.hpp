@@ -1,0 +1,57 @@
+// A scene: a model, the balls' initial state, an optional cue strike and how long to run. This is what a preset file
+// holds (engine/io reads and writes it); the engine itself never touches files.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cue.hpp"
+#include "model.hpp"
+#include "state.hpp"
+#include "table.hpp"
+
+namespace shotlab {
+
+// Standard balls (MODEL.md, "Standard parameters").
+struct BallKind {
+  const char* name;
+  double mass;    // kg
+  double radius;  // m
+};
+inline constexpr BallKind kPoolBall{"pool", 0.17, 0.028575};
+inline constexpr BallKind kSnookerBall{"snooker", 0.1406, 0.02625};
+inline constexpr BallKind kCaromBall{"carom", 0.21, 0.03075};
+const BallKind* find_ball_kind(const std::string& name);
+
+struct InitialBall {
+  BallSpec spec;
+  Vec3 position{0.0};          // m
+  Vec3 velocity{0.0};          // m/s
+  Vec3 angular_velocity{0.0};  // rad/s
+};
+
+struct Scene {
+  std::string name;
+  std::string description;        // what to look for
+  Model model;                    // balls filled in from `balls`
+  std::vector<InitialBall> balls;
+  std::optional<TableSpec> table;
+  std::optional<CueStrike> cue;
+  double duration = 5.0;          // s
+  bool allow_overlap = false;     // balls may start interpenetrating (a deliberate pre-loaded contact)
+};
+
+// Checks what the types cannot (overlaps, positive sizes, rods and cue naming real balls); throws
+// std::invalid_argument with a message naming the ball or field.
+void validate(const Scene& scene);
+
+// The model and state ready to simulate: table colliders added, balls resting on the bed lowered to their static
+// sink depth (so a scene starts at rest instead of dropping a few micrometres), the cue strike applied.
+struct Prepared {
+  Model model;
+  State state;
+  std::optional<StrikeResult> strike;
+};
+Prepared prepare(const Scene& scene);
+
+}  // namespace shotlab

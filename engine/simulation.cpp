@@ -1,0 +1,176 @@
+#include "simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace shotlab {
+
+const char* status_name(Status s) {
+  static constexpr const char* names[] = {"ok", "step_limit", "non_finite", "step_too_small"};
+  return names[static_cast<int>(s)];
+}
+
+Simulation::Simulation(Model model, State initial)
+    : model_(std::move(model)),
+      integ_(std::move(initial)),
+      state_(integ_),
+      dynamics_(model_, integ_),
+      stepper_(make_stepper(model_.integrator)),
+      detector_(model_),
+      dt_next_(is_adaptive(model_.integrator.method) ? model_.integrator.initial_step : model_.integrator.fixed_step) {
+  span_.t0 = span_.t1 = integ_.time;
+  span_.x1 = integ_.x;
+  restart();
+}
+
+void Simulation::restart() {
+  span_.f1.resize(span_.x1.size());
+  dynamics_(span_.x1, span_.f1, span_.t1);
+  span_.x0 = span_.x1;
+  span_.f0 = span_.f1;
+  span_.t0 = span_.t1;
+  stepper_->reset();
+  integ_.x = span_.x1;
+  integ_.time = span_.t1;
+  detector_.reset(integ_);
+}
+
+bool Simulation::at_rest() const {
+  for (int i = 0; i < state_.ball_count(); ++i) {
+    const Motion m = motion(i);
+    if (m != Motion::Stationary && m != Motion::Pocketed) return false;
+  }
+  return true;
+}
+
+Status Simulation::advance(double dt) {
+  if (status_ != Status::Ok) return status_;
+  const auto wall0 = std::chrono::steady_clock::now();
+  const double target = state_.time + dt;
+  int steps = 0;
+  while (span_.t1 < target && status_ == Status::Ok) {
+    if (steps++ >= model_.integrator.max_steps_per_call) {
+      std::ostringstream msg;
+      msg << "step limit: " << model_.integrator.max_steps_per_call << " steps in one advance() did not reach t = "
+          << target << " s; stopped at t = " << span_.t1 << " s with step " << stats_.last_step << " s. "
+          << describe_balls(span_.x1);
+      stop(Status::StepLimit, msg.str());
+      break;
+    }
+    step();
+  }
+  if (status_ == Status::Ok) {
+    span_.interpolate(target, state_.x);
+    state_.time = target;
+  } else {  // stay at the last good point
+    state_.x = span_.x1;
+    state_.time = span_.t1;
+  }
+  state_.in_play = integ_.in_play;
+  stats_.rhs_evaluations = dynamics_.evaluations();
+  stats_.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  return status_;
+}
+
+bool Simulation::step() {
+  const bool adaptive = is_adaptive(model_.integrator.method);
+  double dt = adaptive ? dt_next_ : model_.integrator.fixed_step;
+  const double wanted = dt;
+  if (adaptive) dt = std::min(dt, time_to_possible_contact(model_, integ_, span_.x1.data()));
+  const bool capped = dt < wanted;
+  StateVector x, f;
+  double t;
+  for (;;) {
+    x = span_.x1;
+    f = span_.f1;
+    t = span_.t1;
+    const double tried = dt;
+    if (stepper_->try_step(dynamics_, x, f, t, dt)) {
+      stats_.last_step = tried;
+      break;
+    }
+    ++stats_.rejected_steps;
+    if (!std::isfinite(dt) || dt < 1e-14) {
+      std::ostringstream msg;
+      msg << "step too small: the error control shrank the step to " << dt << " s at t = " << span_.t1 << " s. "
+          << describe_balls(span_.x1);
+      stop(Status::StepTooSmall, msg.str());
+      return false;
+    }
+  }
+  ++stats_.steps;
+  dt_next_ = capped ? std::max(dt, wanted) : dt;
+
+  if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) {
+    std::ostringstream msg;
+    msg << "non-finite state in the step from t = " << span_.t1 << " s to " << t << " s; balls: ";
+    for (int i = 0; i < integ_.ball_count(); ++i)
+      for (int k = 0; k < kBallDofs; ++k)
+        if (!std::isfinite(x[9 * i + k])) {
+          msg << model_.balls[i].id << " ";
+          break;
+        }
+    msg << ". Last finite state: " << describe_balls(span_.x1);
+    stop(Status::NonFinite, msg.str());
+    return false;
+  }
+
+  span_.x0.swap(span_.x1);
+  span_.f0.swap(span_.f1);
+  span_.t0 = span_.t1;
+  span_.x1 = std::move(x);
+  span_.f1 = std::move(f);
+  span_.t1 = t;
+  integ_.x = span_.x1;
+  integ_.time = t;
+
+  std::vector<Exit> exits;
+  detector_.scan(span_, integ_, events_, exits);
+  if (observer_) observer_(span_);
+  if (!exits.empty()) {
+    // A ball that left play is frozen where it left; the system lost a body, so the integrator starts afresh.
+    StateVector at;
+    for (const Exit& e : exits) {
+      span_.interpolate(e.time, at);
+      integ_.in_play[e.ball] = 0;
+      set_position(span_.x1, e.ball, position(at, e.ball));
+      set_velocity(span_.x1, e.ball, Vec3{0.0});
+      set_spin(span_.x1, e.ball, Vec3{0.0});
+    }
+    const StepSpan finished = span_;
+    restart();
+    // Keep the finished step's interpolant for the caller's clock, with the exited balls frozen in it.
+    span_.x0 = finished.x0;
+    span_.f0 = finished.f0;
+    span_.t0 = finished.t0;
+    for (const Exit& e : exits)
+      for (int k = 0; k < kBallDofs; ++k) {
+        span_.x0[9 * e.ball + k] = span_.x1[9 * e.ball + k];
+        span_.f0[9 * e.ball + k] = 0.0;
+      }
+  }
+  return true;
+}
+
+void Simulation::stop(Status why, std::string message) {
+  status_ = why;
+  diagnostic_ = std::move(message);
+}
+
+// The balls worth naming in a diagnostic: those in contacts at x, with depth and force.
+std::string Simulation::describe_balls(const StateVector& x) const {
+  State s = integ_;
+  s.x = x;
+  std::ostringstream out;
+  const auto list = shotlab::contacts(model_, s);
+  if (list.empty()) return "No contacts.";
+  out << "Contacts:";
+  for (const Contact& c : list)
+    out << " [" << model_.balls[c.ball].id << " - "
+        << (c.other_ball >= 0 ? model_.balls[c.other_ball].id : model_.colliders[c.collider].name)
+        << ": depth " << c.depth << " m, force " << c.force.normal << " N]";
+  return out.str();
+}
+
+}  // namespace shotlab

@@ -1,0 +1,34 @@
+// The changing side of a simulation (MuJoCo's mjData): the ODE state vector and which balls are still in play.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "vec.hpp"
+
+namespace shotlab {
+
+// ODE state layout (MODEL.md eq. 2.3): 9 numbers a ball, [p (m), v (m/s), w (rad/s)], balls in model order.
+inline constexpr int kBallDofs = 9;
+using StateVector = std::vector<double>;
+
+template <class X> Vec3 position(const X& x, int i) { return {x[9 * i], x[9 * i + 1], x[9 * i + 2]}; }
+template <class X> Vec3 velocity(const X& x, int i) { return {x[9 * i + 3], x[9 * i + 4], x[9 * i + 5]}; }
+template <class X> Vec3 spin(const X& x, int i) { return {x[9 * i + 6], x[9 * i + 7], x[9 * i + 8]}; }
+template <class X> void set_vec(X& x, int index, const Vec3& v) {
+  x[index] = v.x;
+  x[index + 1] = v.y;
+  x[index + 2] = v.z;
+}
+template <class X> void set_position(X& x, int i, const Vec3& v) { set_vec(x, 9 * i, v); }
+template <class X> void set_velocity(X& x, int i, const Vec3& v) { set_vec(x, 9 * i + 3, v); }
+template <class X> void set_spin(X& x, int i, const Vec3& v) { set_vec(x, 9 * i + 6, v); }
+
+struct State {
+  double time = 0;              // s
+  StateVector x;                // 9 * balls
+  std::vector<uint8_t> in_play; // 0 once a ball is pocketed or has left the table: frozen, touches nothing
+
+  int ball_count() const { return static_cast<int>(in_play.size()); }
+};
+
+}  // namespace shotlab

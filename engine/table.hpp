@@ -1,0 +1,30 @@
+// Tables built from the generic colliders: a bed (bounded plane at y = 0 with pocket holes), cushions as capsules
+// along the rails at the nose height, pocket jaws as capsules. The playing surface is centred on the origin:
+// x along the length, z along the width, y up.
+#pragma once
+#include "model.hpp"
+
+namespace shotlab {
+
+enum class TableKind { Pool, Carom };
+
+struct TableSpec {
+  TableKind kind = TableKind::Pool;
+  double length = 2.54;          // m, between cushion noses (9 ft pool)
+  double width = 1.27;           // m
+  double nose_height = 0.0365;   // m above the bed: 63.5 % of a 57.15 mm ball (WPA: 62.5-64.5 %)
+  double cushion_radius = 0.01;  // m, radius of the capsule that models the rubber nose
+  double corner_mouth = 0.116;   // m, pool only: opening between the cushion ends of a corner pocket
+  double side_mouth = 0.13;      // m, pool only: opening of a side pocket
+  double pocket_radius = 0.065;  // m, pool only: radius of the hole in the bed
+  double rail_width = 0.1;       // m, bed beyond the noses (a ball that jumps the rail falls off past it)
+};
+
+// Standard specifications.
+TableSpec pool_table();   // 9 ft pool: 2.54 x 1.27 m, six pockets
+TableSpec carom_table();  // match carom: 2.84 x 1.42 m, no pockets, nose at 63.5 % of a 61.5 mm ball
+
+// Appends the table's colliders (materials ball_cloth and ball_cushion) and pockets to the model.
+void add_table(Model& model, const TableSpec& spec);
+
+}  // namespace shotlab
