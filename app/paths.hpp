@@ -13,7 +13,4 @@ inline std::string data_root() {
 inline std::string preset_path(const std::string& name) { return data_root() + "/presets/" + name; }
 inline std::string asset_path(const std::string& name) { return data_root() + "/assets/" + name; }
 
-// The GUI (ui/); without SHOTLAB_GUI, a stub that says so.
-int run_gui(int argc, char** argv);
-
 }  // namespace shotlab

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "app/commands.hpp"
 #include "engine/io/result_json.hpp"
 #include "engine/io/scene_json.hpp"
 #include "engine/simulation.hpp"
@@ -71,6 +72,22 @@ int run_scene(const RunOptions& o) {
     return 3;
   }
   return 0;
+}
+
+void add_run_command(CLI::App& app) {
+  auto o = std::make_shared<RunOptions>();
+  CLI::App* cmd = app.add_subcommand("run", "Simulate a scene file headless");
+  cmd->add_option("scene", o->scene, "Scene file (JSON)")->required();
+  cmd->add_option("--duration", o->duration, "Simulated time in seconds (default: the scene's)");
+  cmd->add_option("--set", o->overrides, "Override a scene value: PATH=VALUE, e.g. materials.ball_cloth.friction=0.3");
+  cmd->add_option("--out", o->out, "Write the result (final state, events, stats) as JSON");
+  cmd->add_option("--trajectory", o->trajectory, "Write every ball's state as CSV");
+  cmd->add_option("--sample-rate", o->sample_rate, "Trajectory samples per second")->check(CLI::PositiveNumber);
+  cmd->add_flag("--until-rest", o->until_rest, "Stop early once every ball is at rest");
+  cmd->add_flag("-q,--quiet", o->quiet, "No summary line");
+  cmd->callback([o] {
+    if (const int code = run_scene(*o)) throw CLI::RuntimeError(code);
+  });
 }
 
 }  // namespace shotlab

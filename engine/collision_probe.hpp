@@ -1,0 +1,22 @@
+// Measures what a contact material does in one collision, by running the engine on a two-body scene (not by a
+// formula): contact time, peak penetration, peak force and restitution at a given impact speed. Used by the tuning
+// panel's readouts and by tests; gravity, table and friction are off so that only the normal law acts.
+#pragma once
+#include "material.hpp"
+#include "model.hpp"
+
+namespace shotlab {
+
+struct CollisionProbe {
+  double contact_time = 0;       // s
+  double peak_penetration = 0;   // m
+  double peak_force = 0;         // N
+  double restitution = 0;        // separation speed / approach speed
+  long steps = 0;                // integrator steps while in contact
+};
+
+// Ball (mass, radius) hitting an equal free ball head-on (`ball_ball` = true) or a fixed plane, at `speed` m/s.
+CollisionProbe probe_collision(const ContactMaterial& material, double mass, double radius, double speed,
+                               bool ball_ball, const IntegratorOptions& integrator = {});
+
+}  // namespace shotlab
