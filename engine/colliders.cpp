@@ -3,13 +3,13 @@
 namespace shotlab {
 namespace {
 
-bool over_hole(const std::vector<Hole>& holes, const Vec3& p, const Vec3& n) {
+const Hole* hole_under(const std::vector<Hole>& holes, const Vec3& p, const Vec3& n) {
   for (const Hole& h : holes) {
     Vec3 d = p - h.center;
     d -= glm::dot(d, n) * n;  // in-plane offset
-    if (glm::dot(d, d) < h.radius * h.radius) return true;
+    if (glm::dot(d, d) < h.radius * h.radius) return &h;
   }
-  return false;
+  return nullptr;
 }
 
 // Ball centre p against the point q nearest to it on a convex core of radius rc (sphere, capsule axis).
@@ -25,17 +25,27 @@ struct Probe {
   const Vec3& p;
   double r;
 
-  std::optional<Penetration> operator()(const Plane& s) const {
-    if (over_hole(s.holes, p, s.normal)) return std::nullopt;
-    return Penetration{r - glm::dot(p - s.point, s.normal), s.normal};
+  // Plane surface with holes. The plane is one-sided: a centre behind it (it fell through a hole) touches nothing.
+  // A centre over a hole can only touch the hole's rim: the point of the rim circle nearest to it.
+  std::optional<Penetration> surface(const Vec3& point, const Vec3& n, const std::vector<Hole>& holes) const {
+    const double height = glm::dot(p - point, n);
+    if (height < 0) return std::nullopt;
+    if (const Hole* h = hole_under(holes, p, n)) {
+      const Vec3 in_plane = p - height * n - h->center;
+      const double len = glm::length(in_plane);
+      const Vec3 e = len > 0 ? in_plane / len : glm::normalize(glm::cross(n, Vec3{1.0, 0.0, 0.0}) + glm::cross(n, kUp));
+      return from_point(p, r, h->center + h->radius * e, 0.0);
+    }
+    return Penetration{r - height, n};
   }
+
+  std::optional<Penetration> operator()(const Plane& s) const { return surface(s.point, s.normal, s.holes); }
   std::optional<Penetration> operator()(const BoundedPlane& s) const {
     const Vec3 n = glm::normalize(glm::cross(s.u, s.v));
     const Vec3 d = p - s.origin;
     const double du = glm::dot(d, s.u), dv = glm::dot(d, s.v);
     if (du <= 0 || du >= glm::dot(s.u, s.u) || dv <= 0 || dv >= glm::dot(s.v, s.v)) return std::nullopt;
-    if (over_hole(s.holes, p, n)) return std::nullopt;
-    return Penetration{r - glm::dot(d, n), n};
+    return surface(s.origin, n, s.holes);
   }
   std::optional<Penetration> operator()(const StaticSphere& s) const { return from_point(p, r, s.center, s.radius); }
   std::optional<Penetration> operator()(const Capsule& s) const {

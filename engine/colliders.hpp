@@ -15,13 +15,14 @@ struct Penetration {
   Vec3 normal;   // unit, from the collider towards the ball centre
 };
 
-// A circular opening in a plane (a pocket): a ball whose centre is over it gets no support from the plane.
+// A circular opening in a plane (a pocket): a ball whose centre is over it touches only the opening's rim.
 struct Hole {
   Vec3 center;    // on the plane
   double radius;  // m
 };
 
-// Infinite plane through `point` with unit `normal` pointing to the free side (eq. 4.8). Optional holes.
+// Infinite plane through `point` with unit `normal` pointing to the free side (eq. 4.8). Optional holes. One-sided:
+// a ball whose centre is behind the plane (fell through a hole) does not touch it.
 struct Plane {
   Vec3 point;
   Vec3 normal;

@@ -28,16 +28,10 @@ void add_cushion(Model& m, const std::string& name, const Vec3& a, const Vec3& b
                          kBallCushion});
 }
 
-// Jaw: from a cushion end to the edge of the pocket hole, so that a ball can strike the pocket's facing.
-void add_jaw(Model& m, const std::string& name, const Vec3& end, const Vec3& outward, const Pocket& p, const TableSpec& t) {
-  const Vec3 a = end + t.cushion_radius * outward;
-  Vec3 towards = a - p.center;
-  towards.y = 0;
-  const double dist = glm::length(towards);
-  if (dist <= p.radius) return;
-  const Vec3 b = p.center + towards * (p.radius / dist);
-  const Vec3 lift{0.0, t.nose_height, 0.0};
-  m.colliders.push_back({name, Capsule{a + lift, Vec3{b.x, 0.0, b.z} + lift, t.cushion_radius}, kBallCushion});
+// Jaw (pocket facing): from a cushion end straight away from the table, so that a ball can strike the facing.
+void add_jaw(Model& m, const std::string& name, const Vec3& end, const Vec3& outward, const TableSpec& t) {
+  const Vec3 a = end + Vec3{0.0, t.nose_height, 0.0} + t.cushion_radius * outward;  // the cushion capsule's end
+  m.colliders.push_back({name, Capsule{a, a + t.jaw_length * outward, t.cushion_radius}, kBallCushion});
 }
 
 }  // namespace
@@ -47,14 +41,17 @@ void add_table(Model& m, const TableSpec& t) {
   const bool pool = t.kind == TableKind::Pool;
   std::vector<Hole> holes;
   if (pool) {
-    // Corner pockets sit diagonally outside the corners, side pockets just beyond the long rails.
-    const double c = t.corner_mouth / std::sqrt(2.0) / 2;  // corner hole centre offset beyond each nose line
+    // A ball drops once its centre is over the hole, i.e. pocket_shelf beyond the mouth. Corner mouths run
+    // diagonally with their midpoint corner_mouth/(2 sqrt 2) inside the corner along each axis; the hole centre lies
+    // shelf + radius beyond it along the diagonal. Side mouths lie on the nose line.
+    const double beyond = t.pocket_shelf + t.pocket_radius;
+    const double c = (beyond - t.corner_mouth / 2) / std::sqrt(2.0);  // corner hole centre beyond each nose line
     const std::array<std::pair<std::string, Vec3>, 6> centres{{{"pocket-left-back", at(-hx - c, -hz - c)},
                                                                {"pocket-right-back", at(hx + c, -hz - c)},
                                                                {"pocket-left-front", at(-hx - c, hz + c)},
                                                                {"pocket-right-front", at(hx + c, hz + c)},
-                                                               {"pocket-side-back", at(0, -hz - t.pocket_radius / 2)},
-                                                               {"pocket-side-front", at(0, hz + t.pocket_radius / 2)}}};
+                                                               {"pocket-side-back", at(0, -hz - beyond)},
+                                                               {"pocket-side-front", at(0, hz + beyond)}}};
     for (const auto& [name, centre] : centres) {
       m.pockets.push_back({name, centre, t.pocket_radius});
       holes.push_back({centre, t.pocket_radius});
@@ -73,27 +70,29 @@ void add_table(Model& m, const TableSpec& t) {
   struct Rail {
     std::string name;
     Vec3 a, b, outward;
-    int pocket_a, pocket_b;  // pockets at each end (-1: none)
+    bool has_pockets;  // a pocket mouth at each end
   };
   std::vector<Rail> rails;
   if (pool) {
-    rails = {{"cushion-back-left", at(-hx + ce, -hz), at(-se, -hz), back, 0, 4},
-             {"cushion-back-right", at(se, -hz), at(hx - ce, -hz), back, 4, 1},
-             {"cushion-front-left", at(-hx + ce, hz), at(-se, hz), front, 2, 5},
-             {"cushion-front-right", at(se, hz), at(hx - ce, hz), front, 5, 3},
-             {"cushion-left", at(-hx, -hz + ce), at(-hx, hz - ce), left, 0, 2},
-             {"cushion-right", at(hx, -hz + ce), at(hx, hz - ce), right, 1, 3}};
+    rails = {{"cushion-back-left", at(-hx + ce, -hz), at(-se, -hz), back, true},
+             {"cushion-back-right", at(se, -hz), at(hx - ce, -hz), back, true},
+             {"cushion-front-left", at(-hx + ce, hz), at(-se, hz), front, true},
+             {"cushion-front-right", at(se, hz), at(hx - ce, hz), front, true},
+             {"cushion-left", at(-hx, -hz + ce), at(-hx, hz - ce), left, true},
+             {"cushion-right", at(hx, -hz + ce), at(hx, hz - ce), right, true}};
   } else {
     // Carom: closed rectangle; the capsules overlap at the corners so that a corner has no gap.
-    rails = {{"cushion-back", at(-hx, -hz), at(hx, -hz), back, -1, -1},
-             {"cushion-front", at(-hx, hz), at(hx, hz), front, -1, -1},
-             {"cushion-left", at(-hx, -hz), at(-hx, hz), left, -1, -1},
-             {"cushion-right", at(hx, -hz), at(hx, hz), right, -1, -1}};
+    rails = {{"cushion-back", at(-hx, -hz), at(hx, -hz), back, false},
+             {"cushion-front", at(-hx, hz), at(hx, hz), front, false},
+             {"cushion-left", at(-hx, -hz), at(-hx, hz), left, false},
+             {"cushion-right", at(hx, -hz), at(hx, hz), right, false}};
   }
   for (const Rail& r : rails) {
     add_cushion(m, r.name, r.a, r.b, r.outward, t);
-    if (r.pocket_a >= 0) add_jaw(m, r.name + "-jaw-a", r.a, r.outward, m.pockets[r.pocket_a], t);
-    if (r.pocket_b >= 0) add_jaw(m, r.name + "-jaw-b", r.b, r.outward, m.pockets[r.pocket_b], t);
+    if (r.has_pockets) {
+      add_jaw(m, r.name + "-jaw-a", r.a, r.outward, t);
+      add_jaw(m, r.name + "-jaw-b", r.b, r.outward, t);
+    }
   }
 }
 

@@ -17,6 +17,8 @@ struct TableSpec {
   double corner_mouth = 0.116;   // m, pool only: opening between the cushion ends of a corner pocket
   double side_mouth = 0.13;      // m, pool only: opening of a side pocket
   double pocket_radius = 0.065;  // m, pool only: radius of the hole in the bed
+  double pocket_shelf = 0.02;    // m, pool only: from the mouth (line between the cushion ends) to the hole's edge
+  double jaw_length = 0.04;      // m, pool only: the facings, from each cushion end straight away from the table
   double rail_width = 0.1;       // m, bed beyond the noses (a ball that jumps the rail falls off past it)
 };
 

@@ -65,6 +65,8 @@ void read_table(const JsonNode& n, TableSpec& t) {
   n.optional("corner_mouth", [&](const JsonNode& v) { t.corner_mouth = v.positive(); });
   n.optional("side_mouth", [&](const JsonNode& v) { t.side_mouth = v.positive(); });
   n.optional("pocket_radius", [&](const JsonNode& v) { t.pocket_radius = v.positive(); });
+  n.optional("pocket_shelf", [&](const JsonNode& v) { t.pocket_shelf = v.non_negative(); });
+  n.optional("jaw_length", [&](const JsonNode& v) { t.jaw_length = v.non_negative(); });
   n.optional("rail_width", [&](const JsonNode& v) { t.rail_width = v.non_negative(); });
   n.finish();
 }
@@ -78,6 +80,8 @@ json table_json(const TableSpec& t) {
           {"corner_mouth", t.corner_mouth},
           {"side_mouth", t.side_mouth},
           {"pocket_radius", t.pocket_radius},
+          {"pocket_shelf", t.pocket_shelf},
+          {"jaw_length", t.jaw_length},
           {"rail_width", t.rail_width}};
 }
 
