@@ -1,8 +1,156 @@
+// `shotlab bench`: the work-precision report (issue 4). Runs every case with every integrator setting, measures the
+// error against a reference solution and the cost, and writes CSV, markdown and SVG figures (bench_report.hpp).
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <set>
+#include <sstream>
+
+#include "app/bench_report.hpp"
 #include "app/commands.hpp"
+#include "app/paths.hpp"
+#include "engine/io/json_reader.hpp"
 
 namespace shotlab {
+namespace {
 
-// The work-precision bench (issue 4) registers here.
-void add_bench_command(CLI::App&) {}
+struct BenchOptions {
+  bool quick = false;
+  std::string out_dir = "docs/bench";
+  std::vector<std::string> scenes;  // S1..S7, empty: all
+  int repeats = 5;
+  double budget = 0;                // s per run; 0: 1 s, or 0.2 s with --quick
+};
+
+std::string fmt_seconds(double s) {
+  std::ostringstream out;
+  out << s;
+  return out.str();
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// One setting of one case: the first run gives the results, the repeats only the wall time (the runs are
+// deterministic). Returns false when the first run alone took longer than the budget: then the repeats are skipped
+// and the caller drops the method's tighter settings, which could only be slower.
+bool measure(const std::string& root, const BenchCase& c, const MethodSetting& s, int repeats, double budget,
+             const RunResult* ref, BenchReport& report) {
+  BenchRow row{&c, s, run_case(root, c, s), {}, 0, 1};
+  std::vector<double> walls{row.run.stats.wall_seconds};
+  const bool within = row.run.stats.wall_seconds <= budget;
+  for (int k = 1; within && k < repeats; ++k) walls.push_back(run_case(root, c, s).stats.wall_seconds);
+  row.wall = median(walls);
+  row.repeats = static_cast<int>(walls.size());
+  if (ref) row.err = errors(c, row.run, *ref);
+  std::ostringstream line;
+  line << "  " << c.id << " " << method_name(s.method) << " " << setting_text(s) << ": ";
+  if (ref) line << "error " << std::scientific << std::setprecision(2) << row.err.worst() << std::defaultfloat << ", ";
+  line << row.run.stats.steps << " steps, " << row.wall * 1e3 << " ms";
+  if (row.run.status != Status::Ok) line << " " << status_name(row.run.status);
+  std::cout << line.str() << std::endl;
+  report.rows.push_back(std::move(row));
+  return within && report.rows.back().run.status == Status::Ok;
+}
+
+// The reference run of a case (kReferenceMethods); null, with a note, when no two methods finish.
+std::unique_ptr<RunResult> reference(const std::string& root, const BenchCase& c, BenchReport& report) {
+  for (double tol : kReferenceTols) {
+    std::vector<std::pair<MethodSetting, RunResult>> done;
+    for (Method m : kReferenceMethods) {
+      if (done.size() == 2) break;
+      RunResult r = run_case(root, c, {m, tol});
+      if (r.status == Status::Ok) done.push_back({{m, tol}, std::move(r)});
+    }
+    if (done.size() < 2) continue;
+    BenchCase plain = c;
+    plain.swap_exact = false;  // agreement of the two methods, not against the exact answer
+    const RunResult& a = done[0].second;
+    report.references.push_back({&c, done[0].first, done[1].first, errors(plain, done[1].second, a),
+                                 c.swap_exact ? errors(c, a, a).velocity : -1,
+                                 a.stats.wall_seconds + done[1].second.stats.wall_seconds});
+    return std::make_unique<RunResult>(a);
+  }
+  report.notes.push_back(c.id + ": no reference (no two methods finished at 1e-12); case skipped");
+  return nullptr;
+}
+
+void bench_case(const std::string& root, const BenchCase& c, const BenchOptions& o, BenchReport& report) {
+  std::cout << c.label << std::endl;
+  std::unique_ptr<RunResult> ref;
+  if (!c.until_rest && !(ref = reference(root, c, report))) return;
+  std::set<Method> over_budget;
+  // Rosenbrock 4 builds its Jacobian by finite differences, 9n + 1 right-hand sides a step: beyond the cradle's five
+  // balls one run takes seconds, the sweep minutes.
+  if (ref && ref->radius.size() > 5) {
+    over_budget.insert(Method::Rosenbrock4);
+    report.notes.push_back(c.id + ": rosenbrock4 not run (" + std::to_string(ref->radius.size()) +
+                           " balls: a finite-difference Jacobian of " + std::to_string(9 * ref->radius.size() + 1) +
+                           " right-hand sides a step, about 2 s a run)");
+  }
+  for (const MethodSetting& s : c.until_rest ? sweep_timed_only(o.quick) : sweep(o.quick || c.coarse)) {
+    if (over_budget.count(s.method)) continue;
+    // A whole game (S7) is long by nature: its few settings get ten times the budget.
+    const double budget = c.until_rest ? 10 * o.budget : o.budget;
+    if (!measure(root, c, s, o.repeats, budget, ref.get(), report)) {
+      over_budget.insert(s.method);
+      report.notes.push_back(c.id + ": " + method_name(s.method) + " stopped after " + setting_text(s) +
+                             " (one run took over " + fmt_seconds(budget) + " s or did not finish); tighter "
+                             "settings skipped");
+    }
+  }
+}
+
+int run_bench(BenchOptions o, const std::string& command) {
+  if (o.budget == 0) o.budget = o.quick ? 0.2 : 1.0;
+  std::filesystem::create_directories(o.out_dir);
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<BenchCase> cases = bench_cases();
+  BenchReport report;
+  report.command = command;
+  try {
+    for (const BenchCase& c : cases)
+      if (o.scenes.empty() || std::count(o.scenes.begin(), o.scenes.end(), c.scene))
+        bench_case(data_root(), c, o, report);
+  } catch (const InputError& e) {
+    std::cerr << "shotlab bench: " << e.what() << "\n";
+    return 1;
+  }
+  report.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!write_report(o.out_dir, report)) return 1;
+  std::cout << "wrote " << o.out_dir << "/results.{csv,md}, work_precision.svg, tolerance_error.svg, "
+            << "steps_per_contact.svg in " << report.total_seconds << " s\n";
+  return 0;
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  CLI::App* cmd = app.add_subcommand("bench", "Speed against error of every integrator on the bench scenes S1-S7");
+  cmd->add_flag("--quick", o->quick, "Whole decades only, short budget: a CI smoke run of under a minute");
+  cmd->add_option("--out-dir", o->out_dir, "Directory for results.csv, results.md and the SVG figures");
+  cmd->add_option("--scenes", o->scenes, "Scenes to run, e.g. S1,S3 (default: all)")->delimiter(',');
+  cmd->add_option("--repeats", o->repeats, "Runs per setting; the wall time is their median")->check(CLI::Range(1, 100));
+  cmd->add_option("--budget", o->budget, "Seconds one run may take before the method's tighter settings are skipped "
+                                         "(default 1, or 0.2 with --quick)")->check(CLI::NonNegativeNumber);
+  cmd->callback([o] {
+    std::ostringstream command;
+    command << "shotlab bench";
+    if (o->quick) command << " --quick";
+    if (!o->scenes.empty()) {
+      command << " --scenes ";
+      for (size_t k = 0; k < o->scenes.size(); ++k) command << (k ? "," : "") << o->scenes[k];
+    }
+    command << " --repeats " << o->repeats;
+    if (const int code = run_bench(*o, command.str())) throw CLI::RuntimeError(code);
+  });
+}
 
 }  // namespace shotlab

@@ -1,0 +1,95 @@
+#include "bench_cases.hpp"
+
+#include <cmath>
+
+namespace shotlab {
+namespace {
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+// S1: ball a starts 1 mm from b. It reaches b after 1e-3/v s; the contact lasts under 0.5 ms at these speeds
+// (VALIDATION R5: 448 us at 0.5 m/s), and the run ends 2e-3/v + 1 ms after the start, well after separation.
+BenchCase head_on(double speed, bool damped) {
+  const std::string s = num(speed);
+  BenchCase c{"S1-" + s + (damped ? "-damped" : "-undamped"), "S1",
+              "S1 head-on " + s + " m/s, " + (damped ? "damped" : "undamped"), "presets/bench/s1_head_on.json",
+              {"balls.a.velocity=[" + s + ",0,0]", "duration=" + num(2e-3 / speed + 1e-3)}};
+  if (!damped) {
+    c.overrides.push_back("materials.ball_ball.damping=0");
+    c.swap_exact = c.conservative = true;
+  }
+  c.free_space = true;
+  return c;
+}
+
+// S2: the cue ball's line passes the object ball's centre at `offset` diameters.
+BenchCase glancing(double offset) {
+  const double diameter = 2 * 0.028575;
+  BenchCase c{"S2-" + num(offset), "S2", "S2 glancing cut, offset " + num(offset), "presets/bench/s2_glancing.json",
+              {"balls.cue.position=[-0.06,0," + num(offset * diameter) + "]"}};
+  c.free_space = true;
+  return c;
+}
+
+BenchCase plain(const std::string& id, const std::string& label, const std::string& file) {
+  return {id, id, label, "presets/bench/" + file, {}};
+}
+
+// Half decades from 10^from down to 10^to: 1e-3, 3.16e-4, 1e-4, ...
+std::vector<double> half_decades(double from, double to, bool whole_only) {
+  std::vector<double> out;
+  for (double e = from; e >= to - 1e-9; e -= whole_only ? 1.0 : 0.5) out.push_back(std::pow(10.0, e));
+  return out;
+}
+
+}  // namespace
+
+std::vector<BenchCase> bench_cases() {
+  std::vector<BenchCase> cases;
+  for (bool damped : {false, true})
+    for (double v : {0.5, 2.0, 8.0}) cases.push_back(head_on(v, damped));
+  for (double offset : {0.9, 0.99, 0.999}) cases.push_back(glancing(offset));
+  cases.push_back(plain("S3", "S3 stun shot, slide to roll", "s3_stun.json"));
+  cases.push_back(plain("S4", "S4 cushion rebound", "s4_cushion.json"));
+  cases.push_back(plain("S5", "S5 Newton's cradle, 5 balls", "s5_cradle.json"));
+  BenchCase rack = plain("S6", "S6 break, first 60 ms", "s6_break.json");
+  rack.coarse = true;
+  cases.push_back(rack);
+  BenchCase full = plain("S7", "S7 full break to rest", "s7_break_full.json");
+  full.until_rest = true;
+  cases.push_back(full);
+  return cases;
+}
+
+IntegratorOptions integrator_options(const MethodSetting& s) {
+  IntegratorOptions o;
+  o.method = s.method;
+  if (is_adaptive(s.method)) o.abs_tol = o.rel_tol = s.value;
+  else o.fixed_step = s.value;
+  o.max_steps_per_call = 1 << 30;  // the bench advances a whole run in one call
+  return o;
+}
+
+std::vector<MethodSetting> sweep(bool coarse) {
+  std::vector<MethodSetting> out;
+  // Fixed steps from 1e-4 s (about the explicit stability limit of the cloth friction, MODEL.md) to 1e-6 s (coarse)
+  // or 1e-7 s.
+  for (Method m : {Method::Euler, Method::RK4})
+    for (double h : half_decades(-4, coarse ? -6 : -7, coarse)) out.push_back({m, h});
+  for (Method m : {Method::CashKarp54, Method::DormandPrince5, Method::BulirschStoer, Method::Rosenbrock4})
+    for (double tol : half_decades(-3, -11, coarse)) out.push_back({m, tol});
+  return out;
+}
+
+std::vector<MethodSetting> sweep_timed_only(bool quick) {
+  std::vector<MethodSetting> out;
+  for (Method m : {Method::CashKarp54, Method::DormandPrince5, Method::BulirschStoer})
+    for (double tol : quick ? std::vector<double>{1e-6} : std::vector<double>{1e-4, 1e-6, 1e-8}) out.push_back({m, tol});
+  return out;
+}
+
+}  // namespace shotlab

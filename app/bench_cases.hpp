@@ -1,0 +1,47 @@
+// What `shotlab bench` measures: the scene variants (S1-S7, scene files in presets/bench/ with PATH=VALUE
+// overrides) and the integrator settings swept over each of them.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "engine/model.hpp"
+
+namespace shotlab {
+
+struct BenchCase {
+  std::string id;                      // "S1-2-undamped": unique, used in the CSV
+  std::string scene;                   // "S1": the --scenes selector
+  std::string label;                   // for plots and tables
+  std::string file;                    // presets/bench/...json, relative to the data root
+  std::vector<std::string> overrides;  // PATH=VALUE applied to the file
+  bool swap_exact = false;    // head-on, equal masses, undamped: the balls swap velocities exactly
+  bool conservative = false;  // nothing dissipates: report the energy drift
+  bool free_space = false;    // no external force: report the momentum error
+  bool until_rest = false;    // timed only (S7): run until every ball is at rest, no error measured
+  bool coarse = false;        // expensive (S6): sweep whole decades only, as --quick does
+};
+
+// Every case, in report order.
+std::vector<BenchCase> bench_cases();
+
+// One integrator configuration: an adaptive method at a tolerance (abs_tol = rel_tol = tol), or a fixed-step
+// method at a step.
+struct MethodSetting {
+  Method method;
+  double value;  // tolerance (adaptive) or step in s (fixed)
+};
+IntegratorOptions integrator_options(const MethodSetting& setting);
+
+// The sweep: Euler and RK4 over fixed steps, each adaptive method over tolerances, loosest first (the runner stops
+// a method once it gets too slow, and tighter settings are only slower). `coarse` takes whole decades only and
+// fewer steps; S7 gets a short list of practical settings.
+std::vector<MethodSetting> sweep(bool coarse);
+std::vector<MethodSetting> sweep_timed_only(bool quick);
+
+// The reference solution: the first two of these methods that finish, at the first of these tolerances where two
+// do. (At 1e-13 the error control of some methods cannot pass a damped contact onset, where the linear damping
+// force jumps: it stops with step_too_small; then the next candidate or tolerance is taken.)
+inline constexpr Method kReferenceMethods[] = {Method::DormandPrince5, Method::BulirschStoer, Method::CashKarp54};
+inline constexpr double kReferenceTols[] = {1e-13, 1e-12};
+
+}  // namespace shotlab

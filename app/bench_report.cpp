@@ -1,0 +1,142 @@
+#include "bench_report.hpp"
+
+#include <cmath>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <thread>
+
+namespace shotlab {
+namespace {
+
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+std::string sci(double v) { return v < 0 ? "" : fmt("%.2e", v); }
+std::string ms(double seconds) { return fmt("%.3g", seconds * 1e3); }
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown CPU";
+}
+
+bool write_csv(const std::string& path, const BenchReport& r) {
+  std::ofstream o(path);
+  o << "case,scene,method,adaptive,setting,status,pos_err,vel_err,err,missed,energy_drift,momentum_err,"
+       "wall_s,repeats,steps,rejected,rhs,contacts,steps_per_contact,sim_time_s\n";
+  for (const BenchRow& w : r.rows) {
+    const bool measured = !w.c->until_rest;
+    o << w.c->id << "," << w.c->scene << "," << method_name(w.setting.method) << ","
+      << (is_adaptive(w.setting.method) ? 1 : 0) << "," << fmt("%.3g", w.setting.value) << ","
+      << status_name(w.run.status) << "," << (measured ? sci(w.err.position) : "") << ","
+      << (measured ? sci(w.err.velocity) : "") << "," << (measured ? sci(w.err.worst()) : "") << ","
+      << (measured ? std::to_string(w.err.missed) : "") << "," << sci(w.err.energy) << "," << sci(w.err.momentum)
+      << "," << fmt("%.6g", w.wall) << "," << w.repeats << "," << w.run.stats.steps << ","
+      << w.run.stats.rejected_steps << "," << w.run.stats.rhs_evaluations << "," << w.run.contacts << ","
+      << fmt("%.1f", w.run.steps_per_contact) << "," << fmt("%.6g", w.run.end_time) << "\n";
+  }
+  return static_cast<bool>(o);
+}
+
+// For each case and method, the cheapest setting whose error is at most each target: the table form of the
+// work-precision figure.
+void summary_table(std::ostream& o, const BenchReport& r) {
+  const double targets[] = {1e-3, 1e-6, 1e-9};
+  o << "| case | method | error <= 1e-3 | error <= 1e-6 | error <= 1e-9 |\n|---|---|---|---|---|\n";
+  for (size_t k = 0; k < r.rows.size(); ++k) {
+    const BenchRow& first = r.rows[k];
+    if (first.c->until_rest || (k > 0 && r.rows[k - 1].c == first.c && r.rows[k - 1].setting.method == first.setting.method))
+      continue;
+    o << "| " << first.c->id << " | " << method_name(first.setting.method) << " |";
+    for (double target : targets) {
+      const BenchRow* best = nullptr;
+      for (size_t j = k; j < r.rows.size() && r.rows[j].c == first.c && r.rows[j].setting.method == first.setting.method; ++j) {
+        const BenchRow& w = r.rows[j];
+        if (w.run.status == Status::Ok && w.err.worst() <= target && w.err.missed == 0 && (!best || w.wall < best->wall))
+          best = &w;
+      }
+      o << " " << (best ? setting_text(best->setting) + ": " + ms(best->wall) + " ms" : "-") << " |";
+    }
+    o << "\n";
+  }
+}
+
+void full_table(std::ostream& o, const BenchReport& r, const std::string& case_id) {
+  o << "\n### " << case_id << ", every setting\n\n| method | setting | pos err / R | vel err / v0 | wall ms | steps | "
+       "rejected | rhs | steps per contact | missed |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const BenchRow& w : r.rows)
+    if (w.c->id == case_id)
+      o << "| " << method_name(w.setting.method) << " | " << setting_text(w.setting) << " | " << sci(w.err.position)
+        << " | " << sci(w.err.velocity) << " | " << ms(w.wall) << " | " << w.run.stats.steps << " | "
+        << w.run.stats.rejected_steps << " | " << w.run.stats.rhs_evaluations << " | "
+        << fmt("%.1f", w.run.steps_per_contact) << " | " << w.err.missed
+        << (w.run.status != Status::Ok ? std::string(" (") + status_name(w.run.status) + ")" : "") << " |\n";
+}
+
+bool write_markdown(const std::string& path, const BenchReport& r) {
+  std::ofstream o(path);
+  const std::time_t now = std::time(nullptr);
+  char date[64];
+  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  o << "# shotlab bench results\n\n- Machine: " << cpu_model() << ", " << std::thread::hardware_concurrency()
+    << " hardware threads\n- Date: " << date << "\n- Command: `" << r.command << "` (total " << fmt("%.0f", r.total_seconds)
+    << " s)\n- Wall time: median of each setting's repeats, inside `advance()` only\n"
+    << "- Error: max(|p - p_ref| / R, |v - v_ref| / v0) over the balls at the end time; missed: contacts of the "
+       "reference that the run did not have\n\n";
+  o << "## References\n\nThe reference run and a second method as its check, both at the tolerance shown; errors "
+       "below their agreement are not resolved. Exact vel error: the reference against the exact velocity swap.\n\n"
+       "| case | reference | check | agreement pos / R | agreement vel / v0 | exact vel error | wall s |\n"
+       "|---|---|---|---|---|---|---|\n";
+  for (const ReferenceInfo& ref : r.references)
+    o << "| " << ref.c->id << " | " << method_name(ref.a.method) << " " << setting_text(ref.a) << " | "
+      << method_name(ref.b.method) << " " << setting_text(ref.b) << " | " << sci(ref.agreement.position) << " | " << sci(ref.agreement.velocity) << " | "
+      << (ref.exact_velocity < 0 ? "-" : sci(ref.exact_velocity)) << " | " << fmt("%.2f", ref.wall) << " |\n";
+  o << "\n## Cheapest setting for an error target (setting: median wall time)\n\n";
+  summary_table(o, r);
+  o << "\n## Missed contacts\n\n";
+  bool any = false;
+  for (const BenchRow& w : r.rows)
+    if (!w.c->until_rest && w.err.missed > 0) {
+      o << "- " << w.c->id << ", " << method_name(w.setting.method) << " " << setting_text(w.setting) << ": "
+        << w.err.missed << " missed\n";
+      any = true;
+    }
+  if (!any) o << "None: every run had every contact of its reference.\n";
+  for (const char* id : {"S2-0.999", "S3", "S6"}) full_table(o, r, id);
+  o << "\n## S7: full break to rest (timed only)\n\n| method | tolerance | simulated s | wall s | real-time factor | "
+       "steps | rejected | rhs | contacts | steps per contact |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const BenchRow& w : r.rows)
+    if (w.c->until_rest)
+      o << "| " << method_name(w.setting.method) << " | " << setting_text(w.setting) << " | "
+        << fmt("%.2f", w.run.end_time) << " | " << fmt("%.3g", w.wall) << " | " << fmt("%.1f", w.run.end_time / w.wall)
+        << " | " << w.run.stats.steps << " | " << w.run.stats.rejected_steps << " | " << w.run.stats.rhs_evaluations
+        << " | " << w.run.contacts << " | " << fmt("%.1f", w.run.steps_per_contact) << " |\n";
+  if (!r.notes.empty()) {
+    o << "\n## Not run\n\n";
+    for (const std::string& n : r.notes) o << "- " << n << "\n";
+  }
+  return static_cast<bool>(o);
+}
+
+}  // namespace
+
+bool write_report(const std::string& dir, const BenchReport& r) {
+  for (const auto& [file, ok] : {std::pair{"results.csv", write_csv(dir + "/results.csv", r)},
+                                 std::pair{"results.md", write_markdown(dir + "/results.md", r)},
+                                 std::pair{"figures", write_figures(dir, r)}})
+    if (!ok) {
+      std::cerr << "shotlab bench: " << dir << ": cannot write " << file << "\n";
+      return false;
+    }
+  return true;
+}
+
+std::string setting_text(const MethodSetting& s) {
+  return (is_adaptive(s.method) ? "" : "h=") + fmt("%.2g", s.value);
+}
+
+}  // namespace shotlab

@@ -1,0 +1,41 @@
+// One bench run: a case simulated with one integrator setting, and what it cost; and the errors of a run against
+// the reference run of the same case.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "app/bench_cases.hpp"
+#include "engine/simulation.hpp"
+
+namespace shotlab {
+
+struct RunResult {
+  Status status = Status::Ok;
+  double end_time = 0;     // s
+  StateVector x;           // final state
+  std::vector<double> radius;
+  Stats stats;
+  int contacts = 0;             // contacts that began during the run, ball-ball and ball-cushion (the cloth excluded)
+  double steps_per_contact = 0; // mean number of steps overlapping each of them
+  double energy0 = 0, energy1 = 0;  // J, total at start and end
+  Vec3 momentum0{0.0}, momentum1{0.0};
+  StateVector x0;               // initial state (S1's exact answer is built from it)
+  double speed_scale = 0;       // m/s, max initial ball speed (velocity errors are relative to it)
+};
+
+// Loads the case's scene from `data_root`, applies the setting, simulates. Throws InputError on a bad scene file.
+RunResult run_case(const std::string& data_root, const BenchCase& c, const MethodSetting& setting);
+
+struct Errors {
+  double position = 0;   // max over balls |p - p_ref| / R
+  double velocity = 0;   // max over balls |v - v_ref| / speed scale
+  int missed = 0;        // contacts of the reference that did not happen
+  double energy = -1;    // |E1 - E0| / E0 when the case is conservative, else -1 (not applicable)
+  double momentum = -1;  // |P1 - P0| / |P0| when the case is in free space, else -1
+  double worst() const { return std::max(position, velocity); }
+};
+
+// Errors of `run` against `ref`; for swap_exact cases the velocities are compared with the exact swap instead.
+Errors errors(const BenchCase& c, const RunResult& run, const RunResult& ref);
+
+}  // namespace shotlab
