@@ -1,0 +1,74 @@
+#include "ui/camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace shotlab {
+
+namespace {
+constexpr double kMaxPitch = 1.5707;  // just short of straight down, so the view matrix keeps its up vector
+}
+
+glm::dvec3 Camera::eye() const {
+  return target + distance * glm::dvec3{std::cos(pitch) * std::cos(yaw), std::sin(pitch), std::cos(pitch) * std::sin(yaw)};
+}
+
+glm::dmat4 Camera::view() const { return glm::lookAt(eye(), target, glm::dvec3{0, 1, 0}); }
+
+glm::dmat4 Camera::projection(double aspect) const { return glm::perspective(fov, aspect, 0.01, 50.0); }
+
+void Camera::orbit(double dx, double dy) {
+  yaw += dx * 0.006;
+  pitch = std::clamp(pitch + dy * 0.006, 0.02, kMaxPitch);
+}
+
+void Camera::pan(double dx, double dy, double viewport_height) {
+  // One pixel moves the target by the size of a pixel at the target's distance.
+  const double scale = 2 * distance * std::tan(fov / 2) / std::max(viewport_height, 1.0);
+  const glm::dvec3 forward = glm::normalize(target - eye());
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3{0, 1, 0}));
+  const glm::dvec3 up = glm::cross(right, forward);
+  target += (-dx * right + dy * up) * scale;
+}
+
+void Camera::zoom(double steps) { distance = std::clamp(distance * std::pow(0.88, steps), 0.05, 12.0); }
+
+void Camera::top_view() {
+  target = {0, 0, 0};
+  yaw = M_PI / 2;  // x (the table's length) runs left to right on screen
+  pitch = kMaxPitch;
+  distance = 2.7;
+}
+
+void Camera::reset() { *this = Camera{}; }
+
+Viewport::Viewport(const Camera& c, double w, double h)
+    : view_proj(c.projection(w / std::max(h, 1.0)) * c.view()), eye(c.eye()), width(w), height(h) {}
+
+std::optional<glm::dvec2> Viewport::project(const glm::dvec3& p) const {
+  const glm::dvec4 clip = view_proj * glm::dvec4(p, 1.0);
+  if (clip.w < 1e-4) return std::nullopt;
+  const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+  return glm::dvec2{(ndc.x * 0.5 + 0.5) * width, (0.5 - ndc.y * 0.5) * height};
+}
+
+std::optional<glm::dvec3> Viewport::pick_plane(const glm::dvec2& pixel, double y) const {
+  const glm::dmat4 inv = glm::inverse(view_proj);
+  const glm::dvec2 ndc{pixel.x / width * 2 - 1, 1 - pixel.y / height * 2};
+  glm::dvec4 far = inv * glm::dvec4(ndc, 1.0, 1.0);
+  const glm::dvec3 dir = glm::normalize(glm::dvec3(far) / far.w - eye);
+  if (std::abs(dir.y) < 1e-9) return std::nullopt;
+  const double s = (y - eye.y) / dir.y;
+  if (s <= 0) return std::nullopt;
+  return eye + s * dir;
+}
+
+double Viewport::screen_radius(const glm::dvec3& p, double r) const {
+  const glm::dvec3 forward = glm::normalize(p - eye);
+  const glm::dvec3 side = glm::normalize(glm::cross(forward, glm::dvec3{0, 1, 0}) + glm::dvec3{1e-12, 0, 0});
+  const auto a = project(p), b = project(p + r * side);
+  return a && b ? glm::length(*a - *b) : 0.0;
+}
+
+}  // namespace shotlab

@@ -1,0 +1,41 @@
+// Orbit camera around a target point on the table: drag to orbit, pan the target, zoom the distance; a top view.
+#pragma once
+#include <glm/glm.hpp>
+#include <optional>
+
+namespace shotlab {
+
+struct Camera {
+  glm::dvec3 target{0.0};
+  double yaw = -0.5;     // rad, around the vertical axis
+  double pitch = 0.75;   // rad above the table plane
+  double distance = 2.6; // m
+  double fov = 0.8;      // rad, vertical
+
+  glm::dvec3 eye() const;
+  glm::dmat4 view() const;
+  glm::dmat4 projection(double aspect) const;
+
+  void orbit(double dx_pixels, double dy_pixels);
+  void pan(double dx_pixels, double dy_pixels, double viewport_height);
+  void zoom(double wheel_steps);
+  void top_view();
+  void reset();
+};
+
+// A camera fixed to one viewport for the frame: world <-> screen.
+struct Viewport {
+  glm::dmat4 view_proj;
+  glm::dvec3 eye;
+  double width, height;
+
+  Viewport(const Camera& camera, double width, double height);
+  // Screen position in pixels (origin top-left), nullopt when the point is behind the camera.
+  std::optional<glm::dvec2> project(const glm::dvec3& p) const;
+  // Where the ray under the pixel meets the horizontal plane y = height_above_bed (nullopt: it does not).
+  std::optional<glm::dvec3> pick_plane(const glm::dvec2& pixel, double height_above_bed) const;
+  // Radius on screen of a sphere of radius r at p (pixels).
+  double screen_radius(const glm::dvec3& p, double r) const;
+};
+
+}  // namespace shotlab

@@ -1,0 +1,58 @@
+// Predicted paths before the shot: a background thread runs its own Simulation of the scene as it would be shot
+// and hands back each ball's path. A newer request supersedes a running one (the thread checks between chunks), so
+// dragging the aim never queues work.
+#pragma once
+#include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "engine/events.hpp"
+#include "engine/scene.hpp"
+
+namespace shotlab {
+
+struct PathPoint {
+  Vec3 position;
+  Motion motion;
+};
+
+struct Prediction {
+  long generation = -1;                     // which request it answers
+  std::vector<std::vector<PathPoint>> paths;  // per ball, in scene order
+  double simulated = 0;                     // s covered
+  std::string problem;                      // why it stopped early (engine status, invalid scene), empty if none
+};
+
+class Predictor {
+ public:
+  Predictor();
+  ~Predictor();
+  Predictor(const Predictor&) = delete;
+  Predictor& operator=(const Predictor&) = delete;
+
+  // Starts predicting `scene` (abandoning any older request); returns the request's generation.
+  long request(const Scene& scene);
+  // The latest finished prediction, if any.
+  std::optional<Prediction> latest() const;
+  bool busy() const { return busy_; }
+
+ private:
+  void run();
+  Prediction predict(const Scene& scene, long generation);
+
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::optional<Scene> pending_;
+  std::optional<Prediction> done_;
+  long generation_ = 0;
+  std::atomic<long> wanted_{0};
+  std::atomic<bool> busy_{false};
+  bool quit_ = false;
+  std::thread thread_;
+};
+
+}  // namespace shotlab

@@ -1,0 +1,273 @@
+#include "ui/renderer.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "app/paths.hpp"
+#include "ui/gl.hpp"
+
+namespace shotlab {
+
+namespace {
+
+std::string read_asset(const std::string& name) {
+  std::ifstream in(asset_path(name));
+  if (!in) throw std::runtime_error("cannot read " + asset_path(name));
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+unsigned compile(GLenum kind, const std::string& name) {
+  const std::string text = read_asset(name);
+  const char* src = text.c_str();
+  const unsigned shader = glCreateShader(kind);
+  glShaderSource(shader, 1, &src, nullptr);
+  glCompileShader(shader);
+  int ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[2048];
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    throw std::runtime_error(name + ": " + log);
+  }
+  return shader;
+}
+
+// Position + normal, 6 floats a vertex, triangles.
+void push(std::vector<float>& v, const glm::vec3& p, const glm::vec3& n) {
+  v.insert(v.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+}
+
+std::vector<float> sphere_mesh(int slices, int stacks) {
+  std::vector<float> v;
+  auto at = [&](int i, int j) {
+    const float th = float(M_PI) * j / stacks, ph = 2 * float(M_PI) * i / slices;
+    return glm::vec3{std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph)};
+  };
+  for (int j = 0; j < stacks; ++j)
+    for (int i = 0; i < slices; ++i) {
+      const glm::vec3 a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      for (const glm::vec3& p : {a, c, b, a, d, c}) push(v, p, p);
+    }
+  return v;
+}
+
+std::vector<float> cube_mesh() {  // unit cube centred on the origin
+  std::vector<float> v;
+  for (int axis = 0; axis < 3; ++axis)
+    for (float sign : {-1.0f, 1.0f}) {
+      glm::vec3 n{0}, u{0}, w{0};
+      n[axis] = sign;
+      u[(axis + 1) % 3] = 0.5f;
+      w[(axis + 2) % 3] = 0.5f * sign;
+      const glm::vec3 c = n * 0.5f;
+      for (const glm::vec3& p : {c - u - w, c + u - w, c + u + w, c - u - w, c + u + w, c - u + w}) push(v, p, n);
+    }
+  return v;
+}
+
+std::vector<float> cylinder_mesh(int slices) {  // radius 1, y from 0 to 1, with a top cap
+  std::vector<float> v;
+  for (int i = 0; i < slices; ++i) {
+    const float a = 2 * float(M_PI) * i / slices, b = 2 * float(M_PI) * (i + 1) / slices;
+    const glm::vec3 pa{std::cos(a), 0, std::sin(a)}, pb{std::cos(b), 0, std::sin(b)}, up{0, 1, 0};
+    for (const glm::vec3& p : {pa, pb + up, pb, pa, pa + up, pb + up}) push(v, p, glm::vec3{p.x, 0, p.z});
+    for (const glm::vec3& p : {up, pb + up, pa + up}) push(v, p, up);
+  }
+  return v;
+}
+
+// A box from `from` to `to` across a horizontal segment a-b: `outward` is the horizontal unit normal.
+glm::dmat4 slab(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& outward, double from, double to,
+                double bottom, double top) {
+  const glm::dvec3 along = b - a;
+  const glm::dvec3 centre = (a + b) * 0.5 + outward * ((from + to) / 2);
+  glm::dmat4 m(1.0);
+  m[0] = glm::dvec4(along, 0);
+  m[1] = glm::dvec4(0, top - bottom, 0, 0);
+  m[2] = glm::dvec4(outward * (to - from), 0);
+  m[3] = glm::dvec4(centre.x, (top + bottom) / 2, centre.z, 1);
+  return m;
+}
+
+}  // namespace
+
+BallLook ball_look(const std::string& id) {
+  static const glm::vec3 pool[8] = {{0.1f, 0.1f, 0.1f},   {0.95f, 0.78f, 0.1f}, {0.1f, 0.25f, 0.75f},
+                                    {0.8f, 0.1f, 0.1f},   {0.4f, 0.15f, 0.55f}, {0.95f, 0.45f, 0.1f},
+                                    {0.05f, 0.45f, 0.2f}, {0.5f, 0.12f, 0.1f}};
+  if (id == "cue" || id == "white") return {{0.95f, 0.94f, 0.88f}, 3};
+  if (id == "yellow") return {{0.95f, 0.8f, 0.15f}, 1};
+  if (id == "red") return {{0.8f, 0.1f, 0.1f}, 1};
+  char* end = nullptr;
+  const long number = std::strtol(id.c_str(), &end, 10);
+  if (end != id.c_str() && *end == '\0' && number >= 1 && number <= 15)
+    return {number == 8 ? pool[0] : pool[number % 8], number > 8 ? 2 : 1};
+  const size_t h = std::hash<std::string>{}(id);
+  return {{0.3f + (h % 7) * 0.1f, 0.2f + (h / 7 % 7) * 0.1f, 0.3f + (h / 49 % 7) * 0.1f}, 1};
+}
+
+Renderer::Renderer() {
+  program_ = glCreateProgram();
+  const unsigned vs = compile(GL_VERTEX_SHADER, "shaders/mesh.vert"), fs = compile(GL_FRAGMENT_SHADER, "shaders/mesh.frag");
+  glAttachShader(program_, vs);
+  glAttachShader(program_, fs);
+  glLinkProgram(program_);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  int ok = 0;
+  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+  if (!ok) throw std::runtime_error("mesh shader program does not link");
+  loc_view_proj_ = glGetUniformLocation(program_, "u_view_proj");
+  loc_model_ = glGetUniformLocation(program_, "u_model");
+  loc_normal_ = glGetUniformLocation(program_, "u_normal_matrix");
+  loc_color_ = glGetUniformLocation(program_, "u_color");
+  loc_alpha_ = glGetUniformLocation(program_, "u_alpha");
+  loc_pattern_ = glGetUniformLocation(program_, "u_pattern");
+  loc_eye_ = glGetUniformLocation(program_, "u_eye");
+  sphere_ = upload(sphere_mesh(40, 20));
+  cube_ = upload(cube_mesh());
+  cylinder_ = upload(cylinder_mesh(32));
+}
+
+Renderer::~Renderer() {
+  for (Mesh* m : {&sphere_, &cube_, &cylinder_}) {
+    glDeleteBuffers(1, &m->vbo);
+    glDeleteVertexArrays(1, &m->vao);
+  }
+  glDeleteProgram(program_);
+}
+
+Renderer::Mesh Renderer::upload(const std::vector<float>& data) {
+  Mesh m;
+  m.count = static_cast<int>(data.size() / 6);
+  glGenVertexArrays(1, &m.vao);
+  glGenBuffers(1, &m.vbo);
+  glBindVertexArray(m.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
+  glBufferData(GL_ARRAY_BUFFER, data.size() * sizeof(float), data.data(), GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
+  glEnableVertexAttribArray(1);
+  glBindVertexArray(0);
+  return m;
+}
+
+void Renderer::begin(const glm::dmat4& view_proj, const glm::dvec3& eye, int width, int height) {
+  glViewport(0, 0, width, height);
+  glClearColor(0.13f, 0.14f, 0.16f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glUseProgram(program_);
+  glUniformMatrix4fv(loc_view_proj_, 1, GL_FALSE, glm::value_ptr(glm::mat4(view_proj)));
+  glUniform3fv(loc_eye_, 1, glm::value_ptr(glm::vec3(eye)));
+}
+
+void Renderer::draw(const Mesh& mesh, const glm::dmat4& model, const glm::vec3& color, int pattern, float alpha) {
+  const glm::mat4 m(model);
+  const glm::mat3 normal = glm::transpose(glm::inverse(glm::mat3(m)));
+  glUniformMatrix4fv(loc_model_, 1, GL_FALSE, glm::value_ptr(m));
+  glUniformMatrix3fv(loc_normal_, 1, GL_FALSE, glm::value_ptr(normal));
+  glUniform3fv(loc_color_, 1, glm::value_ptr(color));
+  glUniform1f(loc_alpha_, alpha);
+  glUniform1i(loc_pattern_, pattern);
+  glBindVertexArray(mesh.vao);
+  glDrawArrays(GL_TRIANGLES, 0, mesh.count);
+}
+
+void Renderer::draw_ball(const glm::dvec3& p, const glm::dquat& q, double r, const BallLook& look, float alpha) {
+  const glm::dmat4 m = glm::translate(glm::dmat4(1.0), p) * glm::mat4_cast(q) * glm::scale(glm::dmat4(1.0), glm::dvec3(r));
+  if (alpha < 1) glDepthMask(GL_FALSE);  // a see-through ghost must not hide what is behind it
+  draw(sphere_, m, look.color, look.pattern, alpha);
+  glDepthMask(GL_TRUE);
+}
+
+void Renderer::draw_scene(const Scene& scene, const Model& model) {
+  if (scene.table) draw_table(*scene.table, model);
+  else draw_colliders(model);
+}
+
+void Renderer::draw_table(const TableSpec& t, const Model& model) {
+  const glm::vec3 cloth{0.05f, 0.42f, 0.22f}, rubber{0.04f, 0.34f, 0.17f}, wood{0.36f, 0.2f, 0.09f};
+  const double hx = t.length / 2, hz = t.width / 2, rw = t.rail_width;
+  const double rail_in = 0.05, rail_top = t.nose_height + t.cushion_radius + 0.004;
+  // Cloth over the whole bed collider, which reaches rail_width beyond the noses.
+  draw(cube_, slab({-hx - rw, 0, 0}, {hx + rw, 0, 0}, {0, 0, 1}, -hz - rw, hz + rw, -0.02, 0.0), cloth, 0, 1);
+  // Cushion rubber from each cushion collider's nose back to the rail.
+  for (const Collider& c : model.colliders) {
+    const auto* cap = std::get_if<Capsule>(&c.shape);
+    if (!cap || c.material != kBallCushion) continue;
+    glm::dvec3 along = cap->b - cap->a;
+    along.y = 0;
+    if (glm::length(along) < 1e-9) continue;
+    glm::dvec3 out = glm::normalize(glm::dvec3{-along.z, 0, along.x});
+    const glm::dvec3 mid = (cap->a + cap->b) * 0.5;
+    if (glm::dot(out, glm::dvec3{mid.x / (hx * hx), 0, mid.z / (hz * hz)}) < 0) out = -out;
+    draw(cube_, slab(cap->a, cap->b, out, -cap->radius, rail_in, 0.0, cap->a.y + cap->radius), rubber, 0, 1);
+  }
+  // Wooden rails outside the cushions, with the diamonds (sights) on top.
+  const double o = hx + rail_in, p = hz + rail_in, w = 0.11;
+  draw(cube_, slab({-o - w, 0, -p}, {o + w, 0, -p}, {0, 0, -1}, 0, w, -0.02, rail_top), wood, 0, 1);
+  draw(cube_, slab({-o - w, 0, p}, {o + w, 0, p}, {0, 0, 1}, 0, w, -0.02, rail_top), wood, 0, 1);
+  draw(cube_, slab({-o, 0, -p}, {-o, 0, p}, {-1, 0, 0}, 0, w, -0.02, rail_top), wood, 0, 1);
+  draw(cube_, slab({o, 0, -p}, {o, 0, p}, {1, 0, 0}, 0, w, -0.02, rail_top), wood, 0, 1);
+  auto diamond = [&](double x, double z) {
+    draw(cylinder_, glm::translate(glm::dmat4(1.0), {x, rail_top, z}) * glm::scale(glm::dmat4(1.0), {0.008, 0.001, 0.008}),
+         {0.92f, 0.92f, 0.85f}, 0, 1);
+  };
+  for (int k = -3; k <= 3; ++k)  // every eighth of the length on the long rails, a quarter of the width on the short
+    if (k != 0 || t.kind == TableKind::Carom)
+      for (double z : {-p - w / 2, p + w / 2}) diamond(k * t.length / 8, z);
+  for (int k = -1; k <= 1; ++k)
+    for (double x : {-o - w / 2, o + w / 2}) diamond(x, k * t.width / 4);
+  for (const Pocket& pk : model.pockets)
+    draw(cylinder_, glm::translate(glm::dmat4(1.0), {pk.center.x, -0.015, pk.center.z}) *
+                        glm::scale(glm::dmat4(1.0), {pk.radius, rail_top + 0.016, pk.radius}),
+         {0.02f, 0.02f, 0.02f}, 0, 1);
+}
+
+void Renderer::draw_colliders(const Model& model) {
+  const glm::vec3 grey{0.45f, 0.47f, 0.5f};
+  for (const Collider& c : model.colliders) {
+    if (const auto* s = std::get_if<StaticSphere>(&c.shape))
+      draw(sphere_, glm::translate(glm::dmat4(1.0), s->center) * glm::scale(glm::dmat4(1.0), glm::dvec3(s->radius)), grey, 0, 1);
+    else if (const auto* cap = std::get_if<Capsule>(&c.shape)) {
+      glm::dvec3 along = cap->b - cap->a;
+      const glm::dvec3 side = glm::length(glm::dvec3{along.x, 0, along.z}) > 1e-9
+                                  ? glm::normalize(glm::dvec3{-along.z, 0, along.x}) : glm::dvec3{1, 0, 0};
+      draw(cube_, slab(cap->a, cap->b, side, -cap->radius, cap->radius, cap->a.y - cap->radius, cap->a.y + cap->radius),
+           grey, 0, 1);
+    } else if (const auto* bp = std::get_if<BoundedPlane>(&c.shape)) {
+      glm::dmat4 m(1.0);
+      m[0] = glm::dvec4(bp->u, 0);
+      m[2] = glm::dvec4(bp->v, 0);
+      m[1] = glm::dvec4(glm::normalize(glm::cross(bp->u, bp->v)) * 0.01, 0);
+      const glm::dvec3 centre = bp->origin + (bp->u + bp->v) * 0.5 - glm::dvec3(m[1]) * 0.5;
+      m[3] = glm::dvec4(centre, 1);
+      draw(cube_, m, {0.25f, 0.3f, 0.35f}, 0, 1);
+    } else if (const auto* pl = std::get_if<Plane>(&c.shape)) {
+      // An infinite plane, drawn as a 4 m square around its point.
+      const glm::dvec3 n = glm::normalize(pl->normal);
+      const glm::dvec3 u = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? glm::dvec3{1, 0, 0} : glm::dvec3{0, 0, 1}));
+      glm::dmat4 m(1.0);
+      m[0] = glm::dvec4(u * 4.0, 0);
+      m[1] = glm::dvec4(n * 0.01, 0);
+      m[2] = glm::dvec4(glm::cross(u, n) * 4.0, 0);
+      m[3] = glm::dvec4(pl->point - n * 0.005, 1);
+      draw(cube_, m, {0.25f, 0.3f, 0.35f}, 0, 1);
+    }
+  }
+}
+
+}  // namespace shotlab

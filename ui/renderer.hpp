@@ -1,0 +1,48 @@
+// The 3D part of the view: table (cloth, cushions from the cushion colliders, rails, pockets, diamonds), other
+// colliders of table-less scenes, and the balls with a pattern that turns with their orientation. Lines, arrows and
+// labels are drawn over it with ImGui's draw list (overlay.cpp).
+#pragma once
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <string>
+
+#include "engine/scene.hpp"
+
+namespace shotlab {
+
+struct BallLook {
+  glm::vec3 color;
+  int pattern;  // as in assets/shaders/mesh.frag
+};
+// Pool colours by number, the cue ball by id "cue", carom balls by their names; anything else by a hash of the id.
+BallLook ball_look(const std::string& id);
+
+class Renderer {
+ public:
+  Renderer();  // needs a current OpenGL 3.3 context; throws std::runtime_error when a shader does not build
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  void begin(const glm::dmat4& view_proj, const glm::dvec3& eye, int width, int height);
+  // `model` is the prepared model (table colliders added) of `scene`.
+  void draw_scene(const Scene& scene, const Model& model);
+  void draw_ball(const glm::dvec3& p, const glm::dquat& orientation, double radius, const BallLook& look,
+                 float alpha = 1.0f);
+
+ private:
+  struct Mesh {
+    unsigned vao = 0, vbo = 0;
+    int count = 0;
+  };
+  Mesh upload(const std::vector<float>& interleaved);
+  void draw(const Mesh& mesh, const glm::dmat4& model, const glm::vec3& color, int pattern, float alpha);
+  void draw_table(const TableSpec& table, const Model& model);
+  void draw_colliders(const Model& model);
+
+  unsigned program_ = 0;
+  Mesh sphere_, cube_, cylinder_;
+  int loc_view_proj_, loc_model_, loc_normal_, loc_color_, loc_alpha_, loc_pattern_, loc_eye_;
+};
+
+}  // namespace shotlab
