@@ -23,7 +23,7 @@ struct ReferenceInfo {
   MethodSetting a, b;    // the reference and its check
   Errors agreement;      // method B against method A
   double exact_velocity; // swap_exact cases: the reference's velocity error against the exact swap, else -1
-  double wall;           // s, both reference runs
+  double wall;           // s, every reference run tried
 };
 
 struct BenchReport {
