@@ -38,7 +38,7 @@ void Camera::top_view() {
   target = {0, 0, 0};
   yaw = M_PI / 2;  // x (the table's length) runs left to right on screen
   pitch = kMaxPitch;
-  distance = 2.7;
+  distance = 3.9;
 }
 
 void Camera::reset() { *this = Camera{}; }

@@ -7,9 +7,9 @@ namespace shotlab {
 
 struct Camera {
   glm::dvec3 target{0.0};
-  double yaw = -0.5;     // rad, around the vertical axis
-  double pitch = 0.75;   // rad above the table plane
-  double distance = 2.6; // m
+  double yaw = 1.5708;   // rad, around the vertical axis: from the front, the table's length across the screen
+  double pitch = 0.9;    // rad above the table plane
+  double distance = 3.3; // m
   double fov = 0.8;      // rad, vertical
 
   glm::dvec3 eye() const;

@@ -55,7 +55,6 @@ struct Window {
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GL_TRUE);
-    glfwWindowHint(GLFW_SAMPLES, 4);
     handle = glfwCreateWindow(w, h, "shotlab", nullptr, nullptr);
     if (!handle) {
       glfwTerminate();
@@ -116,8 +115,7 @@ int run_gui(const GuiOptions& options) {
         lab.update(dt);
 
         play_panel(lab, settings.camera);
-        teach_panel(lab);
-        tune_panel(lab, probes);
+        inspector_panel(lab, probes);
         help_panel(&settings.view.help);
         message_banner(lab);
         draw_overlay(lab, viewport, ImGui::GetBackgroundDrawList());

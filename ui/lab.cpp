@@ -151,7 +151,10 @@ void Lab::update(double real_dt) {
   }
   const double wanted = real_dt * settings.slowmo;
   const double target = view_time + wanted;
-  const double reached = target <= shot->sim().time() ? target : shot->advance(target, settings.budget_ms * 1e-3);
+  // Physics wall time this frame: the configured budget, or more when frames are slow anyway (software rendering),
+  // but never above 50 ms, so that the window keeps answering.
+  const double budget = std::clamp(0.6 * real_dt, settings.budget_ms * 1e-3, std::max(0.05, settings.budget_ms * 1e-3));
+  const double reached = target <= shot->sim().time() ? target : shot->advance(target, budget);
   const double got = std::min(target, reached) - view_time;
   if (wanted > 0 && !shot->finished()) achieved_speed = 0.9 * achieved_speed + 0.1 * std::clamp(got / wanted, 0.0, 1.0);
   show(std::min(target, reached));

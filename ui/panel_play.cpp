@@ -186,7 +186,7 @@ void export_trajectory(const Lab& lab, const std::string& path) {
 
 void play_panel(Lab& lab, Camera& camera) {
   ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 720), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(320, ImGui::GetIO().DisplaySize.y), ImGuiCond_FirstUseEver);
   ImGui::Begin("Shot lab");
   ImGui::TextWrapped("%s", lab.scene.name.c_str());
   if (!lab.scene.description.empty()) ImGui::TextColored(ImVec4(0.7f, 0.9f, 1, 1), "%s", "What to look for:"), ImGui::TextWrapped("%s", lab.scene.description.c_str());
@@ -200,7 +200,7 @@ void play_panel(Lab& lab, Camera& camera) {
     ImGui::Checkbox("aim line", &v.aim), ImGui::SameLine(), ImGui::Checkbox("velocity", &v.velocity), ImGui::SameLine(),
         ImGui::Checkbox("spin", &v.spin);
     ImGui::Checkbox("contact forces", &v.forces);
-    ImGui::Checkbox("teaching panel", &v.teach_panel), ImGui::SameLine(), ImGui::Checkbox("tuning panel", &v.tune_panel);
+    ImGui::SameLine(), ImGui::Checkbox("inspector", &v.inspector);
     if (ImGui::Button("Top view (T)")) camera.top_view();
     ImGui::SameLine();
     if (ImGui::Button("Reset view")) camera.reset();

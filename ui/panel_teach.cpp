@@ -44,11 +44,6 @@ void ball_table(Lab& lab, const Frame& f) {
 }  // namespace
 
 void teach_panel(Lab& lab) {
-  if (!lab.settings.view.teach_panel) return;
-  const ImVec2 size = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(size.x - 340, 0), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(340, 560), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Teaching", &lab.settings.view.teach_panel);
   const Frame& f = lab.frame();
   ball_table(lab, f);
   const Model& model = lab.shot ? lab.shot->sim().model() : lab.table_model;
@@ -61,7 +56,6 @@ void teach_panel(Lab& lab) {
   ImGui::Checkbox("contact forces", &lab.settings.view.forces);
   if (!lab.shot) {
     ImGui::TextDisabled("Plots appear once a shot runs.");
-    ImGui::End();
     return;
   }
   // Time plots over the recorded frames up to the time on screen.
@@ -94,6 +88,32 @@ void teach_panel(Lab& lab) {
   if (force.empty()) ImGui::TextDisabled("no ball-ball collision yet");
   else plot("collision", force, text);
   ImGui::TextDisabled("collision: force at each integrator step");
+}
+
+
+
+void inspector_panel(Lab& lab, ProbeReadouts& probes) {
+  ViewFlags& v = lab.settings.view;
+  if (!v.inspector) return;
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(size.x - 350, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(350, size.y), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Inspector", &v.inspector);
+  // v.tab may be set elsewhere (a script, saved settings): then select that tab once; otherwise follow the clicks.
+  static int shown = -1;
+  const int wanted = v.tab;
+  if (ImGui::BeginTabBar("tabs")) {
+    const char* names[2] = {"Teaching", "Tuning"};
+    for (int i = 0; i < 2; ++i)
+      if (ImGui::BeginTabItem(names[i], nullptr, wanted != shown && wanted == i ? ImGuiTabItemFlags_SetSelected : 0)) {
+        if (wanted == shown) v.tab = i;
+        shown = i;
+        if (i == 0) teach_panel(lab);
+        else tune_panel(lab, probes);
+        ImGui::EndTabItem();
+      }
+    ImGui::EndTabBar();
+  }
   ImGui::End();
 }
 

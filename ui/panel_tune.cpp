@@ -92,11 +92,6 @@ void diagnostics(const Lab& lab) {
 }  // namespace
 
 void tune_panel(Lab& lab, ProbeReadouts& probes) {
-  if (!lab.settings.view.tune_panel) return;
-  const ImVec2 size = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(size.x - 700, 0), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360, 600), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Tuning", &lab.settings.view.tune_panel);
   update_probes(lab, probes);
   bool changed = false;
   slider("probe impact speed", lab.settings.impact_speed, 0.01, 20.0, "%.2f m/s", true);
@@ -136,7 +131,6 @@ void tune_panel(Lab& lab, ProbeReadouts& probes) {
   }
   if (ImGui::CollapsingHeader("Integrator diagnostics", ImGuiTreeNodeFlags_DefaultOpen)) diagnostics(lab);
   if (changed) lab.physics_changed();
-  ImGui::End();
 }
 
 }  // namespace shotlab

@@ -9,6 +9,9 @@
 namespace shotlab {
 
 void play_panel(Lab& lab, Camera& camera);  // panel_play.cpp: scenes, files, playback, aim, edit
+struct ProbeReadouts;
+// The inspector window on the right: a Teaching and a Tuning tab (panel_teach.cpp).
+void inspector_panel(Lab& lab, ProbeReadouts& probes);
 void teach_panel(Lab& lab);                 // panel_teach.cpp: per-ball readouts, energy, momentum, plots
 void help_panel(bool* open);                // panel_play.cpp: shortcuts
 void message_banner(Lab& lab);              // panel_play.cpp: errors and notes

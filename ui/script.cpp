@@ -115,9 +115,10 @@ bool Script::execute(ScriptHost& host, const std::string& line) {
     ViewFlags& v = lab.settings.view;
     bool* flag = name == "trails" ? &v.trails : name == "ghost" ? &v.ghost : name == "predicted" ? &v.predicted
                : name == "aim" ? &v.aim : name == "velocity" ? &v.velocity : name == "spin" ? &v.spin
-               : name == "forces" ? &v.forces : name == "teach" ? &v.teach_panel : name == "tune" ? &v.tune_panel
+               : name == "forces" ? &v.forces : name == "inspector" ? &v.inspector
                : name == "help" ? &v.help : nullptr;
-    if (flag) *flag = state == "on";
+    if (name == "teach" || name == "tune") v.tab = name == "tune";  // panel teach|tune: the inspector's tab
+    else if (flag) *flag = state == "on";
     else fail("unknown view flag");
   } else if (cmd == "camera") {
     in >> arg;

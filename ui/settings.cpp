@@ -59,8 +59,8 @@ Settings load_settings() {
     get(v, "velocity", s.view.velocity);
     get(v, "spin", s.view.spin);
     get(v, "forces", s.view.forces);
-    get(v, "teach_panel", s.view.teach_panel);
-    get(v, "tune_panel", s.view.tune_panel);
+    get(v, "inspector", s.view.inspector);
+    get(v, "tab", s.view.tab);
   }
   get(j, "slowmo", s.slowmo);
   get(j, "impact_speed", s.impact_speed);
@@ -81,7 +81,7 @@ void save_settings(const Settings& s) {
         {"distance", s.camera.distance}}},
       {"view",
        {{"trails", v.trails}, {"ghost", v.ghost}, {"predicted", v.predicted}, {"aim", v.aim}, {"velocity", v.velocity},
-        {"spin", v.spin}, {"forces", v.forces}, {"teach_panel", v.teach_panel}, {"tune_panel", v.tune_panel}}},
+        {"spin", v.spin}, {"forces", v.forces}, {"inspector", v.inspector}, {"tab", v.tab}}},
       {"slowmo", s.slowmo},
       {"impact_speed", s.impact_speed},
       {"budget_ms", s.budget_ms},

@@ -11,7 +11,8 @@ namespace shotlab {
 struct ViewFlags {
   bool trails = true, ghost = true, predicted = true, aim = true;
   bool velocity = false, spin = false, forces = false;
-  bool teach_panel = true, tune_panel = false, help = false;
+  bool inspector = true, help = false;
+  int tab = 0;  // of the inspector: 0 teaching, 1 tuning
 };
 
 struct Settings {
