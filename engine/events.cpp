@@ -103,7 +103,7 @@ void EventDetector::scan(const StepSpan& span, const State& state, std::vector<E
   const size_t first_new = events.size();
 
   // Balls leaving play: the centre falls a radius below the bed (y = 0), through a pocket or off the table.
-  for (int i = 0; i < state.ball_count(); ++i) {
+  for (int i = 0; i < state.ball_count() && model_.balls_leave_below_bed; ++i) {
     if (!state.in_play[i]) continue;
     const double r = model_.balls[i].radius;
     if (span.x1[9 * i + 1] >= -r) continue;

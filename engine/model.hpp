@@ -64,6 +64,9 @@ struct Model {
   std::vector<Collider> colliders;
   std::vector<Rod> rods;
   std::vector<Pocket> pockets;
+  // Set by add_table: a ball whose centre falls a radius below the bed (y = 0) has gone through a pocket or off
+  // the table and leaves play. Scenes without a table (a pendulum, a cradle) keep every ball.
+  bool balls_leave_below_bed = false;
   std::map<std::string, ContactMaterial> materials;  // always holds the three standard pairs
   Options options;
   IntegratorOptions integrator;

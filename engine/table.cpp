@@ -39,6 +39,7 @@ void add_jaw(Model& m, const std::string& name, const Vec3& end, const Vec3& out
 void add_table(Model& m, const TableSpec& t) {
   const double hx = t.length / 2, hz = t.width / 2, rw = t.rail_width;
   const bool pool = t.kind == TableKind::Pool;
+  m.balls_leave_below_bed = true;
   std::vector<Hole> holes;
   if (pool) {
     // A ball drops once its centre is over the hole, i.e. pocket_shelf beyond the mouth. Corner mouths run
