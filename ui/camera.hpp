@@ -8,8 +8,8 @@ namespace shotlab {
 struct Camera {
   glm::dvec3 target{0.0};
   double yaw = 1.5708;   // rad, around the vertical axis: from the front, the table's length across the screen
-  double pitch = 0.9;    // rad above the table plane
-  double distance = 3.3; // m
+  double pitch = 1.0;    // rad above the table plane
+  double distance = 3.8; // m
   double fov = 0.8;      // rad, vertical
 
   glm::dvec3 eye() const;

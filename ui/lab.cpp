@@ -143,6 +143,12 @@ void Lab::step() {
   show(std::min(target, shot->advance(target, 1.0)));
 }
 
+void Lab::seek(double t) {
+  if (!shot) return;
+  playing = false;
+  show(std::min(t, shot->advance(t, 10.0)));
+}
+
 void Lab::update(double real_dt) {
   if (!shot) return;
   if (!playing) {

@@ -49,6 +49,7 @@ class Lab {
   void undo();
   void continue_from_rest();  // the next shot starts where the balls stopped
   void step();                // one display frame of simulated time while paused
+  void seek(double t);        // pause at simulated time t (simulating up to it if needed: scripts, demos)
   void update(double real_dt);  // advances the clock while playing, on the settings' wall-time budget
 
   // The balls as on screen: the shot at view_time, or the scene's start position.

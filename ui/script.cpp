@@ -82,6 +82,8 @@ bool Script::execute(ScriptHost& host, const std::string& line) {
     lab.playing = lab.shot != nullptr;
   } else if (cmd == "pause") {
     lab.playing = false;
+  } else if (cmd == "seek") {
+    lab.seek(number());
   } else if (cmd == "step") {
     lab.step();
   } else if (cmd == "replay") {

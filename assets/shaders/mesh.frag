@@ -17,8 +17,8 @@ vec3 ball_color(vec3 n) {
     return d > 0.96 ? vec3(0.85, 0.08, 0.08) : white;
   }
   float pole = abs(n.y);
-  if (pole > 0.93) return vec3(0.08);          // the number's ink
-  if (pole > 0.8) return white;                // the number circle
+  if (pole > 0.985) return vec3(0.08);         // the number's ink: a dot, so the pole's turning shows
+  if (pole > 0.82) return white;               // the number circle
   if (u_pattern == 2 && pole > 0.45) return white;
   return u_color;
 }
