@@ -88,7 +88,8 @@ std::vector<MethodSetting> sweep(bool coarse) {
 std::vector<MethodSetting> sweep_timed_only(bool quick) {
   std::vector<MethodSetting> out;
   for (Method m : {Method::CashKarp54, Method::DormandPrince5, Method::BulirschStoer})
-    for (double tol : quick ? std::vector<double>{1e-6} : std::vector<double>{1e-4, 1e-6, 1e-8}) out.push_back({m, tol});
+    for (double tol : quick ? std::vector<double>{1e-6} : std::vector<double>{1e-4, 1e-6, 1e-7, 1e-8})
+      out.push_back({m, tol});
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -38,8 +39,8 @@ double median(std::vector<double> v) {
 }
 
 // One setting of one case: the first run gives the results, the repeats only the wall time (the runs are
-// deterministic). Returns false when the first run alone took longer than the budget: then the repeats are skipped
-// and the caller drops the method's tighter settings, which could only be slower.
+// deterministic). Returns false when the first run alone took longer than the budget (then the repeats are
+// skipped) or did not finish.
 bool measure(const std::string& root, const BenchCase& c, const MethodSetting& s, int repeats, double budget,
              const RunResult* ref, BenchReport& report) {
   BenchRow row{&c, s, run_case(root, c, s), {}, 0, 1};
@@ -103,6 +104,7 @@ void bench_case(const std::string& root, const BenchCase& c, const BenchOptions&
   std::unique_ptr<RunResult> ref;
   if (!c.until_rest && !(ref = reference(root, c, report))) return;
   std::set<Method> over_budget;
+  std::map<Method, int> slow;  // consecutive settings over budget, per method
   // Rosenbrock 4 builds its Jacobian by finite differences, 9n + 1 right-hand sides a step: beyond the cradle's five
   // balls one run takes seconds, the sweep minutes.
   if (ref && ref->radius.size() > 5) {
@@ -111,15 +113,21 @@ void bench_case(const std::string& root, const BenchCase& c, const BenchOptions&
                            " balls: a finite-difference Jacobian of " + std::to_string(9 * ref->radius.size() + 1) +
                            " right-hand sides a step, about 2 s a run)");
   }
-  for (const MethodSetting& s : c.until_rest ? sweep_timed_only(o.quick) : sweep(o.quick || c.coarse)) {
+  const std::vector<MethodSetting> settings = c.until_rest ? sweep_timed_only(o.quick) : sweep(o.quick || c.coarse);
+  for (size_t k = 0; k < settings.size(); ++k) {
+    const MethodSetting& s = settings[k];
     if (over_budget.count(s.method)) continue;
     // A whole game (S7) is long by nature: its few settings get ten times the budget.
     const double budget = c.until_rest ? 10 * o.budget : o.budget;
-    if (!measure(root, c, s, o.repeats, budget, ref.get(), report)) {
+    // One slow setting may be a fluke of the error control (dopri5 at 1e-3 on the break rejects 9 steps in 10);
+    // two in a row mean the tighter ones will only be slower.
+    slow[s.method] = measure(root, c, s, o.repeats, budget, ref.get(), report) ? 0 : slow[s.method] + 1;
+    const bool tighter_left = k + 1 < settings.size() && settings[k + 1].method == s.method;
+    if (slow[s.method] == 2 && tighter_left) {
       over_budget.insert(s.method);
       report.notes.push_back(c.id + ": " + method_name(s.method) + " stopped after " + setting_text(s) +
-                             " (one run took over " + fmt_seconds(budget) + " s or did not finish); tighter "
-                             "settings skipped");
+                             " (two settings in a row took over " + fmt_seconds(budget) +
+                             " s a run or did not finish); tighter settings skipped");
     }
   }
 }
