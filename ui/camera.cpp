@@ -38,24 +38,24 @@ void Camera::top_view() {
   target = {0, 0, 0};
   yaw = M_PI / 2;  // x (the table's length) runs left to right on screen
   pitch = kMaxPitch;
-  distance = 3.9;
+  distance = 4.1;
 }
 
 void Camera::reset() { *this = Camera{}; }
 
-Viewport::Viewport(const Camera& c, double w, double h)
-    : view_proj(c.projection(w / std::max(h, 1.0)) * c.view()), eye(c.eye()), width(w), height(h) {}
+Viewport::Viewport(const Camera& c, double x, double w, double h)
+    : view_proj(c.projection(w / std::max(h, 1.0)) * c.view()), eye(c.eye()), x0(x), width(w), height(h) {}
 
 std::optional<glm::dvec2> Viewport::project(const glm::dvec3& p) const {
   const glm::dvec4 clip = view_proj * glm::dvec4(p, 1.0);
   if (clip.w < 1e-4) return std::nullopt;
   const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
-  return glm::dvec2{(ndc.x * 0.5 + 0.5) * width, (0.5 - ndc.y * 0.5) * height};
+  return glm::dvec2{x0 + (ndc.x * 0.5 + 0.5) * width, (0.5 - ndc.y * 0.5) * height};
 }
 
 std::optional<glm::dvec3> Viewport::pick_plane(const glm::dvec2& pixel, double y) const {
   const glm::dmat4 inv = glm::inverse(view_proj);
-  const glm::dvec2 ndc{pixel.x / width * 2 - 1, 1 - pixel.y / height * 2};
+  const glm::dvec2 ndc{(pixel.x - x0) / width * 2 - 1, 1 - pixel.y / height * 2};
   glm::dvec4 far = inv * glm::dvec4(ndc, 1.0, 1.0);
   const glm::dvec3 dir = glm::normalize(glm::dvec3(far) / far.w - eye);
   if (std::abs(dir.y) < 1e-9) return std::nullopt;

@@ -23,14 +23,15 @@ struct Camera {
   void reset();
 };
 
-// A camera fixed to one viewport for the frame: world <-> screen.
+// A camera fixed to one viewport for the frame: world <-> screen. The viewport is the part of the window between
+// the side panels (left edge x0), so that the table is centred where it can be seen.
 struct Viewport {
   glm::dmat4 view_proj;
   glm::dvec3 eye;
-  double width, height;
+  double x0, width, height;
 
-  Viewport(const Camera& camera, double width, double height);
-  // Screen position in pixels (origin top-left), nullopt when the point is behind the camera.
+  Viewport(const Camera& camera, double x0, double width, double height);
+  // Window position in pixels (origin top-left), nullopt when the point is behind the camera.
   std::optional<glm::dvec2> project(const glm::dvec3& p) const;
   // Where the ray under the pixel meets the horizontal plane y = height_above_bed (nullopt: it does not).
   std::optional<glm::dvec3> pick_plane(const glm::dvec2& pixel, double height_above_bed) const;

@@ -96,6 +96,7 @@ int run_gui(const GuiOptions& options) {
       MouseDrag drag;
       if (!lab.load(initial_scene(options, settings))) lab.load(preset_path("stun.json"));
       ScriptHost host{lab, settings.camera, nullptr};
+      float left = 0, right = static_cast<float>(options.width);  // the 3D view's area, from the previous frame
       double last = glfwGetTime(), fps_start = last;
       int fps_frames = 0;
       while (!glfwWindowShouldClose(window.handle) && !(script && script->done())) {
@@ -110,17 +111,18 @@ int run_gui(const GuiOptions& options) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
-        const Viewport viewport(settings.camera, w, h);
+        if (right - left < 200) left = 0, right = static_cast<float>(w);  // panels cover it: use the whole window
+        const Viewport viewport(settings.camera, left, right - left, h);
         handle_input(lab, settings.camera, viewport, drag);
         lab.update(dt);
 
-        play_panel(lab, settings.camera);
-        inspector_panel(lab, probes);
+        left = play_panel(lab, settings.camera);
+        right = std::min(inspector_panel(lab, probes), static_cast<float>(w));
         help_panel(&settings.view.help);
         message_banner(lab);
         draw_overlay(lab, viewport, ImGui::GetBackgroundDrawList());
 
-        renderer.begin(viewport.view_proj, viewport.eye, w, h);
+        renderer.begin(viewport.view_proj, viewport.eye, static_cast<int>(viewport.x0), static_cast<int>(viewport.width), h);
         renderer.draw_scene(lab.scene, lab.shot ? lab.shot->sim().model() : lab.table_model);
         draw_balls(renderer, lab);
         ImGui::Render();

@@ -44,11 +44,6 @@ const std::vector<PresetEntry>& presets() {
   return list;
 }
 
-bool slider(const char* label, double& v, double lo, double hi, const char* format, bool log = false) {
-  return ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &lo, &hi, format,
-                             ImGuiSliderFlags_AlwaysClamp | (log ? ImGuiSliderFlags_Logarithmic : 0));
-}
-
 // A drawn ball face: click or drag to put the cue tip. Right is the shooter's right, up is follow, down is draw;
 // the dashed ring is the miscue limit.
 bool tip_widget(CueStrike& cue) {
@@ -184,7 +179,7 @@ void export_trajectory(const Lab& lab, const std::string& path) {
   }
 }
 
-void play_panel(Lab& lab, Camera& camera) {
+float play_panel(Lab& lab, Camera& camera) {
   ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(320, ImGui::GetIO().DisplaySize.y), ImGuiCond_FirstUseEver);
   ImGui::Begin("Shot lab");
@@ -214,7 +209,9 @@ void play_panel(Lab& lab, Camera& camera) {
     if (ImGui::Button("Remove selected")) lab.remove_ball(lab.selected);
     ImGui::Checkbox("allow overlaps", &lab.scene.allow_overlap);
   }
+  const float right = ImGui::IsWindowCollapsed() ? 0.0f : ImGui::GetWindowPos().x + ImGui::GetWindowWidth();
   ImGui::End();
+  return right;
 }
 
 void help_panel(bool* open) {

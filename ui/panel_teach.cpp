@@ -92,10 +92,10 @@ void teach_panel(Lab& lab) {
 
 
 
-void inspector_panel(Lab& lab, ProbeReadouts& probes) {
+float inspector_panel(Lab& lab, ProbeReadouts& probes) {
   ViewFlags& v = lab.settings.view;
-  if (!v.inspector) return;
   const ImVec2 size = ImGui::GetIO().DisplaySize;
+  if (!v.inspector) return size.x;
   ImGui::SetNextWindowPos(ImVec2(size.x - 350, 0), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(350, size.y), ImGuiCond_FirstUseEver);
   ImGui::Begin("Inspector", &v.inspector);
@@ -114,7 +114,9 @@ void inspector_panel(Lab& lab, ProbeReadouts& probes) {
       }
     ImGui::EndTabBar();
   }
+  const float left = ImGui::IsWindowCollapsed() ? size.x : ImGui::GetWindowPos().x;
   ImGui::End();
+  return left;
 }
 
 }  // namespace shotlab

@@ -14,11 +14,6 @@ namespace {
 
 const char* const kPairs[3] = {"ball_ball", "ball_cloth", "ball_cushion"};
 
-bool slider(const char* label, double& v, double lo, double hi, const char* format, bool log) {
-  return ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &lo, &hi, format,
-                             ImGuiSliderFlags_AlwaysClamp | (log ? ImGuiSliderFlags_Logarithmic : 0));
-}
-
 bool same(const ContactMaterial& a, const ContactMaterial& b) {
   return a.stiffness == b.stiffness && a.damping == b.damping && a.exponent == b.exponent &&
          a.damping_law == b.damping_law;

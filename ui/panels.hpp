@@ -8,10 +8,18 @@
 
 namespace shotlab {
 
-void play_panel(Lab& lab, Camera& camera);  // panel_play.cpp: scenes, files, playback, aim, edit
+// A slider over a double, clamped to its range (typed values too: no out-of-range value reaches the engine);
+// logarithmic where the range spans decades.
+inline bool slider(const char* label, double& v, double lo, double hi, const char* format, bool log = false) {
+  return ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &lo, &hi, format,
+                             ImGuiSliderFlags_AlwaysClamp | (log ? ImGuiSliderFlags_Logarithmic : 0));
+}
+
+// Each side panel returns the edge it leaves free for the 3D view (window pixels).
+float play_panel(Lab& lab, Camera& camera);  // panel_play.cpp: scenes, files, playback, aim, edit; its right edge
 struct ProbeReadouts;
 // The inspector window on the right: a Teaching and a Tuning tab (panel_teach.cpp).
-void inspector_panel(Lab& lab, ProbeReadouts& probes);
+float inspector_panel(Lab& lab, ProbeReadouts& probes);  // its left edge
 void teach_panel(Lab& lab);                 // panel_teach.cpp: per-ball readouts, energy, momentum, plots
 void help_panel(bool* open);                // panel_play.cpp: shortcuts
 void message_banner(Lab& lab);              // panel_play.cpp: errors and notes

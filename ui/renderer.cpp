@@ -161,8 +161,8 @@ Renderer::Mesh Renderer::upload(const std::vector<float>& data) {
   return m;
 }
 
-void Renderer::begin(const glm::dmat4& view_proj, const glm::dvec3& eye, int width, int height) {
-  glViewport(0, 0, width, height);
+void Renderer::begin(const glm::dmat4& view_proj, const glm::dvec3& eye, int x0, int width, int height) {
+  glViewport(x0, 0, width, height);
   glClearColor(0.13f, 0.14f, 0.16f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);

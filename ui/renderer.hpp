@@ -24,7 +24,8 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  void begin(const glm::dmat4& view_proj, const glm::dvec3& eye, int width, int height);
+  // Clears the window and draws into the viewport from x0 (pixels) of the given size.
+  void begin(const glm::dmat4& view_proj, const glm::dvec3& eye, int x0, int width, int height);
   // `model` is the prepared model (table colliders added) of `scene`.
   void draw_scene(const Scene& scene, const Model& model);
   void draw_ball(const glm::dvec3& p, const glm::dquat& orientation, double radius, const BallLook& look,
