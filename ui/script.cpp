@@ -107,6 +107,11 @@ bool Script::execute(ScriptHost& host, const std::string& line) {
     else if (field == "friction") m.friction = v;
     else return fail("unknown material field"), true;
     lab.physics_changed();
+  } else if (cmd == "integrator") {  // integrator METHOD [FIXED_STEP]
+    in >> arg;
+    if (!parse_method(arg, lab.scene.model.integrator.method)) return fail("unknown method"), true;
+    if (const double step = number(); std::isfinite(step)) lab.scene.model.integrator.fixed_step = step;
+    lab.physics_changed();
   } else if (cmd == "select") {
     in >> arg;
     if (const int i = scene_ball(lab.scene, arg); i >= 0) lab.selected = i;

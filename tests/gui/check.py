@@ -90,6 +90,11 @@ check(math.dist(ball(undone, "cue")["position"], ball(aim, "cue")["position"]) <
       and undone["cue"] == aim["cue"], "undo restored the exact pre-shot position and aim")
 check("bad_scene.json" in bad["error"] and "balls[0]" in bad["error"], "a bad scene file shows the loader's message")
 check(bad["scene"] == aim["scene"], "a bad scene file loses nothing")
+unstable, recovered = load("unstable.json"), load("recovered.json")
+check("unstable" in unstable["error"] and not unstable["playing"], "a blown-up simulation stops with a message")
+# (x and z only: undo keeps the tuned physics, and the stiffer cloth changes how deep the ball sits)
+check(not recovered["has_shot"] and recovered["error"] == ""
+      and ball(recovered, "cue")["position"][::2] == ball(aim, "cue")["position"][::2], "undo recovers from it")
 with open(f"{out}/trajectory.csv") as f:
     lines = f.read().splitlines()
 check(lines[0].startswith("time,ball") and len(lines) > 100, f"CSV export ({len(lines)} lines)")

@@ -18,4 +18,4 @@ cp "$here/bad_scene.json" "$out/"
 cd "$out"
 DISPLAY=$display timeout 90 "$shotlab" --script "$here/smoke.script" --width 1280 --height 720
 python3 "$here/check.py" "$out"
-rm -rf "$out"
+rm -rf "$out"  # kept when a check fails (set -e), for a look
