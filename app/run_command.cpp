@@ -63,7 +63,7 @@ int run_scene(const RunOptions& o) {
   }
   const Stats& st = sim.stats();
   if (!o.quiet)
-    std::cout << scene.name << ": t = " << sim.time() << " s, " << method_name(sim.model().integrator.method) << " "
+    std::cout << (scene.name.empty() ? o.scene : scene.name) << ": t = " << sim.time() << " s, " << method_name(sim.model().integrator.method) << " "
               << st.steps << " steps (" << st.rejected_steps << " rejected), " << st.rhs_evaluations
               << " rhs evaluations, " << sim.events().size() << " events, wall " << st.wall_seconds << " s\n";
   if (sim.status() != Status::Ok) {

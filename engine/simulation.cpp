@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace shotlab {
@@ -158,18 +159,27 @@ void Simulation::stop(Status why, std::string message) {
   diagnostic_ = std::move(message);
 }
 
-// The balls worth naming in a diagnostic: those in contacts at x, with depth and force.
+// The balls worth naming in a diagnostic: those in contact at x with depth and force, or else the pair closest to
+// touching (a failing step usually runs into the contact that this pair is about to make).
 std::string Simulation::describe_balls(const StateVector& x) const {
   State s = integ_;
   s.x = x;
   std::ostringstream out;
   const auto list = shotlab::contacts(model_, s);
-  if (list.empty()) return "No contacts.";
-  out << "Contacts:";
   for (const Contact& c : list)
-    out << " [" << model_.balls[c.ball].id << " - "
+    out << (&c == &list.front() ? "Contacts:" : "") << " [" << model_.balls[c.ball].id << " - "
         << (c.other_ball >= 0 ? model_.balls[c.other_ball].id : model_.colliders[c.collider].name)
         << ": depth " << c.depth << " m, force " << c.force.normal << " N]";
+  if (!list.empty()) return out.str();
+  double best = std::numeric_limits<double>::infinity();
+  std::string pair = "none";
+  for (int i = 0; i < s.ball_count(); ++i)
+    for (int j = i + 1; j < s.ball_count(); ++j) {
+      if (!s.in_play[i] || !s.in_play[j]) continue;
+      const double gap = glm::length(position(x, i) - position(x, j)) - model_.balls[i].radius - model_.balls[j].radius;
+      if (gap < best) best = gap, pair = model_.balls[i].id + " - " + model_.balls[j].id;
+    }
+  out << "No contacts; closest pair: " << pair << " (gap " << best << " m).";
   return out.str();
 }
 

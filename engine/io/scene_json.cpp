@@ -1,6 +1,8 @@
 #include "scene_json.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -198,7 +200,58 @@ void read_cue(const JsonNode& n, CueStrike& c) {
   n.finish();
 }
 
+// The field path (as in error messages: balls[2].position[1]) at byte offset `pos` of a JSON text: a walk over the
+// text before it that tracks object keys and array indices. Used to name the field of a number that overflows,
+// which the JSON library reports by offset only.
+std::string json_path_at(const std::string& text, size_t pos) {
+  struct Level {
+    bool array;
+    int index = 0;
+    std::string key;
+  };
+  std::vector<Level> levels;
+  for (size_t i = 0; i < std::min(pos, text.size()); ++i) {
+    const char c = text[i];
+    if (c == '"') {
+      std::string str;
+      for (++i; i < text.size() && text[i] != '"'; ++i) str += text[i] == '\\' ? text[++i] : text[i];
+      size_t j = i + 1;
+      while (j < text.size() && std::isspace(static_cast<unsigned char>(text[j]))) ++j;
+      if (j < text.size() && text[j] == ':' && !levels.empty()) levels.back().key = str;
+    } else if (c == '{' || c == '[') {
+      levels.push_back({c == '['});
+    } else if ((c == '}' || c == ']') && !levels.empty()) {
+      levels.pop_back();
+    } else if (c == ',' && !levels.empty() && levels.back().array) {
+      ++levels.back().index;
+    }
+  }
+  std::string path;
+  for (const Level& l : levels)
+    path += l.array ? "[" + std::to_string(l.index) + "]" : (path.empty() ? "" : ".") + l.key;
+  return path.empty() ? "(top level)" : path;
+}
+
 }  // namespace
+
+json parse_json_text(const std::string& text, const std::string& source) {
+  try {
+    return json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw InputError(source + ": malformed JSON: " + e.what());
+  } catch (const json::out_of_range& e) {
+    // Number overflow (1e999): the library gives no position; find the first such token ourselves.
+    size_t pos = std::string::npos;
+    for (size_t i = 0; i < text.size() && pos == std::string::npos; ++i)
+      if (std::isdigit(static_cast<unsigned char>(text[i])) && (i == 0 || !std::isalnum(static_cast<unsigned char>(text[i - 1])))) {
+        size_t end = i;
+        while (end < text.size() && std::strchr("0123456789.eE+-", text[end])) ++end;
+        if (!std::isfinite(std::strtod(text.substr(i, end - i).c_str(), nullptr))) pos = i;
+        i = end;
+      }
+    throw InputError(source + ": " + json_path_at(text, pos) + ": must be a finite number (" + e.what() + ")");
+  }
+}
 
 Scene parse_scene(const json& doc, const std::string& source) {
   const JsonNode n(doc, source, "");
@@ -270,12 +323,9 @@ Scene parse_scene(const json& doc, const std::string& source) {
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the file");
-  json doc;
-  try {
-    doc = json::parse(in);
-  } catch (const json::parse_error& e) {
-    throw InputError(path + ": malformed JSON: " + e.what());
-  }
+  std::stringstream text;
+  text << in.rdbuf();
+  json doc = parse_json_text(text.str(), path);
   for (const std::string& o : overrides) apply_override(doc, o);
   return parse_scene(doc, overrides.empty() ? path : path + " (with --set overrides)");
 }

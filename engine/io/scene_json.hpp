@@ -14,6 +14,9 @@ namespace shotlab {
 // the file, the field and the problem.
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// Parses JSON text; a syntax error or a number that overflows becomes an InputError naming `source` (and the field).
+nlohmann::json parse_json_text(const std::string& text, const std::string& source);
+
 // Parses a scene document; `source` names it in error messages.
 Scene parse_scene(const nlohmann::json& doc, const std::string& source);
 

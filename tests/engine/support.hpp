@@ -45,12 +45,17 @@ inline double event_time(const Simulation& sim, const std::string& kind, const s
   return -1;
 }
 
-// Advances in slices until `done()` or `limit` seconds; fails the test if the simulation stops.
+// Advances in slices (like display frames; the step limit counts per slice) until `done()` or time `limit`;
+// fails the test if the simulation stops.
 template <class Done>
 void run_until(Simulation& sim, double limit, Done done, double slice = 1e-2) {
-  while (sim.time() < limit && !done()) {
-    ASSERT_EQ(sim.advance(slice), Status::Ok) << sim.diagnostic();
+  while (sim.time() < limit - 1e-12 && !done()) {
+    ASSERT_EQ(sim.advance(std::min(slice, limit - sim.time())), Status::Ok) << sim.diagnostic();
   }
+}
+
+inline void advance_to(Simulation& sim, double t) {
+  run_until(sim, t, [] { return false; }, 1.0 / 60);
 }
 
 }  // namespace shotlab::test

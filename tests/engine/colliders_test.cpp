@@ -1,0 +1,78 @@
+// Each collider's penetration depth and normal (MODEL.md eq. 4.8-4.11), checked against hand-computed geometry.
+#include <gtest/gtest.h>
+
+#include "engine/colliders.hpp"
+
+namespace shotlab {
+namespace {
+
+constexpr double r = 0.03;
+
+void expect_vec(const Vec3& a, const Vec3& b, double tol = 1e-12) {
+  EXPECT_NEAR(a.x, b.x, tol);
+  EXPECT_NEAR(a.y, b.y, tol);
+  EXPECT_NEAR(a.z, b.z, tol);
+}
+
+TEST(Colliders, PlaneDepthAndNormal) {
+  const Plane p{{0, 1, 0}, {0, 1, 0}, {}};
+  const auto pen = penetration(p, {5, 1.01, -3}, r);
+  ASSERT_TRUE(pen);
+  EXPECT_NEAR(pen->depth, 0.02, 1e-12);  // R - (p - r).m = 0.03 - 0.01
+  expect_vec(pen->normal, {0, 1, 0});
+  EXPECT_NEAR(penetration(p, {0, 1.5, 0}, r)->depth, -0.47, 1e-12);  // a gap is a negative depth
+}
+
+TEST(Colliders, PlaneIsOneSided) {
+  const Plane p{{0, 0, 0}, {0, 1, 0}, {}};
+  EXPECT_FALSE(penetration(p, {0, -0.001, 0}, r));
+}
+
+TEST(Colliders, TiltedPlane) {
+  const Vec3 n = glm::normalize(Vec3{1, 1, 0});
+  const auto pen = penetration(Plane{{0, 0, 0}, n, {}}, {0.01, 0.01, 0}, r);
+  EXPECT_NEAR(pen->depth, r - 0.02 / std::sqrt(2.0), 1e-12);
+  expect_vec(pen->normal, n);
+}
+
+TEST(Colliders, HoleRimIsTheOnlyContactOverAHole) {
+  const Plane p{{0, 0, 0}, {0, 1, 0}, {{{0, 0, 0}, 0.05}}};
+  EXPECT_TRUE(penetration(p, {0.06, 0.02, 0}, r));  // centre beside the hole: the plane carries the ball
+  EXPECT_NEAR(penetration(p, {0.06, 0.02, 0}, r)->depth, 0.01, 1e-12);
+  // Centre over the hole, 1 cm inside its edge and 2 cm up: the rim point (0.05, 0, 0) is sqrt(0.01^2 + 0.02^2) away.
+  const auto rim = penetration(p, {0.04, 0.02, 0}, r);
+  ASSERT_TRUE(rim);
+  EXPECT_NEAR(rim->depth, r - std::sqrt(0.0005), 1e-12);
+  expect_vec(rim->normal, glm::normalize(Vec3{-0.01, 0.02, 0}));
+}
+
+TEST(Colliders, BoundedPlaneOnlyInsideItsParallelogram) {
+  const BoundedPlane b{{0, 0, 0}, {2, 0, 0}, {0, 0, -1}, {}};  // normal u^ x v^ = +y
+  const auto in = penetration(b, {1, 0.01, -0.5}, r);
+  ASSERT_TRUE(in);
+  EXPECT_NEAR(in->depth, 0.02, 1e-12);
+  expect_vec(in->normal, {0, 1, 0});
+  EXPECT_FALSE(penetration(b, {2.1, 0.01, -0.5}, r));
+  EXPECT_FALSE(penetration(b, {1, 0.01, 0.1}, r));
+}
+
+TEST(Colliders, StaticSphere) {
+  const auto pen = penetration(StaticSphere{{1, 1, 1}, 0.1}, {1, 1, 1.12}, r);
+  EXPECT_NEAR(pen->depth, 0.13 - 0.12, 1e-12);
+  expect_vec(pen->normal, {0, 0, 1});
+}
+
+TEST(Colliders, CapsuleMiddleAndEnds) {
+  const Capsule c{{0, 0, 0}, {1, 0, 0}, 0.01};
+  const auto mid = penetration(c, {0.5, 0.035, 0}, r);  // nearest axis point (0.5, 0, 0)
+  EXPECT_NEAR(mid->depth, 0.04 - 0.035, 1e-12);
+  expect_vec(mid->normal, {0, 1, 0});
+  const auto end = penetration(c, {1.03, 0, 0.0}, r);  // beyond b: nearest point is b itself
+  EXPECT_NEAR(end->depth, 0.01, 1e-12);
+  expect_vec(end->normal, {1, 0, 0});
+  const auto before = penetration(c, {-0.02, 0.02, 0}, r);  // before a
+  EXPECT_NEAR(before->depth, 0.04 - std::sqrt(0.0008), 1e-12);
+}
+
+}  // namespace
+}  // namespace shotlab

@@ -1,0 +1,148 @@
+// Every preset runs to its end; the thesis demonstrations (MODEL.md, "Reported results") show what the thesis
+// describes.
+#include <filesystem>
+
+#include "support.hpp"
+
+namespace shotlab::test {
+namespace {
+
+std::vector<std::string> preset_files() {
+  std::vector<std::string> out;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(SHOTLAB_SOURCE_DIR) + "/presets"))
+    if (e.path().extension() == ".json") out.push_back(e.path().filename().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+class EveryPreset : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryPreset, RunsToItsEndWithFiniteState) {
+  const Scene s = load_scene(preset(GetParam()));
+  EXPECT_FALSE(s.description.empty()) << "a preset says what to look for";
+  auto sim = simulate(s);
+  advance_to(*sim, s.duration);
+  EXPECT_NEAR(sim->time(), s.duration, 1e-9);
+  for (double v : sim->state().x) ASSERT_TRUE(std::isfinite(v));
+  std::printf("%s: %.2f s simulated, %ld steps, %ld rhs evaluations, %.3f s wall\n", GetParam().c_str(), s.duration,
+              sim->stats().steps, sim->stats().rhs_evaluations, sim->stats().wall_seconds);
+}
+
+INSTANTIATE_TEST_SUITE_P(Presets, EveryPreset, ::testing::ValuesIn(preset_files()),
+                         [](const auto& info) { return info.param.substr(0, info.param.size() - 5); });
+
+TEST(Demonstrations, NewtonsCradle) {
+  auto sim = simulate(load_scene(preset("cradle.json")));
+  // Run until the first train of contacts has ended (each pair begun and ended), plus a millisecond.
+  run_until(*sim, 0.5, [&] { return event_time(*sim, "contact_end", "b4", "b5") >= 0; }, 1e-3);
+  ASSERT_EQ(sim->advance(1e-3), Status::Ok);
+  double v[5];
+  for (int i = 0; i < 5; ++i) v[i] = velocity(sim->state().x, i).x;
+  EXPECT_GT(v[4], 0.5);  // the last ball flies furthest
+  EXPECT_GT(v[3], 0.0);  // the one before it follows a little
+  EXPECT_LT(v[3], 0.3 * v[4]);
+  for (int i = 0; i < 3; ++i) EXPECT_LT(v[i], 0.0) << "ball " << i + 1 << " moves back";
+  EXPECT_LT(v[0], v[1]);  // the first a bit more than the others
+  EXPECT_LT(v[0], v[2]);
+}
+
+TEST(Demonstrations, JumpShotStopsBouncing) {
+  auto sim = simulate(load_scene(preset("jump.json")));
+  advance_to(*sim, 3.0);
+  std::vector<double> landings;
+  for (const Event& e : sim->events())
+    if (e.kind == "landed") landings.push_back(e.time);
+  ASSERT_GE(landings.size(), 2u);
+  // Each flight is shorter than the one before (damping), and in the end the ball rolls.
+  for (size_t k = 2; k < landings.size(); ++k) EXPECT_LT(landings[k] - landings[k - 1], landings[k - 1] - landings[k - 2]);
+  EXPECT_EQ(sim->motion(0), Motion::Rolling);
+}
+
+TEST(Demonstrations, DrawShotSlidesOnAParabolaThenRolls) {
+  auto sim = simulate(load_scene(preset("draw.json")));
+  const double tau = [&] {
+    run_until(*sim, 3.0, [&] { return event_time(*sim, "rolling", "cue") >= 0; }, 1e-3);
+    return event_time(*sim, "rolling", "cue");
+  }();
+  ASSERT_GT(tau, 0.1);
+  // While sliding the acceleration is constant (friction along a fixed slip direction): the path is a parabola, so
+  // the midpoint of the sliding phase lies off the chord by |a| tau^2 / 8 projected across it.
+  auto at = [&](double t) {
+    auto replay = simulate(load_scene(preset("draw.json")));
+    advance_to(*replay, t);
+    return position(replay->state().x, 0);
+  };
+  const Vec3 p0 = at(1e-3), p1 = at(tau / 2), p2 = at(tau - 1e-3);
+  const Vec3 chord = glm::normalize(p2 - p0);
+  const Vec3 off = (p1 - p0) - glm::dot(p1 - p0, chord) * chord;
+  EXPECT_GT(glm::length(off), 1e-3);  // visibly curved (side spin bends it)
+  run_until(*sim, 6.0, [&] { return sim->motion(0) == Motion::Stationary; }, 0.1);
+  EXPECT_EQ(sim->motion(0), Motion::Stationary);
+}
+
+TEST(Demonstrations, CushionReboundSlidesThenRolls) {
+  auto sim = simulate(load_scene(preset("cushion.json")));
+  advance_to(*sim, 1.5);
+  double hit = -1, slide = -1, roll = -1;
+  for (const Event& e : sim->events()) {
+    if (e.kind == "contact_begin" && e.bodies[1].rfind("cushion", 0) == 0 && hit < 0) hit = e.time;
+    if (hit >= 0 && e.kind == "sliding" && slide < 0) slide = e.time;
+    if (slide >= 0 && e.kind == "rolling" && roll < 0) roll = e.time;
+  }
+  ASSERT_GT(hit, 0);
+  EXPECT_GE(slide, hit);
+  EXPECT_GT(roll, slide);
+  const Vec3 v = velocity(sim->state().x, 0);
+  EXPECT_GT(v.z, 0.0);  // came in towards -z, leaves towards +z
+  EXPECT_GT(v.x, 0.0);  // and keeps going along the rail
+}
+
+TEST(Demonstrations, FrozenBallsAtACushion) {
+  auto sim = simulate(load_scene(preset("frozen.json")));
+  advance_to(*sim, 0.5);
+  EXPECT_GE(event_time(*sim, "airborne", "K1"), 0.0) << "K1 hops: friction with K2 gives it vertical speed";
+  const Vec3 v2 = velocity(sim->state().x, 1), v3 = velocity(sim->state().x, 2);
+  EXPECT_GT(v3.z, 0.0) << "K3 is thrown back the way it came";
+  // K2 leaves away from the cushion at an angle below 90 degrees to the rail.
+  EXPECT_GT(v2.z, 0.0);
+  EXPECT_GT(std::abs(v2.x), 0.0);
+  // The collisions take time and overlap: K2 touches K1 and K3 at once.
+  const double k23_end = event_time(*sim, "contact_end", "K2", "K3");
+  EXPECT_GT(k23_end - event_time(*sim, "contact_begin", "K2", "K3"), 1e-4);
+  EXPECT_LT(event_time(*sim, "contact_begin", "K1", "K2"), k23_end);
+}
+
+TEST(Demonstrations, SymmetricBreakStaysSymmetric) {
+  auto sim = simulate(load_scene(preset("break_symmetric.json")));
+  advance_to(*sim, 1.0);
+  const Model& m = sim->model();
+  const auto& x = sim->state().x;
+  // Mirror pairs across the long axis (z -> -z) in rack numbering: rows 1 | 2 3 | 4 5 6 | 7 8 9 10 | 11 ... 15.
+  const std::pair<const char*, const char*> mirror[] = {{"2", "3"}, {"4", "6"}, {"7", "10"}, {"8", "9"}, {"11", "15"}, {"12", "14"}};
+  for (const auto& [a, b] : mirror) {
+    const Vec3 pa = position(x, m.ball_index(a)), pb = position(x, m.ball_index(b));
+    EXPECT_NEAR(pa.x, pb.x, 1e-6) << a << " / " << b;
+    EXPECT_NEAR(pa.z, -pb.z, 1e-6) << a << " / " << b;
+  }
+  for (const char* on_axis : {"cue", "1", "5", "13"}) EXPECT_NEAR(position(x, m.ball_index(on_axis)).z, 0.0, 1e-6);
+  EXPECT_GT(std::abs(position(x, m.ball_index("11")).z), 0.2);  // and the rack did break up
+}
+
+TEST(Demonstrations, RealisticBreakIsSensitiveToMicronJitter) {
+  const Scene a = load_scene(preset("break_realistic.json"));
+  const Scene b = load_scene(preset("break_realistic.json"), {"rack.seed=8"});
+  double largest_jitter_difference = 0;
+  for (size_t i = 0; i < a.balls.size(); ++i)
+    largest_jitter_difference = std::max(largest_jitter_difference, glm::length(a.balls[i].position - b.balls[i].position));
+  EXPECT_LT(largest_jitter_difference, 2.0 * 1e-3 * kR * std::sqrt(2.0));
+  auto sa = simulate(a), sb = simulate(b);
+  advance_to(*sa, 1.0);
+  advance_to(*sb, 1.0);
+  double spread = 0;
+  for (int i = 0; i < sa->state().ball_count(); ++i)
+    spread = std::max(spread, glm::length(position(sa->state().x, i) - position(sb->state().x, i)));
+  EXPECT_GT(spread, 0.01) << "micrometre changes in the rack change where balls are a second later by centimetres";
+}
+
+}  // namespace
+}  // namespace shotlab::test

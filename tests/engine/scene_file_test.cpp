@@ -1,0 +1,166 @@
+// Scene files: every kind of bad input is refused with a message naming the file, the field and the problem;
+// overrides reach any value; saving is lossless and atomic; the command line reports errors by exit status.
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support.hpp"
+
+namespace shotlab::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string temp_file(const std::string& name, const std::string& text) {
+  const fs::path p = fs::temp_directory_path() / ("shotlab_test_" + name);
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+// Loads `text` from a file and returns the error message ("" when it loads).
+std::string load_error(const std::string& name, const std::string& text) {
+  const std::string path = temp_file(name, text);
+  try {
+    load_scene(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const std::string kBall = R"({"id": "a", "position": [0, 0.028575, 0]})";
+
+struct BadInput {
+  const char* name;
+  std::string text;
+  std::string field, problem;
+};
+
+TEST(SceneFile, BadInputNamesFileFieldAndProblem) {
+  const BadInput cases[] = {
+      {"malformed.json", R"({"balls": [)", "", "malformed JSON"},
+      {"unknown_field.json", R"({"balls": [)" + kBall + R"(], "gravitee": [0, -9.81, 0]})", "gravitee", "unknown field"},
+      {"unknown_nested.json", R"({"balls": [{"id": "a", "position": [0, 1, 0], "colour": "red"}]})", "balls[0].colour",
+       "unknown field"},
+      {"wrong_type.json", R"({"balls": [{"id": "a", "position": [0, 1, 0], "mass": "heavy"}]})", "balls[0].mass",
+       "must be a number"},
+      {"negative_mass.json", R"({"balls": [{"id": "a", "position": [0, 1, 0], "mass": -0.17}]})", "balls[0].mass",
+       "must be positive"},
+      {"negative_radius.json", R"({"balls": [{"id": "a", "position": [0, 1, 0], "radius": -1}]})", "balls[0].radius",
+       "must be positive"},
+      {"overlap.json", R"({"balls": [)" + kBall + R"(, {"id": "b", "position": [0.03, 0.028575, 0]}]})",
+       "balls[1].position", "overlaps ball 'a'"},
+      {"integrator.json", R"({"integrator": {"method": "leapfrog"}, "balls": [)" + kBall + "]}", "integrator.method",
+       "unknown integrator 'leapfrog'"},
+      {"non_finite.json", R"({"balls": [{"id": "a", "position": [0, 1e999, 0]}]})", "balls[0].position[1]",
+       "finite"},
+      {"short_vector.json", R"({"balls": [{"id": "a", "position": [0, 1]}]})", "balls[0].position", "3 numbers"},
+      {"missing.json", R"({"balls": [{"position": [0, 1, 0]}]})", "balls[0].id", "missing required field"},
+      {"rod.json", R"({"balls": [)" + kBall + R"(], "rods": [{"ball": "zz", "anchor": [0, 1, 0]}]})", "rods[0].ball",
+       "no ball with id 'zz'"},
+  };
+  for (const BadInput& c : cases) {
+    const std::string msg = load_error(c.name, c.text);
+    EXPECT_NE(msg.find(c.name), std::string::npos) << c.name << ": " << msg;
+    EXPECT_NE(msg.find(c.field), std::string::npos) << c.name << ": " << msg;
+    EXPECT_NE(msg.find(c.problem), std::string::npos) << c.name << ": " << msg;
+  }
+}
+
+TEST(SceneFile, OverlapIsAllowedWhenAsked) {
+  EXPECT_EQ(load_error("overlap_ok.json", R"({"allow_overlap": true, "balls": [)" + kBall +
+                                              R"(, {"id": "b", "position": [0.03, 0.028575, 0]}]})"),
+            "");
+}
+
+TEST(SceneFile, OverridesReachAnyValue) {
+  const Scene s = load_scene(preset("stun.json"), {"materials.ball_cloth.friction=0.3", "balls.cue.velocity=[0,0,1]",
+                                                    "integrator.method=rk4", "cue.speed=2.5", "duration=1"});
+  EXPECT_DOUBLE_EQ(s.model.material(kBallCloth).friction, 0.3);
+  EXPECT_DOUBLE_EQ(s.balls[0].velocity.z, 1.0);
+  EXPECT_EQ(s.model.integrator.method, Method::RK4);
+  EXPECT_DOUBLE_EQ(s.cue->speed, 2.5);
+  EXPECT_DOUBLE_EQ(s.duration, 1.0);
+  EXPECT_THROW(load_scene(preset("stun.json"), {"balls.nobody.mass=1"}), InputError);
+  EXPECT_THROW(load_scene(preset("stun.json"), {"no_equals_sign"}), InputError);
+  try {
+    load_scene(preset("stun.json"), {"materials.ball_cloth.frcition=0.3"});
+    FAIL() << "a misspelt override must not pass";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("materials.ball_cloth.frcition: unknown field"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SceneFile, SaveAndLoadGiveTheSameScene) {
+  for (const char* name : {"break_realistic.json", "cradle.json", "frozen.json"}) {
+    const Scene s = load_scene(preset(name));
+    const std::string path = (fs::temp_directory_path() / (std::string("shotlab_roundtrip_") + name)).string();
+    save_scene(path, s);
+    EXPECT_EQ(scene_to_json(load_scene(path)), scene_to_json(s)) << name;
+  }
+}
+
+TEST(SceneFile, FailedSaveLeavesTheOldFileAlone) {
+  const std::string path = temp_file("keep.json", "{\"name\": \"old\"}");
+  const Scene s = load_scene(preset("stun.json"));
+  EXPECT_THROW(save_scene("/nonexistent-dir/x.json", s), InputError);
+  fs::create_directory(path + ".tmp");  // a blocked temporary file makes the write fail
+  EXPECT_THROW(save_scene(path, s), InputError);
+  fs::remove(path + ".tmp");
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), "{\"name\": \"old\"}");
+}
+
+// The command line: exit status and message.
+int run_cli(const std::string& args, std::string& err) {
+  const std::string err_file = (fs::temp_directory_path() / "shotlab_cli_err.txt").string();
+  const int status = std::system((std::string(SHOTLAB_BIN) + " " + args + " > /dev/null 2> " + err_file).c_str());
+  std::ifstream in(err_file);
+  std::stringstream text;
+  text << in.rdbuf();
+  err = text.str();
+  return WEXITSTATUS(status);
+}
+
+TEST(Cli, BadSceneGivesMessageAndNonZeroExit) {
+  std::string err;
+  const std::string path = temp_file("cli_bad.json", R"({"balls": [{"id": "a", "position": [0, 1, 0], "mass": -1}]})");
+  EXPECT_EQ(run_cli("run " + path, err), 1);
+  EXPECT_NE(err.find(path + ": balls[0].mass: must be positive"), std::string::npos) << err;
+  EXPECT_EQ(run_cli("run " + preset("stun.json") + " --set integrator.method=magic", err), 1);
+  EXPECT_NE(err.find("integrator.method"), std::string::npos) << err;
+}
+
+TEST(Cli, RunWritesResultAndTrajectory) {
+  const fs::path dir = fs::temp_directory_path();
+  std::string err;
+  ASSERT_EQ(run_cli("run " + preset("stun.json") + " --duration 1 --out " + (dir / "r.json").string() +
+                        " --trajectory " + (dir / "t.csv").string() + " --sample-rate 100",
+                    err),
+            0)
+      << err;
+  nlohmann::json r = nlohmann::json::parse(std::ifstream(dir / "r.json"));
+  EXPECT_DOUBLE_EQ(r["time"].get<double>(), 1.0);
+  EXPECT_EQ(r["balls"][0]["id"], "cue");
+  EXPECT_EQ(r["balls"][0]["motion"], "rolling");
+  EXPECT_EQ(r["stats"]["integrator"], "dopri5");
+  EXPECT_GT(r["stats"]["steps"].get<long>(), 0);
+  EXPECT_EQ(r["events"][0]["kind"], "rolling");
+  std::ifstream csv(dir / "t.csv");
+  int lines = 0;
+  for (std::string line; std::getline(csv, line);) ++lines;
+  EXPECT_EQ(lines, 1 + 101);  // header + samples at 0, 0.01, ..., 1.0
+}
+
+TEST(Cli, BlowUpExitsWithDiagnostic) {
+  std::string err;
+  EXPECT_EQ(run_cli("run " + preset("break.json") + " --set integrator.max_steps_per_call=20", err), 3);
+  EXPECT_NE(err.find("step limit"), std::string::npos) << err;
+}
+
+}  // namespace
+}  // namespace shotlab::test

@@ -1,0 +1,104 @@
+// The stepping loop: conservation in contacts, slicing independence, event timing, and stopping with a diagnostic.
+#include <cmath>
+
+#include "support.hpp"
+
+namespace shotlab::test {
+namespace {
+
+// Two spinning balls meet off-centre in free space: friction, damping and spin transfer all act.
+nlohmann::json glancing_pair() {
+  return {{"gravity", {0, 0, 0}},
+          {"integrator", {{"abs_tol", 1e-11}, {"rel_tol", 1e-11}}},
+          {"balls",
+           {{{"id", "a"}, {"position", {-0.1, 0, 0.02}}, {"velocity", {3, 0.2, 0}}, {"angular_velocity", {10, -50, 80}}},
+            {{"id", "b"}, {"position", {0, 0, 0}}, {"velocity", {-1, 0, 0}}, {"angular_velocity", {0, 30, 0}}}}}};
+}
+
+TEST(Simulation, BallBallContactConservesMomentum) {
+  auto sim = simulate(scene(glancing_pair()));
+  const Vec3 p0 = sim->momentum();
+  ASSERT_EQ(sim->advance(0.1), Status::Ok);
+  ASSERT_GE(event_time(*sim, "contact_end", "a", "b"), 0.0);
+  EXPECT_LT(glm::length(sim->momentum() - p0), 1e-9 * glm::length(p0));
+  // ... and the collision did something: b was thrown sideways by friction and the offset.
+  EXPECT_GT(std::abs(velocity(sim->state().x, 1).z), 0.1);
+}
+
+TEST(Simulation, ContactBeginIsLocatedNotRoundedToAStep) {
+  // Centres 0.1 m apart closing at 2 m/s with no forces: they touch when the 0.1 - 2R gap has closed.
+  const nlohmann::json doc = {{"gravity", {0, 0, 0}},
+                              {"balls",
+                               {{{"id", "a"}, {"position", {0, 0, 0}}, {"velocity", {1, 0, 0}}},
+                                {{"id", "b"}, {"position", {0.1, 0, 0}}, {"velocity", {-1, 0, 0}}}}}};
+  auto sim = simulate(scene(doc));
+  ASSERT_EQ(sim->advance(0.05), Status::Ok);
+  EXPECT_NEAR(event_time(*sim, "contact_begin", "a", "b"), (0.1 - 2 * kR) / 2.0, 1e-9);
+}
+
+// The integrator steps on its own schedule; advance() slices only choose where the dense output is read.
+TEST(Simulation, FrameRateDoesNotChangeTheResult) {
+  const Scene s = load_scene(preset("cut.json"));
+  auto one = simulate(s);
+  ASSERT_EQ(one->advance(1.0), Status::Ok);
+  for (double frame : {1.0 / 30, 1.0 / 240}) {
+    auto sliced = simulate(s);
+    for (int k = 1; sliced->time() < 1.0 - 1e-12; ++k) ASSERT_EQ(sliced->advance(std::min(k * frame, 1.0) - sliced->time()), Status::Ok);
+    ASSERT_EQ(sliced->state().x.size(), one->state().x.size());
+    for (size_t i = 0; i < one->state().x.size(); ++i) EXPECT_NEAR(sliced->state().x[i], one->state().x[i], 1e-9) << i;
+    EXPECT_EQ(sliced->stats().steps, one->stats().steps);
+    EXPECT_EQ(sliced->events().size(), one->events().size());
+  }
+}
+
+TEST(Simulation, StepLimitStopsWithADiagnostic) {
+  Scene s = load_scene(preset("break.json"));
+  s.model.integrator.max_steps_per_call = 50;
+  auto sim = simulate(s);
+  Status st = Status::Ok;
+  for (int k = 0; k < 100 && st == Status::Ok; ++k) st = sim->advance(1.0 / 60);
+  EXPECT_EQ(st, Status::StepLimit);
+  EXPECT_NE(sim->diagnostic().find("step limit"), std::string::npos);
+  EXPECT_NE(sim->diagnostic().find("t = "), std::string::npos);
+  EXPECT_NE(sim->diagnostic().find("cue"), std::string::npos) << sim->diagnostic();  // the balls in contact
+  for (double v : sim->state().x) ASSERT_TRUE(std::isfinite(v));
+  const double t = sim->time();
+  EXPECT_EQ(sim->advance(0.1), Status::StepLimit);  // stays stopped, clock does not move
+  EXPECT_EQ(sim->time(), t);
+}
+
+TEST(Simulation, NonFiniteStateStopsWithTheBallsNamed) {
+  // An absurd stiffness overflows the force: the engine must stop at the last finite state, not draw garbage.
+  const nlohmann::json doc = {{"gravity", {0, 0, 0}},
+                              {"materials", {{"ball_ball", {{"stiffness", 1e308}}}}},
+                              {"balls",
+                               {{{"id", "left"}, {"position", {0, 0, 0}}, {"velocity", {5, 0, 0}}},
+                                {{"id", "right"}, {"position", {0.06, 0, 0}}}}}};
+  auto sim = simulate(scene(doc));
+  Status st = Status::Ok;
+  for (int k = 0; k < 100 && st == Status::Ok; ++k) st = sim->advance(1e-3);
+  EXPECT_NE(st, Status::Ok);
+  EXPECT_NE(sim->diagnostic().find("left"), std::string::npos) << sim->diagnostic();
+  for (double v : sim->state().x) ASSERT_TRUE(std::isfinite(v));
+}
+
+TEST(Simulation, BallRolledIntoACornerPocketIsPocketed) {
+  // Rolling from the table centre straight at the right-front corner.
+  const Vec3 dir = glm::normalize(Vec3{1.27, 0, 0.635});
+  const double v = 1.5;
+  const Vec3 vel = v * dir;
+  const nlohmann::json doc = {{"table", {{"type", "pool"}}},
+                              {"balls",
+                               {{{"id", "cue"}, {"position", {0, kR, 0}}, {"velocity", {vel.x, 0, vel.z}},
+                                 {"angular_velocity", {vel.z / kR, 0, -vel.x / kR}}}}}};
+  auto sim = simulate(scene(doc));
+  run_until(*sim, 4.0, [&] { return sim->motion(0) == Motion::Pocketed; });
+  EXPECT_EQ(sim->motion(0), Motion::Pocketed);
+  ASSERT_FALSE(sim->events().empty());
+  const Event& last = sim->events().back();
+  EXPECT_EQ(last.kind, "pocketed");
+  EXPECT_EQ(last.bodies, (std::vector<std::string>{"cue", "pocket-right-front"}));
+}
+
+}  // namespace
+}  // namespace shotlab::test
