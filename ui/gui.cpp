@@ -7,6 +7,8 @@
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb_image_write.h>
 
+#include <atomic>
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -21,6 +23,10 @@
 namespace shotlab {
 
 namespace {
+
+// Ctrl+C or a polite kill closes the window like its close button, so the settings are still saved.
+std::atomic<bool> interrupted{false};
+extern "C" void on_signal(int) { interrupted = true; }
 
 // The back buffer just drawn (3D view and panels) as a PNG.
 bool write_png(const std::string& path, int width, int height) {
@@ -39,6 +45,19 @@ void draw_balls(Renderer& renderer, const Lab& lab) {
     const BallSpec& b = lab.scene.balls[i].spec;
     renderer.draw_ball(position(f.state.x, i), f.orientation[i], b.radius, ball_look(b.id));
   }
+}
+
+// Tables have a standard view; a scene without one (Newton's cradle) is framed around its balls and rod anchors.
+void frame_scene(Camera& camera, const Scene& scene) {
+  camera.reset();
+  if (scene.table || scene.balls.empty()) return;
+  Vec3 lo{1e9}, hi{-1e9};
+  for (const InitialBall& b : scene.balls) lo = glm::min(lo, b.position), hi = glm::max(hi, b.position);
+  for (const Rod& r : scene.model.rods) lo = glm::min(lo, r.anchor), hi = glm::max(hi, r.anchor);
+  camera.target = (lo + hi) * 0.5;
+  camera.yaw = M_PI / 2;
+  camera.pitch = 0.25;
+  camera.distance = std::max(0.5, 2.5 * glm::length(hi - lo));
 }
 
 std::string initial_scene(const GuiOptions& o, const Settings& s) {
@@ -95,11 +114,14 @@ int run_gui(const GuiOptions& options) {
       ProbeReadouts probes;
       MouseDrag drag;
       if (!lab.load(initial_scene(options, settings))) lab.load(preset_path("stun.json"));
+      lab.on_load = [&settings](const Scene& s) { frame_scene(settings.camera, s); };  // the first load keeps the saved view
       ScriptHost host{lab, settings.camera, nullptr};
       float left = 0, right = static_cast<float>(options.width);  // the 3D view's area, from the previous frame
       double last = glfwGetTime(), fps_start = last;
       int fps_frames = 0;
-      while (!glfwWindowShouldClose(window.handle) && !(script && script->done())) {
+      std::signal(SIGINT, on_signal);
+      std::signal(SIGTERM, on_signal);
+      while (!glfwWindowShouldClose(window.handle) && !interrupted && !(script && script->done())) {
         glfwPollEvents();
         const double now = glfwGetTime();
         const double dt = script && !host.real_clock ? 1.0 / 60 : std::min(now - last, 0.1);

@@ -27,6 +27,7 @@ bool Lab::load(const std::string& path) {
     history.clear();
     ghost.clear();
     note = "loaded " + path;
+    if (on_load) on_load(scene);
     return true;
   } catch (const std::exception& e) {
     error = e.what();

@@ -3,6 +3,7 @@
 //  - `shot` is the shot being watched (simulated from a copy of the scene taken when it was shot);
 //  - `history` holds the scene before every shot, for undo.
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,6 +39,7 @@ class Lab {
   std::string error;            // shown until dismissed: a bad file, an invalid edit, an engine stop
   std::string note;             // one line of feedback (saved, screenshot written, ...)
   std::string screenshot_request;  // PNG path: written after the next frame is drawn (gui.cpp)
+  std::function<void(const Scene&)> on_load;  // after a scene file loaded (gui.cpp frames the camera)
 
   bool load(const std::string& path);  // false (and `error` set) when the file is bad; nothing is lost
   void set_scene(Scene s);
