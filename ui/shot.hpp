@@ -59,6 +59,7 @@ class Shot {
   std::vector<Frame> frames_;
   std::vector<Sample> step_sizes_, collision_force_;
   double last_contact_time_ = -1;
+  double chunk_;  // s of simulated time a single advance() call covers: shrinks while the integrator crawls
   long last_steps_ = 0, last_rhs_ = 0;
 };
 
