@@ -23,16 +23,6 @@ int ball_under(const Lab& lab, const Vec3& p) {
   return -1;
 }
 
-void aim_at(Lab& lab, const Vec3& p) {
-  if (!lab.scene.cue || lab.shot) return;
-  const int cue = scene_ball(lab.scene, lab.scene.cue->ball);
-  if (cue < 0) return;
-  const Vec3 d = p - lab.scene.balls[cue].position;
-  if (std::hypot(d.x, d.z) < 1e-4) return;
-  lab.scene.cue->aim = std::atan2(-d.z, d.x);
-  lab.scene_changed();
-}
-
 void keys(Lab& lab, Camera& camera) {
   const ImGuiIO& io = ImGui::GetIO();
   auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
@@ -89,7 +79,7 @@ void handle_input(Lab& lab, Camera& camera, const Viewport& vp, MouseDrag& drag)
         drag = {MouseDrag::Ball, ball};
       } else {
         drag.kind = MouseDrag::Aim;
-        aim_at(lab, *on_table);
+        lab.aim_at(*on_table);
       }
     }
   }
@@ -107,7 +97,7 @@ void handle_input(Lab& lab, Camera& camera, const Viewport& vp, MouseDrag& drag)
       if (on_table && (d.x != 0 || d.y != 0)) lab.move_ball(drag.ball, *on_table);
       break;
     case MouseDrag::Aim:
-      if (on_table && (d.x != 0 || d.y != 0)) aim_at(lab, *on_table);
+      if (on_table && (d.x != 0 || d.y != 0)) lab.aim_at(*on_table);
       break;
     case MouseDrag::None: break;
   }

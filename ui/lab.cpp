@@ -1,6 +1,7 @@
 #include "ui/lab.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "engine/io/scene_json.hpp"
 #include "engine/rack.hpp"
@@ -200,6 +201,16 @@ std::optional<Prediction> Lab::prediction() const {
   auto p = predictor_.latest();
   if (!p || p->generation != wanted_) return std::nullopt;
   return p;
+}
+
+void Lab::aim_at(const Vec3& point) {
+  if (!scene.cue || shot) return;
+  const int cue = scene_ball(scene, scene.cue->ball);
+  if (cue < 0) return;
+  const Vec3 d = point - scene.balls[cue].position;
+  if (std::hypot(d.x, d.z) < 1e-4) return;
+  scene.cue->aim = std::atan2(-d.z, d.x);  // CueStrike: 0 = +x, pi/2 = -z
+  scene_changed();
 }
 
 bool Lab::fits(int i, const Vec3& p) const {

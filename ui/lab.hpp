@@ -60,6 +60,8 @@ class Lab {
   std::optional<Prediction> prediction() const;  // the current scene's, when ready
   bool predicting() const { return predictor_.busy(); }
 
+  void aim_at(const Vec3& point);  // turns the cue towards a point on the table (before the shot)
+
   // Ball editing (only while no shot is shown); each refuses an overlap unless the scene allows it.
   bool move_ball(int i, const Vec3& to);
   void add_ball(const Vec3& at);

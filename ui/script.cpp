@@ -112,6 +112,22 @@ bool Script::execute(ScriptHost& host, const std::string& line) {
     if (!parse_method(arg, lab.scene.model.integrator.method)) return fail("unknown method"), true;
     if (const double step = number(); std::isfinite(step)) lab.scene.model.integrator.fixed_step = step;
     lab.physics_changed();
+  } else if (cmd == "aim-at") {  // aim-at X Z: as a click on the cloth
+    const double x = number(), z = number();
+    lab.aim_at({x, 0, z});
+  } else if (cmd == "place" || cmd == "remove") {  // place ID X Z (as a drag) / remove ID
+    in >> arg;
+    const int i = scene_ball(lab.scene, arg);
+    if (i < 0) return fail("no such ball"), true;
+    if (cmd == "remove") {
+      lab.remove_ball(i);
+    } else {
+      const double x = number(), z = number();
+      if (!lab.move_ball(i, {x, 0, z})) fail("cannot place it there (a shot is shown, or it would overlap)");
+    }
+  } else if (cmd == "add") {  // add X Z: as a shift+click on the cloth
+    const double x = number(), z = number();
+    lab.add_ball({x, 0, z});
   } else if (cmd == "select") {
     in >> arg;
     if (const int i = scene_ball(lab.scene, arg); i >= 0) lab.selected = i;

@@ -95,6 +95,15 @@ check("unstable" in unstable["error"] and not unstable["playing"], "a blown-up s
 # (x and z only: undo keeps the tuned physics, and the stiffer cloth changes how deep the ball sits)
 check(not recovered["has_shot"] and recovered["error"] == ""
       and ball(recovered, "cue")["position"][::2] == ball(aim, "cue")["position"][::2], "undo recovers from it")
+added, edited = load("added.json"), load("edited.json")
+check([b["id"] for b in added["balls"]] == ["cue", "1", "2"] and ball(added, "2")["position"][::2] == [0.0, 0.0],
+      "a ball added where clicked, with the next free number")
+check([b["id"] for b in edited["balls"]] == ["cue", "2"] and ball(edited, "2")["position"][::2] == [-0.5, 0.2],
+      "a ball moved and another removed")
+cue_at = ball(edited, "cue")["position"]
+expected_aim = math.degrees(math.atan2(-(0.2 - cue_at[2]), -0.5 - cue_at[0]))
+check(abs(edited["cue"]["aim_deg"] - expected_aim) < 1e-9, "the cue aims at the clicked point")
+check(edited["prediction_ready"] and edited["predicted_moving_balls"] == 2, "the prediction follows the edits")
 with open(f"{out}/trajectory.csv") as f:
     lines = f.read().splitlines()
 check(lines[0].startswith("time,ball") and len(lines) > 100, f"CSV export ({len(lines)} lines)")
