@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 
 namespace shotlab {
 namespace {
@@ -9,6 +10,12 @@ namespace {
 // A ball counts as supported while its gap to a collider is under 10 um: it stays "on the table" through the
 // micrometre bounces of a settling contact instead of flickering between airborne and landed.
 constexpr double kSupportGap = 1e-5;
+// Events count a contact from this depth (m) on: frozen balls touch at zero depth and round-off (1e-17 m) would
+// otherwise report contacts beginning and ending that carry no force; a real impact passes 1e-12 m within
+// nanoseconds of its onset.
+constexpr double kTouch = 1e-12;
+// Pairs closer than this (m) count as already touching: frozen balls, whose depth round-off moves around zero.
+constexpr double kFrozenGap = 1e-9;
 // Bisection stops when the bracket is this short (s).
 constexpr double kTimeResolution = 1e-10;
 
@@ -69,10 +76,13 @@ void EventDetector::collect(const State& state, const double* x, std::vector<Key
   for (int i = 0; i < n; ++i) {
     if (!state.in_play[i]) continue;
     for (int c = 0; c < static_cast<int>(model_.colliders.size()); ++c)
-      if (depth({i, -1 - c}, x) > 0) keys.emplace_back(i, -1 - c);
+      if (depth({i, -1 - c}, x) > kTouch) keys.emplace_back(i, -1 - c);
   }
   overlapping_pairs(model_, state, x, cache_);
-  for (const auto& [i, j] : cache_.pairs) keys.emplace_back(std::min(i, j), std::max(i, j));
+  for (const auto& [i, j] : cache_.pairs) {
+    const Key k{std::min(i, j), std::max(i, j)};
+    if (depth(k, x) > kTouch) keys.push_back(k);
+  }
   std::sort(keys.begin(), keys.end());
 }
 
@@ -92,6 +102,22 @@ void EventDetector::reset(const State& state) {
   collect(state, state.x.data(), contacts_);
   motion_.resize(state.ball_count());
   for (int i = 0; i < state.ball_count(); ++i) motion_[i] = classify(model_, state, state.x.data(), i);
+}
+
+double EventDetector::first_contact_begin(const StepSpan& span, const State& state) {
+  std::vector<Key> now, begun;
+  collect(state, span.x1.data(), now);
+  std::set_difference(now.begin(), now.end(), contacts_.begin(), contacts_.end(), std::back_inserter(begun));
+  double first = std::numeric_limits<double>::infinity();
+  for (const Key& k : begun) {
+    // Frozen balls touch at zero depth, and round-off flips them in and out of contact: no kink worth a restart.
+    if (depth(k, span.x0.data()) > -kFrozenGap) continue;
+    first = std::min(first, bisect(span.t0, span.t1, [&](double s) {
+                       span.interpolate(s, scratch_);
+                       return depth(k, scratch_.data()) > kTouch;
+                     }));
+  }
+  return first;
 }
 
 void EventDetector::scan(const StepSpan& span, const State& state, std::vector<Event>& events,
@@ -126,10 +152,10 @@ void EventDetector::scan(const StepSpan& span, const State& state, std::vector<E
   std::set_difference(now.begin(), now.end(), contacts_.begin(), contacts_.end(), std::back_inserter(begun));
   std::set_difference(contacts_.begin(), contacts_.end(), now.begin(), now.end(), std::back_inserter(ended));
   for (const Key& k : begun)
-    events.push_back({bisect(span.t0, span.t1, [&](double s) { return depth(k, at(s)) > 0; }), "contact_begin",
+    events.push_back({bisect(span.t0, span.t1, [&](double s) { return depth(k, at(s)) > kTouch; }), "contact_begin",
                       {model_.balls[k.first].id, body_name(k.second)}});
   for (const Key& k : ended)
-    events.push_back({bisect(span.t0, span.t1, [&](double s) { return depth(k, at(s)) <= 0; }), "contact_end",
+    events.push_back({bisect(span.t0, span.t1, [&](double s) { return depth(k, at(s)) <= kTouch; }), "contact_end",
                       {model_.balls[k.first].id, body_name(k.second)}});
   contacts_ = std::move(now);
 
