@@ -184,7 +184,10 @@ float play_panel(Lab& lab, Camera& camera) {
   ImGui::SetNextWindowSize(ImVec2(320, ImGui::GetIO().DisplaySize.y), ImGuiCond_FirstUseEver);
   ImGui::Begin("Shot lab");
   ImGui::TextWrapped("%s", lab.scene.name.c_str());
-  if (!lab.scene.description.empty()) ImGui::TextColored(ImVec4(0.7f, 0.9f, 1, 1), "%s", "What to look for:"), ImGui::TextWrapped("%s", lab.scene.description.c_str());
+  if (!lab.scene.description.empty()) {
+    ImGui::TextColored(ImVec4(0.7f, 0.9f, 1, 1), "What to look for:");
+    ImGui::TextWrapped("%s", lab.scene.description.c_str());
+  }
   if (ImGui::CollapsingHeader("Scenes and files")) scenes_section(lab);
   if (ImGui::CollapsingHeader("Playback", ImGuiTreeNodeFlags_DefaultOpen)) playback_section(lab);
   if (ImGui::CollapsingHeader("Aim", ImGuiTreeNodeFlags_DefaultOpen)) aim_section(lab);

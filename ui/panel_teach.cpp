@@ -54,7 +54,7 @@ void teach_panel(Lab& lab) {
   ImGui::Checkbox("velocity", &lab.settings.view.velocity), ImGui::SameLine();
   ImGui::Checkbox("spin", &lab.settings.view.spin), ImGui::SameLine();
   ImGui::Checkbox("contact forces", &lab.settings.view.forces);
-  if (!lab.shot) {
+  if (!lab.shot || lab.scene.balls.empty()) {
     ImGui::TextDisabled("Plots appear once a shot runs.");
     return;
   }
