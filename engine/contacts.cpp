@@ -31,7 +31,7 @@ double closing_time(double gap, double s, double a) {
 
 }  // namespace
 
-void overlapping_pairs(const Model& model, const State& state, const double* x, ContactCache& cache) {
+void overlapping_pairs(const Model& model, const State& state, const double* x, ContactCache& cache, double slack) {
   cache.pairs.clear();
   sort_by_x(model, state, x, cache.order);
   const auto& order = cache.order;
@@ -42,9 +42,9 @@ void overlapping_pairs(const Model& model, const State& state, const double* x, 
     for (size_t b = a + 1; b < order.size(); ++b) {
       const int j = order[b];
       const double rj = model.balls[j].radius;
-      if (x[9 * j] - rj >= pi.x + ri) break;  // sorted: no later ball reaches i along x
+      if (x[9 * j] - rj >= pi.x + ri + slack) break;  // sorted: no later ball reaches i along x
       const Vec3 d = pi - position(x, j);
-      const double reach = ri + rj;
+      const double reach = ri + rj + slack;
       if (glm::dot(d, d) < reach * reach) cache.pairs.emplace_back(i, j);
     }
   }
@@ -58,7 +58,7 @@ double time_to_possible_contact(const Model& model, const State& state, const do
   double vmax = 0;
   const int n = state.ball_count();
   for (int i = 0; i < n; ++i) {
-    if (!state.in_play[i]) continue;
+    if (!state.active(i)) continue;  // a sleeping ball does not move towards anything
     const Vec3 p = position(x, i);
     const double s = glm::length(velocity(x, i));
     vmax = std::max(vmax, s);
@@ -79,6 +79,7 @@ double time_to_possible_contact(const Model& model, const State& state, const do
       const double rj = model.balls[j].radius;
       const double closable = std::isfinite(best) ? 2.0 * vmax * best + a * best * best : best;
       if (x[9 * j] - rj - (pi.x + ri) > closable) break;
+      if (state.sleeping(i) && state.sleeping(j)) continue;
       const double gap = glm::length(pi - position(x, j)) - ri - rj;
       if (gap <= 0) continue;  // already touching: the contact force is resolved by error control
       const double s = glm::length(vi) + glm::length(velocity(x, j));

@@ -30,13 +30,17 @@ struct ContactCache {
   std::vector<int> order;
 };
 
-// Ball pairs whose spheres overlap, found by sweep-and-prune along x: O(n log n + pairs), not O(n^2).
-void overlapping_pairs(const Model& model, const State& state, const double* x, ContactCache& cache);
+// Ball pairs whose spheres overlap (or come closer than `slack` m), found by sweep-and-prune along x:
+// O(n log n + pairs), not O(n^2).
+void overlapping_pairs(const Model& model, const State& state, const double* x, ContactCache& cache,
+                       double slack = 0.0);
 
-// Calls fn(const Contact&) for every touching ball-collider and ball-ball pair of balls in play.
-// `x` is the state vector (9 numbers a ball), which may differ from state.x (the integrator's trial states).
+// Calls fn(const Contact&) for every touching ball-collider and ball-ball pair of balls in play. `x` is the state
+// vector (9 numbers a ball), which may differ from state.x (the integrator's trial states). Contacts in which no
+// ball is awake carry no dynamics and are left out unless `with_sleeping` (diagnostics want them).
 template <class Fn>
-void for_each_contact(const Model& model, const State& state, const double* x, ContactCache& cache, Fn&& fn);
+void for_each_contact(const Model& model, const State& state, const double* x, ContactCache& cache, Fn&& fn,
+                      bool with_sleeping = false);
 
 // Smallest time before any still-separated pair (ball-ball or ball-collider) could touch, given current speeds and
 // an acceleration bound; +inf when nothing can. Adaptive steps are capped by it so that no contact, however

@@ -29,7 +29,7 @@ Vec3 momentum(const Model& model, const State& state) {
 std::vector<Contact> contacts(const Model& model, const State& state) {
   std::vector<Contact> out;
   ContactCache cache(model);
-  for_each_contact(model, state, state.x.data(), cache, [&](const Contact& c) { out.push_back(c); });
+  for_each_contact(model, state, state.x.data(), cache, [&](const Contact& c) { out.push_back(c); }, true);
   return out;
 }
 

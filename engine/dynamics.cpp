@@ -10,7 +10,7 @@ void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/)
   const int n = state_.ball_count();
   dxdt.assign(x.size(), 0.0);
   for (int i = 0; i < n; ++i) {
-    force_[i] = state_.in_play[i] ? model_.balls[i].mass * model_.options.gravity : Vec3{0.0};
+    force_[i] = state_.active(i) ? model_.balls[i].mass * model_.options.gravity : Vec3{0.0};
     torque_[i] = Vec3{0.0};
   }
   for_each_contact(model_, state_, x.data(), cache_, [&](const Contact& c) {
@@ -26,7 +26,7 @@ void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/)
     }
   });
   for (int i = 0; i < n; ++i) {
-    if (!state_.in_play[i]) continue;
+    if (!state_.active(i)) continue;  // pocketed or asleep: frozen, zero derivative
     const BallSpec& b = model_.balls[i];
     const double inertia = 0.4 * b.mass * b.radius * b.radius;  // solid sphere, 2/5 m R^2
     set_position(dxdt, i, velocity(x, i));
@@ -43,7 +43,7 @@ void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/)
 void Dynamics::apply_rods(const StateVector& x, StateVector& dxdt) const {
   constexpr double beta = 50.0;  // 1/s: drift correction rate, slow against contacts, fast against a swing
   for (const Rod& rod : model_.rods) {
-    if (!state_.in_play[rod.ball]) continue;
+    if (!state_.active(rod.ball)) continue;
     const Vec3 d = position(x, rod.ball) - rod.anchor;
     const double len = glm::length(d);
     if (len <= 0) continue;

@@ -52,6 +52,7 @@ struct Options {
   double friction_sharpness = 1000.0;  // k of fricstep(k s), s/m: friction reaches full strength at 1/k m/s of slip
   double rest_speed = 1e-3;            // m/s: below this a ball (and R|w|) counts as stopped / rolling without slip
   double contact_margin = 1e-6;        // m: a step may bring a still separated pair this far into contact
+  double sleep_time = 0.2;             // s a group of touching balls must rest before it sleeps; 0: never
 };
 
 // Names of the three standard material pairs.

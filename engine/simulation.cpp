@@ -19,6 +19,7 @@ Simulation::Simulation(Model model, State initial)
       dynamics_(model_, integ_),
       stepper_(make_stepper(model_.integrator)),
       detector_(model_),
+      sleep_(model_),
       dt_next_(is_adaptive(model_.integrator.method) ? model_.integrator.initial_step : model_.integrator.fixed_step) {
   span_.t0 = span_.t1 = integ_.time;
   span_.x1 = integ_.x;
@@ -69,6 +70,7 @@ Status Simulation::advance(double dt) {
     state_.time = span_.t1;
   }
   state_.in_play = integ_.in_play;
+  state_.asleep = integ_.asleep;
   stats_.rhs_evaluations = dynamics_.evaluations();
   stats_.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return status_;
@@ -141,19 +143,21 @@ bool Simulation::step() {
   std::vector<Exit> exits;
   detector_.scan(span_, integ_, events_, exits);
   if (observer_) observer_(span_);
-  if (!exits.empty()) {
-    // A ball that left play is frozen where it left; the system lost a body, so the integrator starts afresh.
-    StateVector at;
-    for (const Exit& e : exits) {
-      span_.interpolate(e.time, at);
-      integ_.in_play[e.ball] = 0;
-      set_position(span_.x1, e.ball, position(at, e.ball));
-      set_velocity(span_.x1, e.ball, Vec3{0.0});
-      set_spin(span_.x1, e.ball, Vec3{0.0});
-    }
+  // A ball that left play is frozen where it left.
+  StateVector at;
+  for (const Exit& e : exits) {
+    span_.interpolate(e.time, at);
+    integ_.in_play[e.ball] = 0;
+    set_position(span_.x1, e.ball, position(at, e.ball));
+    set_velocity(span_.x1, e.ball, Vec3{0.0});
+    set_spin(span_.x1, e.ball, Vec3{0.0});
+  }
+  const bool slept = sleep_.update(integ_, span_.x1, t - span_.t0);
+  if (!exits.empty() || slept) {
+    // The system lost or froze bodies, or woke them: the integrator starts afresh from the step's end. The finished
+    // step's interpolant stays for the caller's clock, with the exited balls frozen in it.
     const StepSpan finished = span_;
     restart();
-    // Keep the finished step's interpolant for the caller's clock, with the exited balls frozen in it.
     span_.x0 = finished.x0;
     span_.f0 = finished.f0;
     span_.t0 = finished.t0;

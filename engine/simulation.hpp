@@ -12,6 +12,7 @@
 #include "dynamics.hpp"
 #include "events.hpp"
 #include "hermite.hpp"
+#include "sleep.hpp"
 #include "model.hpp"
 #include "state.hpp"
 #include "stepper.hpp"
@@ -74,6 +75,7 @@ class Simulation {
   Dynamics dynamics_;
   std::unique_ptr<Stepper> stepper_;
   EventDetector detector_;
+  Sleep sleep_;
   StepSpan span_;
   double dt_next_;
   std::vector<Event> events_;

@@ -219,7 +219,7 @@ std::string json_path_at(const std::string& text, size_t pos) {
       while (j < text.size() && std::isspace(static_cast<unsigned char>(text[j]))) ++j;
       if (j < text.size() && text[j] == ':' && !levels.empty()) levels.back().key = str;
     } else if (c == '{' || c == '[') {
-      levels.push_back({c == '['});
+      levels.push_back({c == '[', 0, ""});
     } else if ((c == '}' || c == ']') && !levels.empty()) {
       levels.pop_back();
     } else if (c == ',' && !levels.empty() && levels.back().array) {
@@ -267,6 +267,7 @@ Scene parse_scene(const json& doc, const std::string& source) {
     m.optional("friction_sharpness", [&](const JsonNode& v) { s.model.options.friction_sharpness = v.positive(); });
     m.optional("rest_speed", [&](const JsonNode& v) { s.model.options.rest_speed = v.positive(); });
     m.optional("contact_margin", [&](const JsonNode& v) { s.model.options.contact_margin = v.non_negative(); });
+    m.optional("sleep_time", [&](const JsonNode& v) { s.model.options.sleep_time = v.non_negative(); });
     m.finish();
   });
   n.optional("integrator", [&](const JsonNode& v) { read_integrator(v, s.model.integrator); });
@@ -385,7 +386,8 @@ json scene_to_json(const Scene& s) {
   doc["gravity"] = vec(s.model.options.gravity);
   doc["model"] = {{"friction_sharpness", s.model.options.friction_sharpness},
                   {"rest_speed", s.model.options.rest_speed},
-                  {"contact_margin", s.model.options.contact_margin}};
+                  {"contact_margin", s.model.options.contact_margin},
+                  {"sleep_time", s.model.options.sleep_time}};
   const IntegratorOptions& o = s.model.integrator;
   doc["integrator"] = {{"method", method_name(o.method)}, {"abs_tol", o.abs_tol}, {"rel_tol", o.rel_tol},
                        {"fixed_step", o.fixed_step}, {"initial_step", o.initial_step},
