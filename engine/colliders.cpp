@@ -1,5 +1,7 @@
 #include "colliders.hpp"
 
+#include <limits>
+
 namespace shotlab {
 namespace {
 
@@ -61,6 +63,21 @@ struct Probe {
 
 std::optional<Penetration> penetration(const Shape& shape, const Vec3& p, double r) {
   return std::visit(Probe{p, r}, shape);
+}
+
+double hole_gap(const Shape& shape, const Vec3& p) {
+  const std::vector<Hole>* holes = nullptr;
+  Vec3 n{0.0};
+  if (const auto* s = std::get_if<Plane>(&shape)) holes = &s->holes, n = s->normal;
+  if (const auto* s = std::get_if<BoundedPlane>(&shape)) holes = &s->holes, n = glm::normalize(glm::cross(s->u, s->v));
+  double gap = std::numeric_limits<double>::infinity();
+  if (!holes) return gap;
+  for (const Hole& h : *holes) {
+    Vec3 d = p - h.center;
+    d -= glm::dot(d, n) * n;
+    gap = std::min(gap, std::max(0.0, glm::length(d) - h.radius));
+  }
+  return gap;
 }
 
 const char* shape_name(const Shape& shape) {

@@ -60,6 +60,10 @@ struct Collider {
 // bounded plane, over a hole). A returned depth may be negative: the gap to contact, used to bound steps.
 std::optional<Penetration> penetration(const Shape& shape, const Vec3& p, double r);
 
+// Distance (m) from the projection of p onto a plane-like shape to the nearest edge of a hole it is outside of;
+// +inf for shapes without holes, 0 when over a hole.
+double hole_gap(const Shape& shape, const Vec3& p);
+
 const char* shape_name(const Shape& shape);
 
 }  // namespace shotlab

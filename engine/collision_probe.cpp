@@ -36,7 +36,7 @@ CollisionProbe probe_collision(const ContactMaterial& material, double mass, dou
   Simulation sim(model, state);
   CollisionProbe out;
   sim.set_observer([&](const StepSpan& span) {
-    const auto list = contacts(sim.model(), State{span.t1, span.x1, state.in_play, {}});
+    const auto list = contacts(sim.model(), State{span.t1, span.x1, state.in_play, {}, {}});
     if (list.empty()) return;
     ++out.steps;
     for (const Contact& c : list) {

@@ -65,6 +65,8 @@ double time_to_possible_contact(const Model& model, const State& state, const do
     for (const Collider& c : model.colliders) {
       const auto pen = penetration(c.shape, p, model.balls[i].radius);
       if (pen && pen->depth <= 0) best = std::min(best, closing_time(margin - pen->depth, s, a));
+      // A ball in the rolling regime ignores its support's geometry: it must not roll far over a pocket's edge.
+      if (state.rolling(i)) best = std::min(best, closing_time(hole_gap(c.shape, p) + margin, s, a));
     }
   }
   // Ball pairs: sweep along x, and skip pairs whose x gap is larger than anything closable before `best`.

@@ -36,11 +36,12 @@ void overlapping_pairs(const Model& model, const State& state, const double* x, 
                        double slack = 0.0);
 
 // Calls fn(const Contact&) for every touching ball-collider and ball-ball pair of balls in play. `x` is the state
-// vector (9 numbers a ball), which may differ from state.x (the integrator's trial states). Contacts in which no
-// ball is awake carry no dynamics and are left out unless `with_sleeping` (diagnostics want them).
+// vector (9 numbers a ball), which may differ from state.x (the integrator's trial states). Contacts that no
+// ball's dynamics uses (between sleeping balls; the bed under a ball in the rolling regime, whose support is in
+// closed form) are left out unless `with_inactive` (diagnostics want them).
 template <class Fn>
 void for_each_contact(const Model& model, const State& state, const double* x, ContactCache& cache, Fn&& fn,
-                      bool with_sleeping = false);
+                      bool with_inactive = false);
 
 // Smallest time before any still-separated pair (ball-ball or ball-collider) could touch, given current speeds and
 // an acceleration bound; +inf when nothing can. Adaptive steps are capped by it so that no contact, however

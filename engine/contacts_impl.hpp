@@ -5,12 +5,12 @@ namespace shotlab {
 
 template <class Fn>
 void for_each_contact(const Model& model, const State& state, const double* x, ContactCache& cache, Fn&& fn,
-                      bool with_sleeping) {
+                      bool with_inactive) {
   const double k = model.options.friction_sharpness;
   const int n = state.ball_count();
   // Ball against static colliders: B has zero velocity.
   for (int i = 0; i < n; ++i) {
-    if (!state.in_play[i] || (state.sleeping(i) && !with_sleeping)) continue;
+    if (!state.in_play[i] || ((state.sleeping(i) || state.rolling(i)) && !with_inactive)) continue;
     const double r = model.balls[i].radius;
     const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
     for (size_t c = 0; c < model.colliders.size(); ++c) {
@@ -26,7 +26,7 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
   overlapping_pairs(model, state, x, cache);
   const ContactMaterial& bb = *cache.ball_ball;
   for (const auto& [i, j] : cache.pairs) {
-    if (state.sleeping(i) && state.sleeping(j) && !with_sleeping) continue;
+    if (state.sleeping(i) && state.sleeping(j) && !with_inactive) continue;
     const double ri = model.balls[i].radius, rj = model.balls[j].radius;
     const Vec3 d = position(x, i) - position(x, j);
     const double dist = glm::length(d);

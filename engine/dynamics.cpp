@@ -1,5 +1,7 @@
 #include "dynamics.hpp"
 
+#include "regimes.hpp"
+
 namespace shotlab {
 
 Dynamics::Dynamics(const Model& model, const State& state)
@@ -29,6 +31,10 @@ void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/)
     if (!state_.active(i)) continue;  // pocketed or asleep: frozen, zero derivative
     const BallSpec& b = model_.balls[i];
     const double inertia = 0.4 * b.mass * b.radius * b.radius;  // solid sphere, 2/5 m R^2
+    if (state_.rolling(i)) {
+      rolling_derivative(model_, state_, x.data(), i, &dxdt[9 * i]);
+      continue;
+    }
     set_position(dxdt, i, velocity(x, i));
     set_velocity(dxdt, i, force_[i] / b.mass);
     set_spin(dxdt, i, torque_[i] / inertia);

@@ -4,6 +4,8 @@
 //   contacts ........... contact_force.cpp (one law for ball-ball, cloth, cushions, any collider),
 //                        found by contacts.hpp
 //   rods ............... here (apply_rods): constraint forces, computed last because they cancel the others
+//   rolling regime ..... regimes.cpp (rolling_derivative): closed-form rolling on the bed, replacing the above for
+//                        a ball that rolls and touches nothing else
 #pragma once
 #include <vector>
 

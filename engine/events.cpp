@@ -104,19 +104,22 @@ void EventDetector::reset(const State& state) {
   for (int i = 0; i < state.ball_count(); ++i) motion_[i] = classify(model_, state, state.x.data(), i);
 }
 
-double EventDetector::first_contact_begin(const StepSpan& span, const State& state) {
-  std::vector<Key> now, begun;
+double EventDetector::first_contact_change(const StepSpan& span, const State& state) {
+  std::vector<Key> now, begun, ended;
   collect(state, span.x1.data(), now);
   std::set_difference(now.begin(), now.end(), contacts_.begin(), contacts_.end(), std::back_inserter(begun));
+  std::set_difference(contacts_.begin(), contacts_.end(), now.begin(), now.end(), std::back_inserter(ended));
   double first = std::numeric_limits<double>::infinity();
-  for (const Key& k : begun) {
-    // Frozen balls touch at zero depth, and round-off flips them in and out of contact: no kink worth a restart.
-    if (depth(k, span.x0.data()) > -kFrozenGap) continue;
+  // Frozen balls touch at zero depth, and round-off flips them in and out of contact: no kink worth a restart.
+  auto locate = [&](const Key& k, const StateVector& apart, bool begins) {
+    if (depth(k, apart.data()) > -kFrozenGap) return;
     first = std::min(first, bisect(span.t0, span.t1, [&](double s) {
                        span.interpolate(s, scratch_);
-                       return depth(k, scratch_.data()) > kTouch;
+                       return (depth(k, scratch_.data()) > kTouch) == begins;
                      }));
-  }
+  };
+  for (const Key& k : begun) locate(k, span.x0, true);
+  for (const Key& k : ended) locate(k, span.x1, false);
   return first;
 }
 

@@ -41,8 +41,8 @@ class EventDetector {
   // Compares the end of `span` against the snapshot, appends located events and the balls that left play, and takes
   // the end of the span as the new snapshot.
   void scan(const StepSpan& span, const State& state, std::vector<Event>& events, std::vector<Exit>& exits);
-  // Earliest time in the span at which a contact absent from the snapshot begins; +inf when none does.
-  double first_contact_begin(const StepSpan& span, const State& state);
+  // Earliest time in the span at which a contact begins or ends (where the force law has a kink); +inf when none.
+  double first_contact_change(const StepSpan& span, const State& state);
 
  private:
   using Key = std::pair<int, int>;  // (ball, other): other >= 0 a ball, other < 0 the collider -1 - other

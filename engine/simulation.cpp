@@ -19,7 +19,7 @@ Simulation::Simulation(Model model, State initial)
       dynamics_(model_, integ_),
       stepper_(make_stepper(model_.integrator)),
       detector_(model_),
-      sleep_(model_),
+      regimes_(model_),
       dt_next_(is_adaptive(model_.integrator.method) ? model_.integrator.initial_step : model_.integrator.fixed_step) {
   span_.t0 = span_.t1 = integ_.time;
   span_.x1 = integ_.x;
@@ -71,6 +71,7 @@ Status Simulation::advance(double dt) {
   }
   state_.in_play = integ_.in_play;
   state_.asleep = integ_.asleep;
+  state_.rolling_on = integ_.rolling_on;
   stats_.rhs_evaluations = dynamics_.evaluations();
   stats_.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return status_;
@@ -92,13 +93,13 @@ bool Simulation::step() {
     t = span_.t1;
     tried = dt;
     if (stepper_->try_step(dynamics_, x, f, t, dt)) {
-      // A contact that begins inside the step puts a kink (linear damping: a jump) in the force, where every
+      // A contact that begins or ends inside the step puts a kink (linear damping: a jump) in the force, where every
       // embedded error estimate misjudges a high-order step (MODEL.md, "Numerical facts"). Redo the step so that it
-      // ends at the onset, located on this step's dense output; the next step then starts at the kink. Onsets in
+      // ends at the change, located on this step's dense output; the next step then starts at the kink. Changes in
       // the first 1 % of a step are left alone: that is where a redone step's successor finds them.
       if (!adaptive || retries == 3) break;
       const StepSpan trial{span_.t1, t, span_.x1, span_.f1, x, f};
-      const double onset = detector_.first_contact_begin(trial, integ_);
+      const double onset = detector_.first_contact_change(trial, integ_);
       if (onset <= span_.t1 + 0.01 * tried || onset >= t) break;
       dt = onset - span_.t1;
       ++retries;
@@ -152,8 +153,8 @@ bool Simulation::step() {
     set_velocity(span_.x1, e.ball, Vec3{0.0});
     set_spin(span_.x1, e.ball, Vec3{0.0});
   }
-  const bool slept = sleep_.update(integ_, span_.x1, t - span_.t0);
-  if (!exits.empty() || slept) {
+  const bool regime_changed = regimes_.update(integ_, span_.x1, t - span_.t0);
+  if (!exits.empty() || regime_changed) {
     // The system lost or froze bodies, or woke them: the integrator starts afresh from the step's end. The finished
     // step's interpolant stays for the caller's clock, with the exited balls frozen in it.
     const StepSpan finished = span_;

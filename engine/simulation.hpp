@@ -12,7 +12,7 @@
 #include "dynamics.hpp"
 #include "events.hpp"
 #include "hermite.hpp"
-#include "sleep.hpp"
+#include "regimes.hpp"
 #include "model.hpp"
 #include "state.hpp"
 #include "stepper.hpp"
@@ -75,7 +75,7 @@ class Simulation {
   Dynamics dynamics_;
   std::unique_ptr<Stepper> stepper_;
   EventDetector detector_;
-  Sleep sleep_;
+  Regimes regimes_;
   StepSpan span_;
   double dt_next_;
   std::vector<Event> events_;

@@ -27,10 +27,12 @@ struct State {
   double time = 0;              // s
   StateVector x;                // 9 * balls
   std::vector<uint8_t> in_play; // 0 once a ball is pocketed or has left the table: frozen, touches nothing
-  std::vector<uint8_t> asleep;  // 1 while a ball rests and nothing moving touches it (sleep.hpp); empty: all awake
+  std::vector<uint8_t> asleep;  // 1 while a ball rests and nothing moving touches it (regimes.hpp); empty: none
+  std::vector<int> rolling_on;  // the collider a ball rolls on in the rolling regime (regimes.hpp), else -1; empty: none
 
   int ball_count() const { return static_cast<int>(in_play.size()); }
   bool sleeping(int i) const { return static_cast<size_t>(i) < asleep.size() && asleep[i]; }
+  bool rolling(int i) const { return static_cast<size_t>(i) < rolling_on.size() && rolling_on[i] >= 0; }
   // In play and awake: its equations are integrated.
   bool active(int i) const { return in_play[i] && !sleeping(i); }
 };

@@ -58,14 +58,18 @@ TEST(Determinism, IndependentOfFrameRate) {
 // Every adaptive method at tolerance 1e-9 against Dormand-Prince 5 at 1e-9. The bench (docs/bench) measures errors
 // far above the tolerance where contacts begin (the force's derivative has a kink there, which fools every error
 // estimate; MODEL.md): up to 1.3e-5 R for rosenbrock4 on S4. Required: 1e-4 R (3 um) and 1e-4 of the speed.
-void expect_integrators_agree(const std::string& file, double speed, const std::vector<std::string>& methods) {
-  const auto with = [&](const std::string& m) {
-    return bench_scene(file, {"integrator.method=" + m, "integrator.abs_tol=1e-9", "integrator.rel_tol=1e-9",
+// Bulirsch-Stoer's extrapolation assumes a smooth right-hand side; across the many friction-switch kinks of a rack
+// in contact its achieved error is 100x its tolerance (1.3e-4 R at 1e-9 on S6, 9e-7 R at 1e-11; docs/bench), so on
+// the break it is held to the same 1e-4 at a tolerance of 1e-11.
+void expect_integrators_agree(const std::string& file, double speed,
+                              const std::vector<std::pair<std::string, std::string>>& methods) {
+  const auto with = [&](const std::string& m, const std::string& tol) {
+    return bench_scene(file, {"integrator.method=" + m, "integrator.abs_tol=" + tol, "integrator.rel_tol=" + tol,
                               "integrator.max_steps_per_call=1000000"});
   };
-  const StateVector ref = final_state(with("dopri5"), 0, file + ", dopri5 1e-9");
-  for (const std::string& m : methods) {
-    const auto [dp, dv] = difference(final_state(with(m), 0, file + ", " + m + " 1e-9"), ref, speed);
+  const StateVector ref = final_state(with("dopri5", "1e-9"), 0, file + ", dopri5 1e-9");
+  for (const auto& [m, tol] : methods) {
+    const auto [dp, dv] = difference(final_state(with(m, tol), 0, file + ", " + m + " " + tol), ref, speed);
     std::printf("[ outcome  ] %s, %s against dopri5: %.3g R, %.3g v0\n", file.c_str(), m.c_str(), dp, dv);
     EXPECT_LT(dp, 1e-4) << m;
     EXPECT_LT(dv, 1e-4) << m;
@@ -73,11 +77,12 @@ void expect_integrators_agree(const std::string& file, double speed, const std::
 }
 
 TEST(Determinism, IntegratorsAgreeOnACushionRebound) {
-  expect_integrators_agree("s4_cushion.json", 2.0, {"cash_karp54", "bulirsch_stoer", "rosenbrock4"});
+  expect_integrators_agree("s4_cushion.json", 2.0,
+                           {{"cash_karp54", "1e-9"}, {"bulirsch_stoer", "1e-9"}, {"rosenbrock4", "1e-9"}});
 }
 
 TEST(Determinism, IntegratorsAgreeOnTheBreak) {
-  expect_integrators_agree("s6_break.json", 10.0, {"cash_karp54", "bulirsch_stoer"});
+  expect_integrators_agree("s6_break.json", 10.0, {{"cash_karp54", "1e-9"}, {"bulirsch_stoer", "1e-11"}});
 }
 
 }  // namespace

@@ -1,0 +1,189 @@
+#include "regimes.hpp"
+
+#include "events.hpp"
+
+namespace shotlab {
+namespace {
+// Balls this close count as touching for waking and grouping sleepers: frozen balls touch at zero depth, give or
+// take round-off.
+constexpr double kTouchSlack = 1e-9;
+
+// The flat, horizontal bed a ball can roll on in closed form: a plane (bounded or not) whose normal is along
+// -gravity.
+bool flat_bed(const Collider& c, const Vec3& gravity, Vec3& normal, Vec3& point) {
+  if (const auto* s = std::get_if<Plane>(&c.shape)) normal = s->normal, point = s->point;
+  else if (const auto* s = std::get_if<BoundedPlane>(&c.shape)) normal = glm::normalize(glm::cross(s->u, s->v)), point = s->origin;
+  else return false;
+  const double g = glm::length(gravity);
+  return g > 0 && glm::dot(normal, -gravity / g) > 1.0 - 1e-12;
+}
+}  // namespace
+
+// Rolling on a flat bed with normal n under gravity g (magnitude), static normal force m g:
+//   dp/dt = v (tangential; the height stays at the sink depth)
+//   dv/dt = a = -mu_r g fricstep(k |v|) v^                                  (MODEL.md eq. 3.6)
+//   dw/dt = (1/R) n x a  +  n (-(5 mu_sp g / (2 R)) fricstep(k R w.n))      (eq. 3.7; spin torque mu_sp R m g over
+//                                                                            I = 2/5 m R^2, eq. 3.8)
+// The slip v + R n x w stays exactly zero: d/dt of it is a + R n x ((1/R) n x a) = a - a = 0 for a along the bed.
+void rolling_derivative(const Model& model, const State& state, const double* x, int i, double* dxdt) {
+  const Collider& bed = model.colliders[state.rolling_on[i]];
+  const ContactMaterial& m = model.material(bed.material);
+  Vec3 n, point;
+  flat_bed(bed, model.options.gravity, n, point);
+  const double g = glm::length(model.options.gravity), r = model.balls[i].radius, k = model.options.friction_sharpness;
+  const Vec3 v = velocity(x, i), w = spin(x, i);
+  const double speed = glm::length(v);
+  const Vec3 a = speed > 0 ? -(m.rolling_resistance * g * fricstep(k * speed) / speed) * v : Vec3{0.0};
+  const double wn = glm::dot(w, n);
+  const Vec3 alpha = glm::cross(n, a) / r - (2.5 * m.spin_friction * g / r * fricstep(k * r * wn)) * n;
+  for (int c = 0; c < 3; ++c) {
+    dxdt[c] = v[c];
+    dxdt[3 + c] = a[c];
+    dxdt[6 + c] = alpha[c];
+  }
+}
+
+bool Regimes::at_rest(const State& state, const StateVector& x, int i) const {
+  const double eps = model_.options.rest_speed, r = model_.balls[i].radius;
+  return glm::length(velocity(x, i)) < eps && r * glm::length(spin(x, i)) < eps &&
+         classify(model_, state, x.data(), i) == Motion::Stationary;
+}
+
+bool Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const {
+  const double margin = model_.options.contact_margin, r = model_.balls[i].radius;
+  const Vec3 p = position(x, i);
+  int support = -1;
+  for (size_t c = 0; c < model_.colliders.size(); ++c) {
+    const auto pen = penetration(model_.colliders[c].shape, p, r);
+    if (!pen || pen->depth <= -margin) continue;
+    Vec3 point;
+    if (support >= 0 || !flat_bed(model_.colliders[c], model_.options.gravity, normal, point) ||
+        glm::dot(pen->normal, normal) < 1.0 - 1e-12)  // over a pocket the rim, not the bed, holds the ball
+      return false;
+    support = static_cast<int>(c);
+    // Static sink: C_s d^m = m g.
+    const ContactMaterial& m = model_.material(model_.colliders[c].material);
+    const double sink = std::pow(model_.balls[i].mass * glm::length(model_.options.gravity) / m.stiffness, 1.0 / m.exponent);
+    height = glm::dot(point, normal) + r - sink;
+  }
+  if (support < 0) return false;
+  for (int j : touching_[i])
+    if (glm::length(p - position(x, j)) - r - model_.balls[j].radius < margin) return false;
+  for (const Rod& rod : model_.rods)
+    if (rod.ball == i) return false;
+  return true;
+}
+
+bool Regimes::update(State& state, StateVector& x, double dt) {
+  const int n = state.ball_count();
+  if (n == 0) return false;
+  if (state.asleep.size() != static_cast<size_t>(n)) state.asleep.assign(n, 0);
+  if (state.rolling_on.size() != static_cast<size_t>(n)) state.rolling_on.assign(n, -1);
+  still_for_.resize(n, 0.0);
+  // Neighbour lists within contact_margin (sleep groups use only the frozen-touching ones).
+  touching_.assign(n, {});
+  overlapping_pairs(model_, state, x.data(), cache_, std::max(model_.options.contact_margin, kTouchSlack));
+  for (const auto& [i, j] : cache_.pairs) {
+    touching_[i].push_back(j);
+    touching_[j].push_back(i);
+  }
+  const bool slept = update_sleep(state, x, dt);
+  const bool rolled = update_rolling(state, x);
+  return slept || rolled;
+}
+
+bool Regimes::update_rolling(State& state, StateVector& x) {
+  bool changed = false;
+  for (int i = 0; i < state.ball_count(); ++i) {
+    Vec3 n;
+    double height;
+    const bool eligible = state.active(i) && only_on_bed(x, i, n, height);
+    if (state.rolling(i) && !eligible) {
+      state.rolling_on[i] = -1;
+      changed = true;
+    } else if (!state.rolling(i) && eligible && classify(model_, state, x.data(), i) == Motion::Rolling &&
+               std::abs(glm::dot(velocity(x, i), n)) < model_.options.rest_speed) {
+      // Snap onto the constraint: height at the sink depth, no normal velocity, and the remaining slip u (under
+      // rest_speed by the entry condition) removed the way cloth friction removes it: by a tangential impulse J at
+      // the contact point r = -R n. Then du = J/m + R n x ((r x J)/I) = J/m (1 + m R^2/I) = 3.5 J/m, so
+      // J = -m u / 3.5: the velocity takes 2/7 of the correction, the spin the rest, as in a real stun-to-roll.
+      const double r = model_.balls[i].radius, mass = model_.balls[i].mass;
+      const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
+      const Vec3 vt = v - glm::dot(v, n) * n;
+      Vec3 u = vt + r * glm::cross(n, w);
+      u -= glm::dot(u, n) * n;
+      const Vec3 j = -(mass / 3.5) * u;
+      set_position(x, i, p + (height - glm::dot(p, n)) * n);
+      set_velocity(x, i, vt + j / mass);
+      set_spin(x, i, w + glm::cross(-r * n, j) / (0.4 * mass * r * r));
+      for (size_t c = 0; c < model_.colliders.size(); ++c) {
+        Vec3 nn, point;
+        const auto pen = penetration(model_.colliders[c].shape, p, model_.balls[i].radius);
+        if (pen && pen->depth > -model_.options.contact_margin && flat_bed(model_.colliders[c], model_.options.gravity, nn, point))
+          state.rolling_on[i] = static_cast<int>(c);
+      }
+      changed = true;
+    }
+  }
+  return changed;
+}
+
+bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
+  const int n = state.ball_count();
+  if (model_.options.sleep_time <= 0) return false;
+  auto frozen_touch = [&](int i, int j) {
+    return glm::length(position(x, i) - position(x, j)) - model_.balls[i].radius - model_.balls[j].radius < kTouchSlack;
+  };
+  std::vector<uint8_t> resting(n, 0);
+  for (int i = 0; i < n; ++i) {
+    if (!state.in_play[i]) continue;
+    resting[i] = state.sleeping(i) || at_rest(state, x, i);
+    still_for_[i] = resting[i] && !state.sleeping(i) ? still_for_[i] + dt : 0.0;
+  }
+  bool changed = false;
+  // Wake: flood from every awake ball that is moving through the touching graph; every sleeper reached wakes.
+  std::vector<int> stack;
+  for (int i = 0; i < n; ++i)
+    if (state.in_play[i] && !resting[i]) stack.push_back(i);
+  std::vector<uint8_t> seen(n, 0);
+  while (!stack.empty()) {
+    const int i = stack.back();
+    stack.pop_back();
+    for (int j : touching_[i])
+      if (state.sleeping(j) && !seen[j] && frozen_touch(i, j)) {
+        seen[j] = 1;
+        state.asleep[j] = 0;
+        still_for_[j] = 0;
+        changed = true;
+        stack.push_back(j);
+      }
+  }
+  // Sleep: a group of touching awake balls falls asleep together once every one has rested for sleep_time.
+  std::fill(seen.begin(), seen.end(), 0);
+  for (int start = 0; start < n; ++start) {
+    if (!state.active(start) || seen[start]) continue;
+    std::vector<int> group{start};
+    seen[start] = 1;
+    bool ready = true;
+    for (size_t k = 0; k < group.size(); ++k) {
+      const int i = group[k];
+      ready = ready && still_for_[i] >= model_.options.sleep_time;
+      for (int j : touching_[i])
+        if (state.active(j) && !seen[j] && frozen_touch(i, j)) {
+          seen[j] = 1;
+          group.push_back(j);
+        }
+    }
+    if (!ready) continue;
+    for (int i : group) {
+      state.asleep[i] = 1;
+      state.rolling_on[i] = -1;
+      set_velocity(x, i, Vec3{0.0});
+      set_spin(x, i, Vec3{0.0});
+    }
+    changed = true;
+  }
+  return changed;
+}
+
+}  // namespace shotlab

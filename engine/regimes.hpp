@@ -1,0 +1,50 @@
+// Regimes: what part of the model a ball needs right now, decided at step boundaries (MuJoCo's "only what the
+// scene needs"). Three regimes:
+//  - free: the full model (every contact, friction smoothed by fricstep);
+//  - rolling: the ball rolls on the bed and touches nothing else. Its slip is exactly zero and stays so, so
+//    instead of the stiff smoothed friction (a damper of rate 1.5 k mu g, about 1e4 1/s, MODEL.md "Numerical
+//    facts") the right-hand side uses the closed-form rolling dynamics: constant deceleration mu_r g along the
+//    motion with the matching spin, linear decay of the vertical spin, height fixed at the static sink depth.
+//    Explicit steps are then limited by accuracy and by the time to the next possible contact, not by stability;
+//  - asleep (Box2D's islands, reduced to what billiards needs): a group of touching balls that has rested for
+//    sleep_time is frozen exactly (no equations, no contacts), so resting balls cost nothing and cannot drift. A
+//    sleeping ball is an obstacle to awake ones and wakes, with every sleeping ball touching it, as soon as an
+//    awake ball that is not at rest touches it.
+// A ball leaves the rolling regime when anything other than the bed comes within contact_margin, when its support
+// is no longer the flat bed (a pocket rim), or when it stops rolling. Contact onsets end the integrator's step
+// (simulation.cpp), so regime changes happen at the instant of contact.
+#pragma once
+#include <vector>
+
+#include "contacts.hpp"
+#include "model.hpp"
+#include "state.hpp"
+
+namespace shotlab {
+
+class Regimes {
+ public:
+  explicit Regimes(const Model& model) : model_(model), cache_(model) {}
+  // After an accepted step of dt seconds ending at state x: updates state.asleep and state.rolling, zeroes the
+  // velocities of new sleepers and snaps new rollers onto the rolling constraint. Returns true when any ball changed
+  // regime: the system changed and the integrator must restart.
+  bool update(State& state, StateVector& x, double dt);
+
+ private:
+  bool at_rest(const State& state, const StateVector& x, int i) const;
+  bool update_sleep(State& state, StateVector& x, double dt);
+  bool update_rolling(State& state, StateVector& x);
+  // The bed's unit normal and the centre height of a ball resting on it, when ball i touches exactly the flat bed
+  // and nothing else within contact_margin; false otherwise.
+  bool only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const;
+
+  const Model& model_;
+  ContactCache cache_;
+  std::vector<double> still_for_;           // s each ball has been at rest
+  std::vector<std::vector<int>> touching_;  // neighbours (frozen-touching included), rebuilt each update
+};
+
+// Right-hand side of a ball in the rolling regime (the closed-form dynamics above), written into dxdt.
+void rolling_derivative(const Model& model, const State& state, const double* x, int i, double* dxdt);
+
+}  // namespace shotlab
