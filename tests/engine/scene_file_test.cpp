@@ -147,7 +147,7 @@ TEST(Cli, RunWritesResultAndTrajectory) {
   EXPECT_DOUBLE_EQ(r["time"].get<double>(), 1.0);
   EXPECT_EQ(r["balls"][0]["id"], "cue");
   EXPECT_EQ(r["balls"][0]["motion"], "rolling");
-  EXPECT_EQ(r["stats"]["integrator"], "dopri5");
+  EXPECT_EQ(r["stats"]["integrator"], "cash_karp54");  // the default
   EXPECT_GT(r["stats"]["steps"].get<long>(), 0);
   EXPECT_EQ(r["events"][0]["kind"], "rolling");
   std::ifstream csv(dir / "t.csv");
