@@ -43,10 +43,11 @@ template <class Fn>
 void for_each_contact(const Model& model, const State& state, const double* x, ContactCache& cache, Fn&& fn,
                       bool with_inactive = false);
 
-// Smallest time before any still-separated pair (ball-ball or ball-collider) could touch, given current speeds and
-// an acceleration bound; +inf when nothing can. Adaptive steps are capped by it so that no contact, however
-// glancing, falls between two steps (MODEL.md, "Numerical facts").
-double time_to_possible_contact(const Model& model, const State& state, const double* x);
+// A lower bound on the time before any still-separated pair (ball-ball or ball-collider) could touch, given current
+// velocities and an acceleration bound; +inf when nothing can within `horizon` (the step the integrator wants).
+// Adaptive steps are capped by it so that no contact, however glancing, falls between two steps (MODEL.md,
+// "Numerical facts"). Ball pairs use their relative speed, so a cluster moving together is not held back.
+double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon);
 
 }  // namespace shotlab
 

@@ -81,7 +81,7 @@ bool Simulation::step() {
   const bool adaptive = is_adaptive(model_.integrator.method);
   double dt = adaptive ? dt_next_ : model_.integrator.fixed_step;
   const double wanted = dt;
-  if (adaptive) dt = std::min(dt, time_to_possible_contact(model_, integ_, span_.x1.data()));
+  if (adaptive) dt = std::min(dt, time_to_possible_contact(model_, integ_, span_.x1.data(), dt));
   const bool capped = dt < wanted;
   StateVector x, f;
   double t, tried;
