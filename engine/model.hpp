@@ -53,6 +53,8 @@ struct Options {
   double rest_speed = 1e-3;            // m/s: below this a ball (and R|w|) counts as stopped / rolling without slip
   double contact_margin = 1e-6;        // m: a step may bring a still separated pair this far into contact
   double sleep_time = 0.2;             // s a group of touching balls must rest before it sleeps; 0: never
+  bool rolling_regime = true;          // closed-form rolling for a ball alone on the bed (regimes.hpp); false, with
+                                       // sleep_time 0, gives the plain all-ODE path, kept as the reference
 };
 
 // Names of the three standard material pairs.

@@ -97,7 +97,7 @@ bool Regimes::update_rolling(State& state, StateVector& x) {
   for (int i = 0; i < state.ball_count(); ++i) {
     Vec3 n;
     double height;
-    const bool eligible = state.active(i) && only_on_bed(x, i, n, height);
+    const bool eligible = model_.options.rolling_regime && state.active(i) && only_on_bed(x, i, n, height);
     if (state.rolling(i) && !eligible) {
       state.rolling_on[i] = -1;
       changed = true;

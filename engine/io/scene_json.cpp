@@ -268,6 +268,7 @@ Scene parse_scene(const json& doc, const std::string& source) {
     m.optional("rest_speed", [&](const JsonNode& v) { s.model.options.rest_speed = v.positive(); });
     m.optional("contact_margin", [&](const JsonNode& v) { s.model.options.contact_margin = v.non_negative(); });
     m.optional("sleep_time", [&](const JsonNode& v) { s.model.options.sleep_time = v.non_negative(); });
+    m.optional("rolling_regime", [&](const JsonNode& v) { s.model.options.rolling_regime = v.boolean(); });
     m.finish();
   });
   n.optional("integrator", [&](const JsonNode& v) { read_integrator(v, s.model.integrator); });
@@ -387,7 +388,8 @@ json scene_to_json(const Scene& s) {
   doc["model"] = {{"friction_sharpness", s.model.options.friction_sharpness},
                   {"rest_speed", s.model.options.rest_speed},
                   {"contact_margin", s.model.options.contact_margin},
-                  {"sleep_time", s.model.options.sleep_time}};
+                  {"sleep_time", s.model.options.sleep_time},
+                  {"rolling_regime", s.model.options.rolling_regime}};
   const IntegratorOptions& o = s.model.integrator;
   doc["integrator"] = {{"method", method_name(o.method)}, {"abs_tol", o.abs_tol}, {"rel_tol", o.rel_tol},
                        {"fixed_step", o.fixed_step}, {"initial_step", o.initial_step},
