@@ -26,6 +26,7 @@ Penetration from_point(const Vec3& p, double r, const Vec3& q, double rc) {
 struct Probe {
   const Vec3& p;
   double r;
+  double within;
 
   // Plane surface with holes. The plane is one-sided: a centre behind it (it fell through a hole) touches nothing.
   // A centre over a hole can only touch the hole's rim: the point of the rim circle nearest to it.
@@ -51,6 +52,9 @@ struct Probe {
   }
   std::optional<Penetration> operator()(const StaticSphere& s) const { return from_point(p, r, s.center, s.radius); }
   std::optional<Penetration> operator()(const Capsule& s) const {
+    const double reach = r + s.radius + within;
+    for (int k = 0; k < 3; ++k)
+      if (p[k] < std::min(s.a[k], s.b[k]) - reach || p[k] > std::max(s.a[k], s.b[k]) + reach) return std::nullopt;
     // Nearest point of segment a-b: clamp the projection parameter to [0, 1].
     const Vec3 ab = s.b - s.a;
     const double len2 = glm::dot(ab, ab);
@@ -61,8 +65,8 @@ struct Probe {
 
 }  // namespace
 
-std::optional<Penetration> penetration(const Shape& shape, const Vec3& p, double r) {
-  return std::visit(Probe{p, r}, shape);
+std::optional<Penetration> penetration(const Shape& shape, const Vec3& p, double r, double within) {
+  return std::visit(Probe{p, r, within}, shape);
 }
 
 double hole_gap(const Shape& shape, const Vec3& p) {

@@ -95,8 +95,10 @@ double time_to_possible_contact(const Model& model, const State& state, const do
     const Vec3 p = position(x, i), v = velocity(x, i);
     const double s = glm::length(v);
     vmax = std::max(vmax, s);
+    // Colliders farther than the ball can travel within the horizon cannot limit the step.
+    const double travel = s * horizon + a * horizon * horizon + margin;
     for (const Collider& c : model.colliders) {
-      const auto pen = penetration(c.shape, p, model.balls[i].radius);
+      const auto pen = penetration(c.shape, p, model.balls[i].radius, travel);
       if (pen && pen->depth <= 0)
         best = std::min(best, closing_time(margin - pen->depth, collider_closing_speed(c.shape, p, v), a));
       // A ball in the rolling regime ignores its support's geometry: it must not roll far over a pocket's edge.

@@ -14,7 +14,7 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
     const double r = model.balls[i].radius;
     const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
     for (size_t c = 0; c < model.colliders.size(); ++c) {
-      const auto pen = penetration(model.colliders[c].shape, p, r);
+      const auto pen = penetration(model.colliders[c].shape, p, r, 0.0);
       if (!pen || pen->depth <= 0) continue;
       const Vec3& nrm = pen->normal;
       const ContactKinematics kin{nrm, pen->depth, v, v + r * glm::cross(nrm, w), glm::dot(w, nrm), r};

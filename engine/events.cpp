@@ -55,7 +55,7 @@ Motion classify(const Model& model, const State& state, const double* x, int i) 
   Vec3 n{0.0};
   double best_up = -2;
   for (const Collider& c : model.colliders) {
-    const auto pen = penetration(c.shape, p, r);
+    const auto pen = penetration(c.shape, p, r, kSupportGap);
     if (pen && pen->depth > -kSupportGap && glm::dot(pen->normal, kUp) > best_up) {
       best_up = glm::dot(pen->normal, kUp);
       n = pen->normal;
@@ -90,7 +90,7 @@ double EventDetector::depth(const Key& key, const double* x) const {
   const auto [i, other] = key;
   const double ri = model_.balls[i].radius;
   if (other >= 0) return ri + model_.balls[other].radius - glm::length(position(x, i) - position(x, other));
-  const auto pen = penetration(model_.colliders[-1 - other].shape, position(x, i), ri);
+  const auto pen = penetration(model_.colliders[-1 - other].shape, position(x, i), ri, kFrozenGap);
   return pen ? pen->depth : -1.0;
 }
 

@@ -54,7 +54,7 @@ bool Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& hei
   const Vec3 p = position(x, i);
   int support = -1;
   for (size_t c = 0; c < model_.colliders.size(); ++c) {
-    const auto pen = penetration(model_.colliders[c].shape, p, r);
+    const auto pen = penetration(model_.colliders[c].shape, p, r, margin);
     if (!pen || pen->depth <= -margin) continue;
     Vec3 point;
     if (support >= 0 || !flat_bed(model_.colliders[c], model_.options.gravity, normal, point) ||
@@ -118,7 +118,7 @@ bool Regimes::update_rolling(State& state, StateVector& x) {
       set_spin(x, i, w + glm::cross(-r * n, j) / (0.4 * mass * r * r));
       for (size_t c = 0; c < model_.colliders.size(); ++c) {
         Vec3 nn, point;
-        const auto pen = penetration(model_.colliders[c].shape, p, model_.balls[i].radius);
+        const auto pen = penetration(model_.colliders[c].shape, p, model_.balls[i].radius, model_.options.contact_margin);
         if (pen && pen->depth > -model_.options.contact_margin && flat_bed(model_.colliders[c], model_.options.gravity, nn, point))
           state.rolling_on[i] = static_cast<int>(c);
       }
