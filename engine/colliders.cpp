@@ -5,9 +5,12 @@
 namespace shotlab {
 namespace {
 
-const Hole* hole_under(const std::vector<Hole>& holes, const Vec3& p, const Vec3& n) {
+const Hole* hole_under(const std::vector<Hole>& holes, const Vec3& p, const Vec3& n, double height) {
   for (const Hole& h : holes) {
     Vec3 d = p - h.center;
+    // Cheap reject: an in-plane offset within the radius needs every coordinate within radius + height.
+    const double reach = h.radius + std::abs(height);
+    if (std::abs(d.x) > reach || std::abs(d.y) > reach || std::abs(d.z) > reach) continue;
     d -= glm::dot(d, n) * n;  // in-plane offset
     if (glm::dot(d, d) < h.radius * h.radius) return &h;
   }
@@ -33,7 +36,7 @@ struct Probe {
   std::optional<Penetration> surface(const Vec3& point, const Vec3& n, const std::vector<Hole>& holes) const {
     const double height = glm::dot(p - point, n);
     if (height < 0) return std::nullopt;
-    if (const Hole* h = hole_under(holes, p, n)) {
+    if (const Hole* h = hole_under(holes, p, n, height)) {
       const Vec3 in_plane = p - height * n - h->center;
       const double len = glm::length(in_plane);
       const Vec3 e = len > 0 ? in_plane / len : glm::normalize(glm::cross(n, Vec3{1.0, 0.0, 0.0}) + glm::cross(n, kUp));
