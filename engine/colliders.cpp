@@ -72,6 +72,21 @@ std::optional<Penetration> penetration(const Shape& shape, const Vec3& p, double
   return std::visit(Probe{p, r, within}, shape);
 }
 
+Bounds bounds(const Shape& shape) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  if (const auto* s = std::get_if<StaticSphere>(&shape)) return {s->center - s->radius, s->center + s->radius};
+  if (const auto* s = std::get_if<Capsule>(&shape))
+    return {glm::min(s->a, s->b) - s->radius, glm::max(s->a, s->b) + s->radius};
+  if (const auto* s = std::get_if<BoundedPlane>(&shape)) {
+    // The parallelogram's corners; a ball touches the plane only while its centre projects inside.
+    const Vec3 c[4] = {s->origin, s->origin + s->u, s->origin + s->v, s->origin + s->u + s->v};
+    Bounds b{c[0], c[0]};
+    for (const Vec3& q : c) b.lo = glm::min(b.lo, q), b.hi = glm::max(b.hi, q);
+    return b;
+  }
+  return {Vec3{-inf}, Vec3{inf}};
+}
+
 double hole_gap(const Shape& shape, const Vec3& p) {
   const std::vector<Hole>* holes = nullptr;
   Vec3 n{0.0};

@@ -65,6 +65,16 @@ struct Collider {
 std::optional<Penetration> penetration(const Shape& shape, const Vec3& p, double r,
                                        double within = std::numeric_limits<double>::infinity());
 
+// Axis-aligned bounds of a shape (infinite for a plane): a ball whose centre is more than its radius outside them
+// cannot touch it.
+struct Bounds {
+  Vec3 lo, hi;
+  bool may_touch(const Vec3& p, double r) const {
+    return p.x + r > lo.x && p.x - r < hi.x && p.y + r > lo.y && p.y - r < hi.y && p.z + r > lo.z && p.z - r < hi.z;
+  }
+};
+Bounds bounds(const Shape& shape);
+
 // Distance (m) from the projection of p onto a plane-like shape to the nearest edge of a hole it is outside of;
 // +inf for shapes without holes, 0 when over a hole.
 double hole_gap(const Shape& shape, const Vec3& p);

@@ -7,7 +7,10 @@
 namespace shotlab {
 
 ContactCache::ContactCache(const Model& model) : ball_ball(&model.material(kBallBall)) {
-  for (const Collider& c : model.colliders) collider_material.push_back(&model.material(c.material));
+  for (const Collider& c : model.colliders) {
+    collider_material.push_back(&model.material(c.material));
+    collider_bounds.push_back(bounds(c.shape));
+  }
 }
 
 namespace {

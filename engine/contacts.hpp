@@ -25,6 +25,7 @@ struct Contact {
 struct ContactCache {
   explicit ContactCache(const Model& model);
   std::vector<const ContactMaterial*> collider_material;
+  std::vector<Bounds> collider_bounds;  // broad phase against static colliders
   const ContactMaterial* ball_ball;
   std::vector<std::pair<int, int>> pairs;
   std::vector<int> order;

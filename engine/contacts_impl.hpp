@@ -14,6 +14,7 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
     const double r = model.balls[i].radius;
     const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
     for (size_t c = 0; c < model.colliders.size(); ++c) {
+      if (!cache.collider_bounds[c].may_touch(p, r)) continue;
       const auto pen = penetration(model.colliders[c].shape, p, r, 0.0);
       if (!pen || pen->depth <= 0) continue;
       const Vec3& nrm = pen->normal;
