@@ -1,5 +1,5 @@
-// What `shotlab bench` measures: the scene variants (S1-S7, scene files in presets/bench/ with PATH=VALUE
-// overrides) and the integrator settings swept over each of them.
+// What `shotlab bench` measures: the scene variants (S1-S8, scene files in presets/bench/ and presets/ with
+// PATH=VALUE overrides) and the integrator settings swept over each of them.
 #pragma once
 #include <string>
 #include <vector>
@@ -17,7 +17,7 @@ struct BenchCase {
   bool swap_exact = false;    // head-on, equal masses, undamped: the balls swap velocities exactly
   bool conservative = false;  // nothing dissipates: report the energy drift
   bool free_space = false;    // no external force: report the momentum error
-  bool until_rest = false;    // timed only (S7): run until every ball is at rest, no error measured
+  bool until_rest = false;    // timed only (S7, S8): run until every ball is at rest, no error measured
   bool coarse = false;        // expensive (S6): sweep whole decades only, as --quick does
 };
 
@@ -25,16 +25,23 @@ struct BenchCase {
 std::vector<BenchCase> bench_cases();
 
 // One integrator configuration: an adaptive method at a tolerance (abs_tol = rel_tol = tol), or a fixed-step
-// method at a step.
+// method at a step, on the engine's default fast path (rolling regime and sleeping, regimes.hpp) or on the plain
+// all-ODE path (model.rolling_regime = false, model.sleep_time = 0), which the references use.
 struct MethodSetting {
   Method method;
-  double value;  // tolerance (adaptive) or step in s (fixed)
+  double value;        // tolerance (adaptive) or step in s (fixed)
+  bool plain = false;  // the plain all-ODE path
 };
 IntegratorOptions integrator_options(const MethodSetting& setting);
+// The setting's line in plots and tables: "cash_karp54", or "cash_karp54 plain".
+std::string line_name(const MethodSetting& setting);
+// Runs the scene on the plain all-ODE path: every ball integrated with the full model, none asleep.
+void use_plain_path(Options& options);
 
 // The sweep: Euler and RK4 over fixed steps, each adaptive method over tolerances, loosest first (the runner stops
 // a method once it gets too slow, and tighter settings are only slower). `coarse` takes whole decades only and
-// fewer steps; S7 gets a short list of practical settings.
+// fewer steps; S7 and S8 get a short list of practical settings. Cash-Karp and Dormand-Prince also run on the plain
+// path, so that the fast path's gain (issue 5) shows next to them.
 std::vector<MethodSetting> sweep(bool coarse);
 std::vector<MethodSetting> sweep_timed_only(bool quick);
 
@@ -42,6 +49,8 @@ std::vector<MethodSetting> sweep_timed_only(bool quick);
 // agrees with it to kReferenceAgreement, at the first of these tolerances where such a pair exists. At 1e-13 the
 // error control of some methods cannot pass a damped contact onset, where the linear damping force jumps (they stop
 // with step_too_small), and Bulirsch-Stoer can disagree outright (docs/bench/README.md): hence the fallbacks.
+// References run on the plain path: the fast path's regime switches (at rest_speed) are a model difference of their
+// own, which the bench measures instead of building into the reference.
 inline constexpr Method kReferenceMethods[] = {Method::DormandPrince5, Method::CashKarp54, Method::BulirschStoer};
 inline constexpr double kReferenceTols[] = {1e-13, 1e-12};
 inline constexpr double kReferenceAgreement = 1e-9;

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "app/bench_report.hpp"
+#include "app/bench_scaling.hpp"
 #include "app/commands.hpp"
 #include "app/paths.hpp"
 #include "engine/io/json_reader.hpp"
@@ -20,9 +21,10 @@ namespace {
 
 struct BenchOptions {
   bool quick = false;
+  bool scaling = false;             // issue 5's scene scaling instead of the sweep (bench_scaling.hpp)
   std::string out_dir = "docs/bench";
-  std::vector<std::string> scenes;  // S1..S7, empty: all
-  int repeats = 5;
+  std::vector<std::string> scenes;  // S1..S8, empty: all
+  int repeats = 0;                  // runs per setting; 0: 5, or 3 with --quick
   double budget = 0;                // s per run; 0: 1 s, or 0.2 s with --quick
 };
 
@@ -51,7 +53,7 @@ bool measure(const std::string& root, const BenchCase& c, const MethodSetting& s
   row.repeats = static_cast<int>(walls.size());
   if (ref) row.err = errors(c, row.run, *ref);
   std::ostringstream line;
-  line << "  " << c.id << " " << method_name(s.method) << " " << setting_text(s) << ": ";
+  line << "  " << c.id << " " << line_name(s) << " " << setting_text(s) << ": ";
   if (ref) line << "error " << std::scientific << std::setprecision(2) << row.err.worst() << std::defaultfloat << ", ";
   line << row.run.stats.steps << " steps, " << row.wall * 1e3 << " ms";
   if (row.run.status != Status::Ok) line << " " << status_name(row.run.status);
@@ -71,18 +73,18 @@ std::unique_ptr<RunResult> reference(const std::string& root, const BenchCase& c
     std::unique_ptr<RunResult> a;
     MethodSetting a_setting{};
     for (Method m : kReferenceMethods) {
-      auto r = std::make_unique<RunResult>(run_case(root, c, {m, tol}));
+      auto r = std::make_unique<RunResult>(run_case(root, c, {m, tol, true}));
       info.wall += r->stats.wall_seconds;
       if (r->status != Status::Ok) continue;
       if (!a) {
         a = std::move(r);
-        a_setting = {m, tol};
+        a_setting = {m, tol, true};
         continue;
       }
       const Errors e = errors(plain, *r, *a);
       if (!best || e.worst() < info.agreement.worst()) {
         info.a = a_setting;
-        info.b = {m, tol};
+        info.b = {m, tol, true};
         info.agreement = e;
         best = std::make_unique<RunResult>(*a);
       }
@@ -103,12 +105,12 @@ void bench_case(const std::string& root, const BenchCase& c, const BenchOptions&
   std::cout << c.label << std::endl;
   std::unique_ptr<RunResult> ref;
   if (!c.until_rest && !(ref = reference(root, c, report))) return;
-  std::set<Method> over_budget;
-  std::map<Method, int> slow;  // consecutive settings over budget, per method
+  std::set<std::string> over_budget;  // lines (line_name) whose tighter settings are skipped
+  std::map<std::string, int> slow;    // consecutive settings over budget, per line
   // Rosenbrock 4 builds its Jacobian by finite differences, 9n + 1 right-hand sides a step: beyond the cradle's five
   // balls one run takes seconds, the sweep minutes.
   if (ref && ref->radius.size() > 5) {
-    over_budget.insert(Method::Rosenbrock4);
+    over_budget.insert(method_name(Method::Rosenbrock4));
     report.notes.push_back(c.id + ": rosenbrock4 not run (" + std::to_string(ref->radius.size()) +
                            " balls: a finite-difference Jacobian of " + std::to_string(9 * ref->radius.size() + 1) +
                            " right-hand sides a step, about 2 s a run)");
@@ -116,16 +118,17 @@ void bench_case(const std::string& root, const BenchCase& c, const BenchOptions&
   const std::vector<MethodSetting> settings = c.until_rest ? sweep_timed_only(o.quick) : sweep(o.quick || c.coarse);
   for (size_t k = 0; k < settings.size(); ++k) {
     const MethodSetting& s = settings[k];
-    if (over_budget.count(s.method)) continue;
-    // A whole game (S7) is long by nature: its few settings get ten times the budget.
+    const std::string line = line_name(s);
+    if (over_budget.count(line)) continue;
+    // A whole game (S7, S8) is long by nature: its few settings get ten times the budget.
     const double budget = c.until_rest ? 10 * o.budget : o.budget;
     // One slow setting may be a fluke of the error control (dopri5 at 1e-3 on the break rejects 9 steps in 10);
     // two in a row mean the tighter ones will only be slower.
-    slow[s.method] = measure(root, c, s, o.repeats, budget, ref.get(), report) ? 0 : slow[s.method] + 1;
-    const bool tighter_left = k + 1 < settings.size() && settings[k + 1].method == s.method;
-    if (slow[s.method] == 2 && tighter_left) {
-      over_budget.insert(s.method);
-      report.notes.push_back(c.id + ": " + method_name(s.method) + " stopped after " + setting_text(s) +
+    slow[line] = measure(root, c, s, o.repeats, budget, ref.get(), report) ? 0 : slow[line] + 1;
+    const bool tighter_left = k + 1 < settings.size() && line_name(settings[k + 1]) == line;
+    if (slow[line] == 2 && tighter_left) {
+      over_budget.insert(line);
+      report.notes.push_back(c.id + ": " + line + " stopped after " + setting_text(s) +
                              " (two settings in a row took over " + fmt_seconds(budget) +
                              " s a run or did not finish); tighter settings skipped");
     }
@@ -135,6 +138,7 @@ void bench_case(const std::string& root, const BenchCase& c, const BenchOptions&
 int run_bench(BenchOptions o, const std::string& command) {
   if (o.budget == 0) o.budget = o.quick ? 0.2 : 1.0;
   std::filesystem::create_directories(o.out_dir);
+  if (o.scaling) return run_scaling(o.out_dir, o.repeats) ? 0 : 1;
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<BenchCase> cases = bench_cases();
   BenchReport report;
@@ -158,11 +162,14 @@ int run_bench(BenchOptions o, const std::string& command) {
 
 void add_bench_command(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
-  CLI::App* cmd = app.add_subcommand("bench", "Speed against error of every integrator on the bench scenes S1-S7");
+  CLI::App* cmd = app.add_subcommand("bench", "Speed against error of every integrator on the bench scenes S1-S8");
   cmd->add_flag("--quick", o->quick, "Whole decades only, short budget: a CI smoke run of under a minute");
+  cmd->add_flag("--scaling", o->scaling, "Instead of the sweep: 16, 100 and 1000 resting balls and one moving ball, "
+                                        "fast and plain path (writes scaling.csv, scaling_scenes.svg)");
   cmd->add_option("--out-dir", o->out_dir, "Directory for results.csv, results.md and the SVG figures");
   cmd->add_option("--scenes", o->scenes, "Scenes to run, e.g. S1,S3 (default: all)")->delimiter(',');
-  cmd->add_option("--repeats", o->repeats, "Runs per setting; the wall time is their median")->check(CLI::Range(1, 100));
+  cmd->add_option("--repeats", o->repeats, "Runs per setting; the wall time is their median "
+                                           "(default 5, or 3 with --quick)")->check(CLI::Range(1, 100));
   cmd->add_option("--budget", o->budget, "Seconds one run may take before the method's tighter settings are skipped "
                                          "(default 1, or 0.2 with --quick)")->check(CLI::NonNegativeNumber);
   cmd->callback([o] {
@@ -173,6 +180,7 @@ void add_bench_command(CLI::App& app) {
       command << " --scenes ";
       for (size_t k = 0; k < o->scenes.size(); ++k) command << (k ? "," : "") << o->scenes[k];
     }
+    if (o->repeats == 0) o->repeats = o->quick ? 3 : 5;
     command << " --repeats " << o->repeats;
     if (const int code = run_bench(*o, command.str())) throw CLI::RuntimeError(code);
   });

@@ -42,6 +42,7 @@ void count_contact_steps(const std::vector<Event>& events, const std::vector<dou
 RunResult run_case(const std::string& data_root, const BenchCase& c, const MethodSetting& setting) {
   Scene scene = load_scene(data_root + "/" + c.file, c.overrides);
   scene.model.integrator = integrator_options(setting);
+  if (setting.plain) use_plain_path(scene.model.options);
   Prepared p = prepare(scene);
   RunResult r;
   for (const BallSpec& b : p.model.balls) r.radius.push_back(b.radius);

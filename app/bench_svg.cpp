@@ -25,6 +25,8 @@ std::string escape(const std::string& s) {
   return out;
 }
 
+std::string dash(bool dashed) { return dashed ? " stroke-dasharray='6,3'" : ""; }
+
 // Whole decades [lo, hi] that contain every value (at least one decade wide).
 std::pair<int, int> decade_range(double lo, double hi) {
   int a = static_cast<int>(std::floor(std::log10(lo) + 1e-9)), b = static_cast<int>(std::ceil(std::log10(hi) - 1e-9));
@@ -85,7 +87,7 @@ void draw_panel(std::ostream& o, const PlotPanel& p, const PlotSpec& spec, doubl
   }
   for (const PlotSeries& s : p.series) {
     if (s.points.empty()) continue;
-    o << "<polyline fill='none' stroke-width='1.8' stroke='" << s.color << "' points='";
+    o << "<polyline fill='none' stroke-width='1.8' stroke='" << s.color << "'" << dash(s.dashed) << " points='";
     for (const auto& [x, y] : s.points) o << a.px(x) << "," << a.py(y) << " ";
     o << "'/>\n";
     for (const auto& [x, y] : s.points)
@@ -105,17 +107,18 @@ bool write_loglog_grid(const std::string& path, const PlotSpec& spec, const std:
   o << "<text x='16' y='24' font-size='17' font-weight='bold'>" << escape(spec.title) << "</text>\n";
   o << "<text x='16' y='44' font-size='12' fill='#333'>" << escape(spec.subtitle) << "</text>\n";
   // One legend for all panels, in order of first appearance.
-  std::vector<std::pair<std::string, std::string>> legend;
+  std::vector<const PlotSeries*> legend;
   for (const PlotPanel& p : panels)
     for (const PlotSeries& s : p.series)
-      if (std::none_of(legend.begin(), legend.end(), [&](const auto& l) { return l.first == s.name; }))
-        legend.push_back({s.name, s.color});
+      if (std::none_of(legend.begin(), legend.end(), [&](const PlotSeries* l) { return l->name == s.name; }))
+        legend.push_back(&s);
   double lx = 16;
-  for (const auto& [name, color] : legend) {
-    o << "<line x1='" << lx << "' y1='66' x2='" << lx + 22 << "' y2='66' stroke='" << color
-      << "' stroke-width='3'/><circle cx='" << lx + 11 << "' cy='66' r='3' fill='" << color << "'/>\n";
-    o << "<text x='" << lx + 28 << "' y='70' font-size='13'>" << escape(name) << "</text>\n";
-    lx += 40 + 8.0 * name.size();
+  for (const PlotSeries* s : legend) {
+    o << "<line x1='" << lx << "' y1='66' x2='" << lx + 22 << "' y2='66' stroke='" << s->color
+      << "' stroke-width='3'" << dash(s->dashed) << "/><circle cx='" << lx + 11 << "' cy='66' r='3' fill='"
+      << s->color << "'/>\n";
+    o << "<text x='" << lx + 28 << "' y='70' font-size='13'>" << escape(s->name) << "</text>\n";
+    lx += 40 + 7.5 * s->name.size();
   }
   if (spec.diagonal)
     o << "<line x1='" << lx << "' y1='66' x2='" << lx + 22 << "' y2='66' stroke='#888' stroke-dasharray='5,4'/>"

@@ -11,6 +11,7 @@ struct PlotSeries {
   std::string name;   // legend entry; series of the same name share a colour across panels
   std::string color;  // any SVG colour
   std::vector<std::pair<double, double>> points;  // (x, y), both > 0; drawn in the given order
+  bool dashed = false;
 };
 
 struct PlotPanel {
