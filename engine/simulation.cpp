@@ -4,11 +4,12 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 namespace shotlab {
 
 const char* status_name(Status s) {
-  static constexpr const char* names[] = {"ok", "step_limit", "non_finite", "step_too_small"};
+  static constexpr const char* names[] = {"ok", "step_limit", "non_finite", "step_too_small", "unstable"};
   return names[static_cast<int>(s)];
 }
 
@@ -24,6 +25,9 @@ Simulation::Simulation(Model model, State initial)
   span_.t0 = span_.t1 = integ_.time;
   span_.x1 = integ_.x;
   restart();
+  const Energy e = energy();
+  energy_start_ = e.total();
+  energy_scale_ = e.kinetic + e.elastic + 1.0;
 }
 
 void Simulation::restart() {
@@ -47,6 +51,8 @@ bool Simulation::at_rest() const {
 }
 
 Status Simulation::advance(double dt) {
+  // The clock only runs forward: the dense output of the last step cannot go back past its start.
+  if (!(dt >= 0)) throw std::invalid_argument("Simulation::advance: dt must be >= 0 s, got " + std::to_string(dt));
   if (status_ != Status::Ok) return status_;
   const auto wall0 = std::chrono::steady_clock::now();
   const double target = state_.time + dt;
@@ -72,6 +78,17 @@ Status Simulation::advance(double dt) {
   state_.in_play = integ_.in_play;
   state_.asleep = integ_.asleep;
   state_.rolling_on = integ_.rolling_on;
+  if (status_ == Status::Ok) {
+    const double e = energy().total();
+    if (e - energy_start_ > energy_scale_) {
+      std::ostringstream msg;
+      msg << "unstable: the total energy grew from " << energy_start_ << " J to " << e << " J by t = " << state_.time
+          << " s, which a passive system cannot do: the step is too large for the contact stiffness (use an adaptive "
+             "method, a smaller fixed step or a softer material). "
+          << describe_balls(state_.x);
+      stop(Status::Unstable, msg.str());
+    }
+  }
   stats_.rhs_evaluations = dynamics_.evaluations();
   stats_.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return status_;

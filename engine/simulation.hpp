@@ -24,6 +24,9 @@ enum class Status {
   StepLimit,     // max_steps_per_call steps in one advance() without reaching the target: the clock stops short
   NonFinite,     // the state became NaN or infinite: the simulation stops at the last finite step
   StepTooSmall,  // the error control shrank the step below 1e-14 s
+  Unstable,      // the total energy grew by more than the initial kinetic and elastic energy plus 1 J: a passive
+                 // system cannot gain energy, so the integration has gone unstable (a fixed step too large for the
+                 // stiffness) while staying finite
 };
 const char* status_name(Status s);
 
@@ -41,7 +44,7 @@ class Simulation {
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
-  // Advance the clock by dt (s). Returns Ok, or why it stopped (then status() stays so and diagnostic() says
+  // Advance the clock by dt >= 0 s (a negative dt throws std::invalid_argument). Returns Ok, or why it stopped (then status() stays so and diagnostic() says
   // where and which balls; further calls do nothing).
   Status advance(double dt);
 
@@ -83,6 +86,7 @@ class Simulation {
   Status status_ = Status::Ok;
   std::string diagnostic_;
   std::function<void(const StepSpan&)> observer_;
+  double energy_start_, energy_scale_;  // J: total at t = 0, and what it may grow by before the run is Unstable
 };
 
 }  // namespace shotlab

@@ -173,10 +173,6 @@ void Lab::update(double real_dt) {
     if (shot->sim().status() != Status::Ok)
       error = std::string("the simulation stopped (") + status_name(shot->sim().status()) + "): " +
               shot->sim().diagnostic() + undo_hint;
-    else if (shot->unstable())
-      error = "stopped: the energy grew from " + std::to_string(shot->frames().front().energy) + " J to " +
-              std::to_string(shot->frames().back().energy) +
-              " J, so the integration is unstable (a fixed step too large for the stiffness?)." + undo_hint;
   }
 }
 

@@ -85,11 +85,9 @@ double Shot::advance(double target, double budget) {
 }
 
 bool Shot::finished() const {
-  return sim_->status() != Status::Ok || sim_->time() >= start_.duration || (sim_->time() > 0 && sim_->at_rest()) ||
-         unstable();
+  return sim_->status() != Status::Ok || sim_->time() >= start_.duration || (sim_->time() > 0 && sim_->at_rest());
 }
 
-bool Shot::unstable() const { return frames_.back().energy > 10 * std::abs(frames_.front().energy) + 1.0; }
 
 double Shot::realtime_factor() const {
   const double wall = sim_->stats().wall_seconds;

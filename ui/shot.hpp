@@ -32,11 +32,7 @@ class Shot {
   // simulated time reached (< target when the budget ran out or the simulation stopped).
   double advance(double target, double budget);
 
-  bool finished() const;  // at rest, past the scene's duration, stopped by the engine, or unstable
-  // The engine stops on NaN only; a step too large for the stiffness can blow up while staying finite (balls
-  // leaving at km/s). The balls are passive after the strike, so total energy growing past 10x (and 1 J) of the
-  // start means the integration is unstable.
-  bool unstable() const;
+  bool finished() const;  // at rest, past the scene's duration, or stopped by the engine (step limit, blow-up)
   const Simulation& sim() const { return *sim_; }
   const Scene& start() const { return start_; }
   const std::vector<Frame>& frames() const { return frames_; }

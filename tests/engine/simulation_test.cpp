@@ -82,6 +82,19 @@ TEST(Simulation, NonFiniteStateStopsWithTheBallsNamed) {
   for (double v : sim->state().x) ASSERT_TRUE(std::isfinite(v));
 }
 
+TEST(Simulation, EnergyGrowthStopsAsUnstable) {
+  // Euler with a 1 ms step on a cloth a thousand times too stiff: the bounce explodes without ever becoming NaN.
+  const nlohmann::json doc = {{"table", {{"type", "pool"}}},
+                              {"materials", {{"ball_cloth", {{"stiffness", 1e12}}}}},
+                              {"integrator", {{"method", "euler"}, {"fixed_step", 1e-3}}},
+                              {"balls", {{{"id", "cue"}, {"position", {0, kR + 0.01, 0}}}}}};
+  auto sim = simulate(scene(doc));
+  Status st = Status::Ok;
+  for (int k = 0; k < 120 && st == Status::Ok; ++k) st = sim->advance(1.0 / 60);
+  EXPECT_EQ(st, Status::Unstable);
+  EXPECT_NE(sim->diagnostic().find("energy grew"), std::string::npos) << sim->diagnostic();
+}
+
 TEST(Simulation, BallRolledIntoACornerPocketIsPocketed) {
   // Rolling from the table centre straight at the right-front corner.
   const Vec3 dir = glm::normalize(Vec3{1.27, 0, 0.635});

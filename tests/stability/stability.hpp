@@ -15,13 +15,14 @@ inline void print_cost(const std::string& name, const Simulation& sim) {
               name.c_str(), sim.time(), s.steps, s.rejected_steps, s.rhs_evaluations, s.wall_seconds);
 }
 
-// Advances to `duration` in frames of `frame` seconds (the last one shortened), calling check() after each frame;
-// fails the test if the simulation stops (step limit, non-finite state).
+// Advances from the current time to `until` (s) in frames of `frame` seconds (the last one shortened), calling
+// check() after each frame; fails the test if the simulation stops (step limit, non-finite state, unstable).
 template <class Check>
-void run_frames(Simulation& sim, double duration, double frame, Check check) {
-  const long frames = static_cast<long>(std::ceil(duration / frame - 1e-9));
+void run_frames(Simulation& sim, double until, double frame, Check check) {
+  const double start = sim.time();
+  const long frames = static_cast<long>(std::ceil((until - start) / frame - 1e-9));
   for (long k = 1; k <= frames; ++k) {
-    ASSERT_EQ(sim.advance(std::min(k * frame, duration) - sim.time()), Status::Ok) << sim.diagnostic();
+    ASSERT_EQ(sim.advance(std::min(start + k * frame, until) - sim.time()), Status::Ok) << sim.diagnostic();
     check();
   }
 }
