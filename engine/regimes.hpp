@@ -32,6 +32,7 @@ class Regimes {
 
  private:
   bool at_rest(const State& state, const StateVector& x, int i) const;
+  bool slip_below(const StateVector& x, int i, const Vec3& n, double limit) const;  // tangential slip at the bed
   bool update_sleep(State& state, StateVector& x, double dt);
   bool update_rolling(State& state, StateVector& x);
   // The bed's unit normal and the centre height of a ball resting on it, when ball i touches exactly the flat bed
