@@ -152,7 +152,9 @@ bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
     still_for_[i] = resting[i] && !state.sleeping(i) ? still_for_[i] + dt : 0.0;
   }
   bool changed = false;
-  // Wake: flood from every awake ball that is moving through the touching graph; every sleeper reached wakes.
+  // Wake: flood from every awake ball that is moving through the touching graph; every sleeper reached wakes. A
+  // moving ball wakes a sleeper already within contact_margin, so that the sleeper is awake before the contact
+  // force builds up (steps end at contact onsets); sleepers wake each other only when frozen together.
   std::vector<int> stack;
   for (int i = 0; i < n; ++i)
     if (state.in_play[i] && !resting[i]) stack.push_back(i);
@@ -161,7 +163,7 @@ bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
     const int i = stack.back();
     stack.pop_back();
     for (int j : touching_[i])
-      if (state.sleeping(j) && !seen[j] && frozen_touch(i, j)) {
+      if (state.sleeping(j) && !seen[j] && (!resting[i] || frozen_touch(i, j))) {
         seen[j] = 1;
         state.asleep[j] = 0;
         still_for_[j] = 0;

@@ -25,6 +25,10 @@ Simulation::Simulation(Model model, State initial)
   span_.t0 = span_.t1 = integ_.time;
   span_.x1 = integ_.x;
   restart();
+  // Balls that start at rest (in their static sink on the bed, nothing moving against them) sleep from the start
+  // instead of after sleep_time of integrating a contact that cannot move.
+  if (regimes_.update(integ_, span_.x1, model_.options.sleep_time)) restart();
+  state_ = integ_;
   const Energy e = energy();
   energy_start_ = e.total();
   energy_scale_ = e.kinetic + e.elastic + 1.0;

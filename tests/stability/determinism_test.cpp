@@ -59,8 +59,8 @@ TEST(Determinism, IndependentOfFrameRate) {
 // far above the tolerance where contacts begin (the force's derivative has a kink there, which fools every error
 // estimate; MODEL.md): up to 1.3e-5 R for rosenbrock4 on S4. Required: 1e-4 R (3 um) and 1e-4 of the speed.
 // Bulirsch-Stoer's extrapolation assumes a smooth right-hand side; across the many friction-switch kinks of a rack
-// in contact its achieved error is 100x its tolerance (1.3e-4 R at 1e-9 on S6, 9e-7 R at 1e-11; docs/bench), so on
-// the break it is held to the same 1e-4 at a tolerance of 1e-11.
+// in contact its achieved error is erratic (1e-4 R and more at tolerances 1e-9 to 1e-11 on S6, 2e-7 R at 1e-12;
+// docs/bench), so on the break it is held to the same 1e-4 at a tolerance of 1e-12.
 void expect_integrators_agree(const std::string& file, double speed,
                               const std::vector<std::pair<std::string, std::string>>& methods) {
   const auto with = [&](const std::string& m, const std::string& tol) {
@@ -82,7 +82,7 @@ TEST(Determinism, IntegratorsAgreeOnACushionRebound) {
 }
 
 TEST(Determinism, IntegratorsAgreeOnTheBreak) {
-  expect_integrators_agree("s6_break.json", 10.0, {{"cash_karp54", "1e-9"}, {"bulirsch_stoer", "1e-11"}});
+  expect_integrators_agree("s6_break.json", 10.0, {{"cash_karp54", "1e-9"}, {"bulirsch_stoer", "1e-12"}});
 }
 
 }  // namespace
