@@ -15,16 +15,6 @@ ContactCache::ContactCache(const Model& model) : ball_ball(&model.material(kBall
 
 namespace {
 
-// In-play balls sorted by the left end of their x extent, for sweep-and-prune.
-void sort_by_x(const Model& model, const State& state, const double* x, std::vector<int>& order) {
-  order.clear();
-  for (int i = 0; i < state.ball_count(); ++i)
-    if (state.in_play[i]) order.push_back(i);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return x[9 * a] - model.balls[a].radius < x[9 * b] - model.balls[b].radius;
-  });
-}
-
 // Time for a gap (m) to close at initial closing speed s (m/s) and closing acceleration at most a (m/s^2):
 // the positive root of gap = s t + a t^2 / 2, written to stay accurate when a or s is small.
 double closing_time(double gap, double s, double a) {
@@ -34,23 +24,31 @@ double closing_time(double gap, double s, double a) {
 
 }  // namespace
 
-void overlapping_pairs(const Model& model, const State& state, const double* x, ContactCache& cache, double slack) {
-  cache.pairs.clear();
-  sort_by_x(model, state, x, cache.order);
-  const auto& order = cache.order;
-  for (size_t a = 0; a < order.size(); ++a) {
-    const int i = order[a];
-    const Vec3 pi = position(x, i);
-    const double ri = model.balls[i].radius;
-    for (size_t b = a + 1; b < order.size(); ++b) {
-      const int j = order[b];
-      const double rj = model.balls[j].radius;
-      if (x[9 * j] - rj >= pi.x + ri + slack) break;  // sorted: no later ball reaches i along x
-      const Vec3 d = pi - position(x, j);
-      const double reach = ri + rj + slack;
-      if (glm::dot(d, d) < reach * reach) cache.pairs.emplace_back(i, j);
-    }
+void refresh_sleepers(const Model& model, const State& state, const double* x, ContactCache& cache) {
+  std::vector<uint8_t> key(state.in_play);
+  key.insert(key.end(), state.asleep.begin(), state.asleep.end());
+  if (key == cache.sleep_key && !cache.sleep_key.empty()) return;
+  cache.sleep_key = std::move(key);
+  cache.sleepers.clear();
+  cache.max_radius = 0;
+  for (int i = 0; i < state.ball_count(); ++i) {
+    cache.max_radius = std::max(cache.max_radius, model.balls[i].radius);
+    if (state.in_play[i] && state.sleeping(i)) cache.sleepers.push_back(i);
   }
+  auto left = [&](int i) { return x[9 * i] - model.balls[i].radius; };
+  std::sort(cache.sleepers.begin(), cache.sleepers.end(), [&](int a, int b) { return left(a) < left(b); });
+  cache.sleeper_left.clear();
+  for (int i : cache.sleepers) cache.sleeper_left.push_back(left(i));
+}
+
+void overlapping_pairs(const Model& model, const State& state, const double* x, ContactCache& cache, double slack,
+                       bool sleeping_pairs) {
+  cache.pairs.clear();
+  sweep_pairs(model, state, x, cache, slack, sleeping_pairs, [&](int i, int j) {
+    const Vec3 d = position(x, i) - position(x, j);
+    const double reach = model.balls[i].radius + model.balls[j].radius + slack;
+    if (glm::dot(d, d) < reach * reach) cache.pairs.emplace_back(i, j);
+  });
 }
 
 namespace {
@@ -85,7 +83,8 @@ double straight_line_contact_time(const Vec3& d0, const Vec3& v, double reach) {
 
 }  // namespace
 
-double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon) {
+double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon,
+                                ContactCache& cache) {
   // Relative acceleration bound outside contacts: gravity plus cloth friction, generously twice |g|. A pair pushed
   // harder by third balls may start touching inside a step; the simulation then cuts the step at the onset.
   const double a = 2.0 * glm::length(model.options.gravity);
@@ -108,27 +107,17 @@ double time_to_possible_contact(const Model& model, const State& state, const do
       if (state.rolling(i)) best = std::min(best, closing_time(hole_gap(c.shape, p) + margin, s, a));
     }
   }
-  // Ball pairs: sweep along x, and skip pairs whose x gap is larger than anything closable within the horizon.
+  // Ball pairs whose x gap is within anything closable within the horizon (a sleeper does not move: only the awake
+  // one closes in).
   const double h = std::min(best, horizon);
   if (h <= 0) return best;
-  const double closable = 2.0 * vmax * h + a * h * h;
-  std::vector<int> order;
-  sort_by_x(model, state, x, order);
-  for (size_t ia = 0; ia < order.size(); ++ia) {
-    const int i = order[ia];
-    const Vec3 pi = position(x, i), vi = velocity(x, i);
-    const double ri = model.balls[i].radius;
-    for (size_t ib = ia + 1; ib < order.size(); ++ib) {
-      const int j = order[ib];
-      const double rj = model.balls[j].radius;
-      if (x[9 * j] - rj - (pi.x + ri) > closable) break;
-      if (state.sleeping(i) && state.sleeping(j)) continue;
-      const Vec3 d0 = pi - position(x, j);
-      if (glm::length(d0) <= ri + rj) continue;  // already touching: the contact force is resolved by error control
-      // Relative motion: balls moving together, as a broken rack does, do not hold each other's steps back.
-      best = std::min(best, straight_line_contact_time(d0, vi - velocity(x, j), ri + rj - margin));
-    }
-  }
+  sweep_pairs(model, state, x, cache, 2.0 * vmax * h + a * h * h, false, [&](int i, int j) {
+    const Vec3 d0 = position(x, i) - position(x, j);
+    const double ri = model.balls[i].radius, rj = model.balls[j].radius;
+    if (glm::length(d0) <= ri + rj) return;  // already touching: the contact force is resolved by error control
+    // Relative motion: balls moving together, as a broken rack does, do not hold each other's steps back.
+    best = std::min(best, straight_line_contact_time(d0, velocity(x, i) - velocity(x, j), ri + rj - margin));
+  });
   return best;
 }
 

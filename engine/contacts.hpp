@@ -28,13 +28,29 @@ struct ContactCache {
   std::vector<Bounds> collider_bounds;  // broad phase against static colliders
   const ContactMaterial* ball_ball;
   std::vector<std::pair<int, int>> pairs;
-  std::vector<int> order;
+  // Broad phase: awake balls sorted by the left end of their x extent on every call; sleepers sorted once per change
+  // of who sleeps (they do not move), so that a thousand resting balls cost a binary search, not a sweep.
+  std::vector<int> awake;
+  std::vector<int> sleepers;
+  std::vector<double> sleeper_left;  // x - R of each sleeper, ascending
+  std::vector<uint8_t> sleep_key;    // in_play and asleep flags the sleeper list was built for
+  double max_radius = 0;
 };
 
-// Ball pairs whose spheres overlap (or come closer than `slack` m), found by sweep-and-prune along x:
-// O(n log n + pairs), not O(n^2).
+// Calls fn(i, j) for every pair of balls in play, at least one of them awake, whose x extents come within `reach`
+// (m) of each other; with `sleeping_pairs`, also pairs of two sleepers. The candidates of sweep-and-prune along x:
+// O(awake log awake + candidates), whatever the number of sleepers.
+template <class Fn>
+void sweep_pairs(const Model& model, const State& state, const double* x, ContactCache& cache, double reach,
+                 bool sleeping_pairs, Fn&& fn);
+
+// The sleepers whose x extents come within `reach` of ball i's (i itself excluded).
+template <class Fn>
+void sleepers_near(const Model& model, const double* x, const ContactCache& cache, int i, double reach, Fn&& fn);
+
+// Ball pairs (at least one awake, or any with `sleeping_pairs`) whose spheres overlap or come closer than `slack` m.
 void overlapping_pairs(const Model& model, const State& state, const double* x, ContactCache& cache,
-                       double slack = 0.0);
+                       double slack = 0.0, bool sleeping_pairs = false);
 
 // Calls fn(const Contact&) for every touching ball-collider and ball-ball pair of balls in play. `x` is the state
 // vector (9 numbers a ball), which may differ from state.x (the integrator's trial states). Contacts that no
@@ -48,7 +64,8 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
 // velocities and an acceleration bound; +inf when nothing can within `horizon` (the step the integrator wants).
 // Adaptive steps are capped by it so that no contact, however glancing, falls between two steps (MODEL.md,
 // "Numerical facts"). Ball pairs use their relative speed, so a cluster moving together is not held back.
-double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon);
+double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon,
+                                ContactCache& cache);
 
 }  // namespace shotlab
 

@@ -1,7 +1,40 @@
-// Template body of for_each_contact (contacts.hpp); not for direct inclusion.
+// Template bodies of contacts.hpp; not for direct inclusion.
 #pragma once
+#include <algorithm>
 
 namespace shotlab {
+
+void refresh_sleepers(const Model& model, const State& state, const double* x, ContactCache& cache);  // contacts.cpp
+
+template <class Fn>
+void sleepers_near(const Model& model, const double* x, const ContactCache& cache, int i, double reach, Fn&& fn) {
+  const double left = x[9 * i] - model.balls[i].radius - reach, right = x[9 * i] + model.balls[i].radius + reach;
+  // Sleepers starting left of `right`, walked back while they may still reach `left` (extent at most 2 max_radius).
+  auto k = std::lower_bound(cache.sleeper_left.begin(), cache.sleeper_left.end(), right) - cache.sleeper_left.begin();
+  for (--k; k >= 0 && cache.sleeper_left[k] + 2 * cache.max_radius > left; --k)
+    if (cache.sleepers[k] != i) fn(cache.sleepers[k]);
+}
+
+template <class Fn>
+void sweep_pairs(const Model& model, const State& state, const double* x, ContactCache& cache, double reach,
+                 bool sleeping_pairs, Fn&& fn) {
+  refresh_sleepers(model, state, x, cache);
+  auto left = [&](int i) { return x[9 * i] - model.balls[i].radius; };
+  auto sweep = [&](const std::vector<int>& order) {
+    for (size_t a = 0; a < order.size(); ++a) {
+      const double right = left(order[a]) + 2 * model.balls[order[a]].radius + reach;
+      for (size_t b = a + 1; b < order.size() && left(order[b]) < right; ++b) fn(order[a], order[b]);
+    }
+  };
+  cache.awake.clear();
+  for (int i = 0; i < state.ball_count(); ++i)
+    if (state.active(i)) cache.awake.push_back(i);
+  std::sort(cache.awake.begin(), cache.awake.end(), [&](int a, int b) { return left(a) < left(b); });
+  sweep(cache.awake);
+  if (!cache.sleepers.empty())
+    for (int i : cache.awake) sleepers_near(model, x, cache, i, reach, [&](int j) { fn(i, j); });
+  if (sleeping_pairs) sweep(cache.sleepers);
+}
 
 template <class Fn>
 void for_each_contact(const Model& model, const State& state, const double* x, ContactCache& cache, Fn&& fn,
@@ -24,7 +57,7 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
     }
   }
   // Ball against ball: n points from j to i; A's contact point is at -R_i n, B's at +R_j n.
-  overlapping_pairs(model, state, x, cache);
+  overlapping_pairs(model, state, x, cache, 0.0, with_inactive);
   const ContactMaterial& bb = *cache.ball_ball;
   for (const auto& [i, j] : cache.pairs) {
     if (state.sleeping(i) && state.sleeping(j) && !with_inactive) continue;

@@ -73,8 +73,10 @@ Motion classify(const Model& model, const State& state, const double* x, int i) 
 void EventDetector::collect(const State& state, const double* x, std::vector<Key>& keys) {
   keys.clear();
   const int n = state.ball_count();
+  // Sleepers' contacts cannot change while they sleep; leaving them out of the snapshot and of every later collect
+  // is consistent, because the snapshot is retaken whenever a ball falls asleep or wakes.
   for (int i = 0; i < n; ++i) {
-    if (!state.in_play[i]) continue;
+    if (!state.active(i)) continue;
     for (int c = 0; c < static_cast<int>(model_.colliders.size()); ++c)
       if (depth({i, -1 - c}, x) > kTouch) keys.emplace_back(i, -1 - c);
   }
@@ -133,7 +135,7 @@ void EventDetector::scan(const StepSpan& span, const State& state, std::vector<E
 
   // Balls leaving play: the centre falls a radius below the bed (y = 0), through a pocket or off the table.
   for (int i = 0; i < state.ball_count() && model_.balls_leave_below_bed; ++i) {
-    if (!state.in_play[i]) continue;
+    if (!state.active(i)) continue;
     const double r = model_.balls[i].radius;
     if (span.x1[9 * i + 1] >= -r) continue;
     const double t = bisect(span.t0, span.t1, [&](double s) { return at(s)[9 * i + 1] < -r; });
@@ -162,9 +164,9 @@ void EventDetector::scan(const StepSpan& span, const State& state, std::vector<E
                       {model_.balls[k.first].id, body_name(k.second)}});
   contacts_ = std::move(now);
 
-  // Motion state changes.
+  // Motion state changes (a sleeper stays stationary).
   for (int i = 0; i < state.ball_count(); ++i) {
-    if (!state.in_play[i]) continue;
+    if (!state.active(i)) continue;
     const Motion m1 = classify(model_, state, span.x1.data(), i);
     if (m1 == motion_[i]) continue;
     const Motion m0 = motion_[i];

@@ -162,14 +162,20 @@ bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
   while (!stack.empty()) {
     const int i = stack.back();
     stack.pop_back();
+    auto wake = [&](int j) {
+      if (!state.sleeping(j) || seen[j]) return;
+      seen[j] = 1;
+      state.asleep[j] = 0;
+      still_for_[j] = 0;
+      changed = true;
+      stack.push_back(j);
+    };
     for (int j : touching_[i])
-      if (state.sleeping(j) && !seen[j] && (!resting[i] || frozen_touch(i, j))) {
-        seen[j] = 1;
-        state.asleep[j] = 0;
-        still_for_[j] = 0;
-        changed = true;
-        stack.push_back(j);
-      }
+      if (!resting[i]) wake(j);
+    // touching_ leaves out sleeper pairs (the broad phase skips them); look those up directly.
+    sleepers_near(model_, x.data(), cache_, i, kTouchSlack, [&](int j) {
+      if (frozen_touch(i, j)) wake(j);
+    });
   }
   // Sleep: a group of touching awake balls falls asleep together once every one has rested for sleep_time.
   std::fill(seen.begin(), seen.end(), 0);

@@ -21,6 +21,7 @@ Simulation::Simulation(Model model, State initial)
       stepper_(make_stepper(model_.integrator)),
       detector_(model_),
       regimes_(model_),
+      cap_cache_(model_),
       dt_next_(is_adaptive(model_.integrator.method) ? model_.integrator.initial_step : model_.integrator.fixed_step) {
   span_.t0 = span_.t1 = integ_.time;
   span_.x1 = integ_.x;
@@ -102,7 +103,7 @@ bool Simulation::step() {
   const bool adaptive = is_adaptive(model_.integrator.method);
   double dt = adaptive ? dt_next_ : model_.integrator.fixed_step;
   const double wanted = dt;
-  if (adaptive) dt = std::min(dt, time_to_possible_contact(model_, integ_, span_.x1.data(), dt));
+  if (adaptive) dt = std::min(dt, time_to_possible_contact(model_, integ_, span_.x1.data(), dt, cap_cache_));
   const bool capped = dt < wanted;
   StateVector x, f;
   double t, tried;

@@ -79,6 +79,7 @@ class Simulation {
   std::unique_ptr<Stepper> stepper_;
   EventDetector detector_;
   Regimes regimes_;
+  ContactCache cap_cache_;  // broad phase of the step cap
   StepSpan span_;
   double dt_next_;
   std::vector<Event> events_;
