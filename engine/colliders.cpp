@@ -101,10 +101,4 @@ double hole_gap(const Shape& shape, const Vec3& p) {
   }
   return gap;
 }
-
-const char* shape_name(const Shape& shape) {
-  static constexpr const char* names[] = {"plane", "bounded_plane", "sphere", "capsule"};
-  return names[shape.index()];
-}
-
 }  // namespace shotlab

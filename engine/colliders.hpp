@@ -79,6 +79,5 @@ Bounds bounds(const Shape& shape);
 // +inf for shapes without holes, 0 when over a hole.
 double hole_gap(const Shape& shape, const Vec3& p);
 
-const char* shape_name(const Shape& shape);
 
 }  // namespace shotlab

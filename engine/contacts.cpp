@@ -57,6 +57,7 @@ namespace {
 // moving along a cushion approach it in ever smaller steps (each step closing only the normal share of the gap);
 // planes close at the normal speed exactly, a capsule's side at the speed across its axis.
 double collider_closing_speed(const Shape& shape, const Vec3& p, const Vec3& v) {
+  if (hole_gap(shape, p) == 0) return glm::length(v);  // over a pocket the gap is to the rim, closing any way
   if (const auto* s = std::get_if<Plane>(&shape)) return std::max(0.0, -glm::dot(v, s->normal));
   if (const auto* s = std::get_if<BoundedPlane>(&shape))
     return std::max(0.0, -glm::dot(v, glm::normalize(glm::cross(s->u, s->v))));
@@ -111,12 +112,18 @@ double time_to_possible_contact(const Model& model, const State& state, const do
   // one closes in).
   const double h = std::min(best, horizon);
   if (h <= 0) return best;
+  // Straight relative motion, its target widened by how far accelerations can bend the paths within the horizon (a
+  // sliding ball curves at mu g). A pair already near that widened reach is bounded by its relative speed instead,
+  // which never asks for less than contact_margin / speed: a step cannot stall at the widened boundary.
+  const double bend = 0.5 * a * h * h;
   sweep_pairs(model, state, x, cache, 2.0 * vmax * h + a * h * h, false, [&](int i, int j) {
-    const Vec3 d0 = position(x, i) - position(x, j);
-    const double ri = model.balls[i].radius, rj = model.balls[j].radius;
-    if (glm::length(d0) <= ri + rj) return;  // already touching: the contact force is resolved by error control
+    const Vec3 d0 = position(x, i) - position(x, j), v = velocity(x, i) - velocity(x, j);
+    const double ri = model.balls[i].radius, rj = model.balls[j].radius, dist = glm::length(d0);
+    if (dist <= ri + rj) return;  // already touching: the contact force is resolved by error control
     // Relative motion: balls moving together, as a broken rack does, do not hold each other's steps back.
-    best = std::min(best, straight_line_contact_time(d0, velocity(x, i) - velocity(x, j), ri + rj - margin));
+    const double reach = ri + rj - margin;
+    best = std::min(best, dist < reach + 2 * bend ? closing_time(dist - reach, glm::length(v), a)
+                                                  : straight_line_contact_time(d0, v, reach + bend));
   });
   return best;
 }

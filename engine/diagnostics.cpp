@@ -8,7 +8,7 @@ Energy energy(const Model& model, const State& state) {
     if (!state.in_play[i]) continue;
     const BallSpec& b = model.balls[i];
     const Vec3 v = velocity(state.x, i), w = spin(state.x, i);
-    e.kinetic += 0.5 * b.mass * glm::dot(v, v) + 0.5 * (0.4 * b.mass * b.radius * b.radius) * glm::dot(w, w);
+    e.kinetic += 0.5 * b.mass * glm::dot(v, v) + 0.5 * b.inertia() * glm::dot(w, w);
     e.potential -= b.mass * glm::dot(model.options.gravity, position(state.x, i));
   }
   for (const Contact& c : contacts(model, state)) {

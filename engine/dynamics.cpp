@@ -30,14 +30,13 @@ void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/)
   for (int i = 0; i < n; ++i) {
     if (!state_.active(i)) continue;  // pocketed or asleep: frozen, zero derivative
     const BallSpec& b = model_.balls[i];
-    const double inertia = 0.4 * b.mass * b.radius * b.radius;  // solid sphere, 2/5 m R^2
     if (state_.rolling(i)) {
       rolling_derivative(model_, state_, x.data(), i, &dxdt[9 * i]);
       continue;
     }
     set_position(dxdt, i, velocity(x, i));
     set_velocity(dxdt, i, force_[i] / b.mass);
-    set_spin(dxdt, i, torque_[i] / inertia);
+    set_spin(dxdt, i, torque_[i] / b.inertia());
   }
   apply_rods(x, dxdt);
 }

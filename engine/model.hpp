@@ -15,6 +15,7 @@ struct BallSpec {
   std::string id;
   double mass;    // kg
   double radius;  // m
+  double inertia() const { return 0.4 * mass * radius * radius; }  // solid sphere, 2/5 m R^2, kg m^2
 };
 
 // Rod actor (thesis, Newton's cradle): keeps a ball's centre at `length` from a fixed anchor, by a force through

@@ -125,6 +125,8 @@ bool Simulation::step() {
       if (onset <= span_.t1 + 0.01 * tried || onset >= t) break;
       dt = onset - span_.t1;
       ++retries;
+      ++stats_.redone_steps;
+      continue;
     } else if (!std::isfinite(dt) || dt < 1e-14) {
       std::ostringstream msg;
       msg << "step too small: the error control shrank the step to " << dt << " s at t = " << span_.t1 << " s. "

@@ -33,6 +33,7 @@ const char* status_name(Status s);
 struct Stats {
   long steps = 0;           // accepted steps
   long rejected_steps = 0;  // attempts the error control threw away
+  long redone_steps = 0;    // accepted attempts redone to end where a contact begins or ends
   long rhs_evaluations = 0; // calls of the right-hand side (Jacobian columns included)
   double wall_seconds = 0;  // spent inside advance()
   double last_step = 0;     // s, the most recent accepted step

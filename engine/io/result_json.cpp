@@ -30,6 +30,7 @@ nlohmann::json result_to_json(const Simulation& sim, const std::vector<Event>& e
   out["stats"] = {{"integrator", method_name(sim.model().integrator.method)},
                   {"steps", st.steps},
                   {"rejected_steps", st.rejected_steps},
+                  {"redone_steps", st.redone_steps},
                   {"rhs_evaluations", st.rhs_evaluations},
                   {"wall_seconds", st.wall_seconds}};
   return out;

@@ -190,7 +190,7 @@ void read_cue(const JsonNode& n, CueStrike& c) {
   });
   n.optional("side", [&](const JsonNode& v) { c.side = v.number(); });
   n.optional("height", [&](const JsonNode& v) { c.height = v.number(); });
-  if (c.side * c.side + c.height * c.height >= 1) n["side"].fail("tip offset (side, height) must lie inside the ball");
+  if (c.side * c.side + c.height * c.height >= 1) n.fail("side, height: the tip offset must lie inside the ball");
   n.optional("cue_mass", [&](const JsonNode& v) { c.cue_mass = v.positive(); });
   n.optional("tip_restitution", [&](const JsonNode& v) {
     c.tip_restitution = v.non_negative();
@@ -266,7 +266,7 @@ Scene parse_scene(const json& doc, const std::string& source) {
   n.optional("model", [&](const JsonNode& m) {
     m.optional("friction_sharpness", [&](const JsonNode& v) { s.model.options.friction_sharpness = v.positive(); });
     m.optional("rest_speed", [&](const JsonNode& v) { s.model.options.rest_speed = v.positive(); });
-    m.optional("contact_margin", [&](const JsonNode& v) { s.model.options.contact_margin = v.non_negative(); });
+    m.optional("contact_margin", [&](const JsonNode& v) { s.model.options.contact_margin = v.positive(); });
     m.optional("sleep_time", [&](const JsonNode& v) { s.model.options.sleep_time = v.non_negative(); });
     m.optional("rolling_regime", [&](const JsonNode& v) { s.model.options.rolling_regime = v.boolean(); });
     m.finish();
