@@ -31,7 +31,7 @@ void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/)
     if (!state_.active(i)) continue;  // pocketed or asleep: frozen, zero derivative
     const BallSpec& b = model_.balls[i];
     if (state_.rolling(i)) {
-      rolling_derivative(model_, state_, x.data(), i, &dxdt[9 * i]);
+      rolling_derivative(model_, state_, cache_, x.data(), i, &dxdt[9 * i]);
       continue;
     }
     set_position(dxdt, i, velocity(x, i));

@@ -30,9 +30,10 @@ bool flat_bed(const Collider& c, const Vec3& gravity, Vec3& normal, Vec3& point)
 //   dw/dt = (1/R) n x a  +  n (-(5 mu_sp g / (2 R)) fricstep(k R w.n))      (eq. 3.7; spin torque mu_sp R m g over
 //                                                                            I = 2/5 m R^2, eq. 3.8)
 // The slip v + R n x w stays exactly zero: d/dt of it is a + R n x ((1/R) n x a) = a - a = 0 for a along the bed.
-void rolling_derivative(const Model& model, const State& state, const double* x, int i, double* dxdt) {
+void rolling_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+                        double* dxdt) {
   const Collider& bed = model.colliders[state.rolling_on[i]];
-  const ContactMaterial& m = model.material(bed.material);
+  const ContactMaterial& m = *cache.collider_material[state.rolling_on[i]];
   Vec3 n, point;
   flat_bed(bed, model.options.gravity, n, point);
   const double g = glm::length(model.options.gravity), r = model.balls[i].radius, k = model.options.friction_sharpness;

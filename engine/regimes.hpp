@@ -46,6 +46,8 @@ class Regimes {
 };
 
 // Right-hand side of a ball in the rolling regime (the closed-form dynamics above), written into dxdt.
-void rolling_derivative(const Model& model, const State& state, const double* x, int i, double* dxdt);
+// `cache` supplies the bed's material without a lookup by name (this runs in every right-hand side).
+void rolling_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+                        double* dxdt);
 
 }  // namespace shotlab
