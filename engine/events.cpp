@@ -14,8 +14,6 @@ constexpr double kSupportGap = 1e-5;
 // noise at the tolerance (1e-17 to 1e-11 m) would otherwise report contacts beginning and ending that carry no
 // force; a real impact passes 1 nm within 1e-10 s at 10 m/s, 1e-6 s at 1 mm/s.
 constexpr double kTouch = 1e-9;
-// Pairs closer than this (m) count as already touching: frozen balls, whose depth round-off moves around zero.
-constexpr double kFrozenGap = kTouch;
 // Bisection stops when the bracket is this short (s).
 constexpr double kTimeResolution = 1e-10;
 
@@ -92,7 +90,7 @@ double EventDetector::depth(const Key& key, const double* x) const {
   const auto [i, other] = key;
   const double ri = model_.balls[i].radius;
   if (other >= 0) return ri + model_.balls[other].radius - glm::length(position(x, i) - position(x, other));
-  const auto pen = penetration(model_.colliders[-1 - other].shape, position(x, i), ri, kFrozenGap);
+  const auto pen = penetration(model_.colliders[-1 - other].shape, position(x, i), ri, kTouch);
   return pen ? pen->depth : -1.0;
 }
 
@@ -106,15 +104,20 @@ void EventDetector::reset(const State& state) {
   for (int i = 0; i < state.ball_count(); ++i) motion_[i] = classify(model_, state, state.x.data(), i);
 }
 
-double EventDetector::first_contact_change(const StepSpan& span, const State& state) {
-  std::vector<Key> now, begun, ended;
-  collect(state, span.x1.data(), now);
+void EventDetector::changes(const State& state, const double* x, std::vector<Key>& now, std::vector<Key>& begun,
+                            std::vector<Key>& ended) {
+  collect(state, x, now);
   std::set_difference(now.begin(), now.end(), contacts_.begin(), contacts_.end(), std::back_inserter(begun));
   std::set_difference(contacts_.begin(), contacts_.end(), now.begin(), now.end(), std::back_inserter(ended));
+}
+
+double EventDetector::first_contact_change(const StepSpan& span, const State& state) {
+  std::vector<Key> now, begun, ended;
+  changes(state, span.x1.data(), now, begun, ended);
   double first = std::numeric_limits<double>::infinity();
   // Frozen balls touch at zero depth, and round-off flips them in and out of contact: no kink worth a restart.
   auto locate = [&](const Key& k, const StateVector& apart, bool begins) {
-    if (depth(k, apart.data()) > -kFrozenGap) return;
+    if (depth(k, apart.data()) > -kTouch) return;
     first = std::min(first, bisect(span.t0, span.t1, [&](double s) {
                        span.interpolate(s, scratch_);
                        return (depth(k, scratch_.data()) > kTouch) == begins;
@@ -151,11 +154,8 @@ void EventDetector::scan(const StepSpan& span, const State& state, std::vector<E
   }
 
   // Contacts that began or ended: set difference of sorted key lists, each change located on its own depth.
-  std::vector<Key> now;
-  collect(state, span.x1.data(), now);
-  std::vector<Key> begun, ended;
-  std::set_difference(now.begin(), now.end(), contacts_.begin(), contacts_.end(), std::back_inserter(begun));
-  std::set_difference(contacts_.begin(), contacts_.end(), now.begin(), now.end(), std::back_inserter(ended));
+  std::vector<Key> now, begun, ended;
+  changes(state, span.x1.data(), now, begun, ended);
   for (const Key& k : begun)
     events.push_back({bisect(span.t0, span.t1, [&](double s) { return depth(k, at(s)) > kTouch; }), "contact_begin",
                       {model_.balls[k.first].id, body_name(k.second)}});

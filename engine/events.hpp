@@ -47,6 +47,9 @@ class EventDetector {
  private:
   using Key = std::pair<int, int>;  // (ball, other): other >= 0 a ball, other < 0 the collider -1 - other
   void collect(const State& state, const double* x, std::vector<Key>& keys);
+  // The contacts at x, and which of them began or ended since the snapshot.
+  void changes(const State& state, const double* x, std::vector<Key>& now, std::vector<Key>& begun,
+               std::vector<Key>& ended);
   double depth(const Key& key, const double* x) const;
   std::string body_name(int other) const;
 

@@ -61,7 +61,7 @@ bool Regimes::at_rest(const State& state, const StateVector& x, int i) const {
          classify(model_, state, x.data(), i) == Motion::Stationary;
 }
 
-bool Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const {
+int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const {
   const double margin = model_.options.contact_margin, r = model_.balls[i].radius;
   const Vec3 p = position(x, i);
   int support = -1;
@@ -71,19 +71,19 @@ bool Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& hei
     Vec3 point;
     if (support >= 0 || !flat_bed(model_.colliders[c], model_.options.gravity, normal, point) ||
         glm::dot(pen->normal, normal) < 1.0 - 1e-12)  // over a pocket the rim, not the bed, holds the ball
-      return false;
+      return -1;
     support = static_cast<int>(c);
     // Static sink: C_s d^m = m g.
     const ContactMaterial& m = model_.material(model_.colliders[c].material);
     const double sink = std::pow(model_.balls[i].mass * glm::length(model_.options.gravity) / m.stiffness, 1.0 / m.exponent);
     height = glm::dot(point, normal) + r - sink;
   }
-  if (support < 0) return false;
+  if (support < 0) return -1;
   for (int j : touching_[i])
-    if (glm::length(p - position(x, j)) - r - model_.balls[j].radius < margin) return false;
+    if (glm::length(p - position(x, j)) - r - model_.balls[j].radius < margin) return -1;
   for (const Rod& rod : model_.rods)
-    if (rod.ball == i) return false;
-  return true;
+    if (rod.ball == i) return -1;
+  return support;
 }
 
 bool Regimes::update(State& state, StateVector& x, double dt) {
@@ -111,8 +111,10 @@ bool Regimes::update_rolling(State& state, StateVector& x) {
     double height;
     // Only adaptive methods: they end a step where a contact begins, so a rolling ball never meets a force its
     // closed form ignores for longer than that; a fixed step would let it ignore an impact for a whole step.
-    const bool eligible = model_.options.rolling_regime && is_adaptive(model_.integrator.method) && state.active(i) &&
-                          only_on_bed(x, i, n, height);
+    const int bed = model_.options.rolling_regime && is_adaptive(model_.integrator.method) && state.active(i)
+                        ? only_on_bed(x, i, n, height)
+                        : -1;
+    const bool eligible = bed >= 0;
     if (state.rolling(i) && !eligible) {
       state.rolling_on[i] = -1;
       changed = true;
@@ -131,12 +133,7 @@ bool Regimes::update_rolling(State& state, StateVector& x) {
       set_position(x, i, p + (height - glm::dot(p, n)) * n);
       set_velocity(x, i, vt + j / mass);
       set_spin(x, i, w + glm::cross(-r * n, j) / model_.balls[i].inertia());
-      for (size_t c = 0; c < model_.colliders.size(); ++c) {
-        Vec3 nn, point;
-        const auto pen = penetration(model_.colliders[c].shape, p, model_.balls[i].radius, model_.options.contact_margin);
-        if (pen && pen->depth > -model_.options.contact_margin && flat_bed(model_.colliders[c], model_.options.gravity, nn, point))
-          state.rolling_on[i] = static_cast<int>(c);
-      }
+      state.rolling_on[i] = bed;
       changed = true;
     }
   }

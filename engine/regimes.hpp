@@ -35,9 +35,9 @@ class Regimes {
   bool slip_below(const StateVector& x, int i, const Vec3& n, double limit) const;  // tangential slip at the bed
   bool update_sleep(State& state, StateVector& x, double dt);
   bool update_rolling(State& state, StateVector& x);
-  // The bed's unit normal and the centre height of a ball resting on it, when ball i touches exactly the flat bed
-  // and nothing else within contact_margin; false otherwise.
-  bool only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const;
+  // The bed collider (its unit normal and the centre height of a ball resting on it in `normal`, `height`) when
+  // ball i touches exactly one flat bed and nothing else within contact_margin; -1 otherwise.
+  int only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const;
 
   const Model& model_;
   ContactCache cache_;
