@@ -1,8 +1,12 @@
 #include "contact_force.hpp"
 
 namespace shotlab {
+double sharpness_for(const Smoothing& s, double strength, double mobility) {
+  const double rate = 1.5 * s.sharpness * strength * mobility;
+  return s.rate_limit > 0 && rate > s.rate_limit ? s.sharpness * s.rate_limit / rate : s.sharpness;
+}
 
-ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& k, double sharpness) {
+ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& k, const Smoothing& smoothing) {
   ContactForce out;
   const Vec3& n = k.normal;
   const double rate = -glm::dot(k.v_rel, n);  // d' > 0 while the bodies approach
@@ -18,7 +22,7 @@ ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& 
   // Coulomb friction against the tangential slip, its sign smoothed by fricstep (MODEL.md appendix B).
   const Vec3 u = k.slip - glm::dot(k.slip, n) * n;
   const double u_len = glm::length(u);
-  const double slide = fricstep(sharpness * u_len);  // 0 at no slip, 1 once slip > 1/sharpness
+  const double slide = fricstep(sharpness_for(smoothing, mat.friction * out.normal, k.slip_mobility) * u_len);  // 0 at no slip, 1 once slip > 1/k
   if (mat.friction > 0 && u_len > 0) {
     out.friction = -(mat.friction * out.normal * slide / u_len) * u;
     out.force += out.friction;
@@ -28,14 +32,17 @@ ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& 
     const Vec3 vt = k.v_rel - glm::dot(k.v_rel, n) * n;
     const double vt_len = glm::length(vt);
     if (vt_len > 0) {
-      const double mag = mat.rolling_resistance * out.normal * fricstep(sharpness * vt_len) * (1.0 - slide);
+      const double strength = mat.rolling_resistance * out.normal;
+      const double mag = strength * fricstep(sharpness_for(smoothing, strength, k.velocity_mobility) * vt_len) * (1.0 - slide);
       out.rolling = -(mag / vt_len) * vt;
       out.force += out.rolling;
     }
   }
   // Spin friction about the normal; the contact patch speed r*w sets the smoothing, like any slip.
-  if (mat.spin_friction > 0)
-    out.spin_torque = -mat.spin_friction * k.radius * out.normal * fricstep(sharpness * k.radius * k.spin_rel);
+  if (mat.spin_friction > 0) {
+    const double strength = mat.spin_friction * out.normal;  // the torque over the lever arm r, N
+    out.spin_torque = -strength * k.radius * fricstep(sharpness_for(smoothing, strength, k.spin_mobility) * k.radius * k.spin_rel);
+  }
   return out;
 }
 

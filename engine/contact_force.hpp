@@ -14,6 +14,12 @@ struct ContactKinematics {
   Vec3 slip;        // velocity of A's surface point at the contact minus B's, m/s
   double spin_rel;  // (w_A - w_B) . normal, rad/s
   double radius;    // A's radius, m: the lever arm of spin friction
+  // How fast each friction term changes the motion it opposes, per unit of force (1/kg): the slip at the contact
+  // point (1/m + r^2/I of each ball: 3.5/m for a solid sphere), the relative centre velocity (1/m of each ball) and
+  // the relative spin about the normal, as a surface speed r w (r^2/I of each ball). 0 for a static body.
+  double slip_mobility;
+  double velocity_mobility;
+  double spin_mobility;
 };
 
 struct ContactForce {
@@ -24,7 +30,24 @@ struct ContactForce {
   double spin_torque = 0;  // torque on A about the normal, N m (B gets the opposite)
 };
 
-ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& k, double sharpness);
+// Friction smoothing: the sharpness k of fricstep (s/m) and the largest rate (1/s) at which a smoothed friction term
+// may relax the motion it opposes (Options::friction_rate_limit; 0: no limit).
+struct Smoothing {
+  double sharpness;
+  double rate_limit;
+};
+
+// The sharpness (s/m) a friction term of the given strength (N) uses on a motion of the given mobility (1/kg).
+// Inside its band (slip below 1/k) a friction term of strength F = mu N acts on the slip s it opposes like a linear
+// damper: F fricstep(k s) ~ 1.5 k mu N s, which relaxes s at the rate lambda = 1.5 k mu N * mobility (1/s; MODEL.md
+// "Numerical facts"). On the cloth (N = m g) that is about 1e4 1/s, but a hard impact presses a ball into a cushion
+// or another ball with thousands of newtons, and lambda reaches 1e7 1/s: an explicit method then needs steps of
+// 0.1 us for the whole contact, only to keep a stuck contact stuck. Above the rate limit the band widens instead
+// (k drops to limit / (1.5 mu N mobility)): the contact still sticks within 1/limit seconds, a few microseconds,
+// short against the contact's 0.2-1 ms, and the step stays set by the contact itself.
+double sharpness_for(const Smoothing& s, double strength, double mobility);
+
+ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& k, const Smoothing& smoothing);
 
 // The torque a contact force puts on a ball of radius r whose outward contact normal (centre to contact point) is
 // -normal:  friction acts at r_c = -r n; rolling resistance comes with the torque (2/5) r n x F_roll, which keeps

@@ -36,12 +36,17 @@ void rolling_derivative(const Model& model, const State& state, const ContactCac
   const ContactMaterial& m = *cache.collider_material[state.rolling_on[i]];
   Vec3 n, point;
   flat_bed(bed, model.options.gravity, n, point);
-  const double g = glm::length(model.options.gravity), r = model.balls[i].radius, k = model.options.friction_sharpness;
+  const BallSpec& ball = model.balls[i];
+  const double g = glm::length(model.options.gravity), r = ball.radius, weight = ball.mass * g;
+  const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
+  // The sharpness each term would get in contact_force (the static normal force is m g).
+  const double k_roll = sharpness_for(smooth, m.rolling_resistance * weight, 1.0 / ball.mass);
+  const double k_spin = sharpness_for(smooth, m.spin_friction * weight, r * r / ball.inertia());
   const Vec3 v = velocity(x, i), w = spin(x, i);
   const double speed = glm::length(v);
-  const Vec3 a = speed > 0 ? -(m.rolling_resistance * g * fricstep(k * speed) / speed) * v : Vec3{0.0};
+  const Vec3 a = speed > 0 ? -(m.rolling_resistance * g * fricstep(k_roll * speed) / speed) * v : Vec3{0.0};
   const double wn = glm::dot(w, n);
-  const Vec3 alpha = glm::cross(n, a) / r - (2.5 * m.spin_friction * g / r * fricstep(k * r * wn)) * n;
+  const Vec3 alpha = glm::cross(n, a) / r - (2.5 * m.spin_friction * g / r * fricstep(k_spin * r * wn)) * n;
   for (int c = 0; c < 3; ++c) {
     dxdt[c] = v[c];
     dxdt[3 + c] = a[c];

@@ -107,6 +107,7 @@ void tune_panel(Lab& lab, ProbeReadouts& probes) {
     Options& o = lab.scene.model.options;
     IntegratorOptions& in = lab.scene.model.integrator;
     changed |= slider("friction sharpness", o.friction_sharpness, 1.0, 1e6, "%.4g s/m", true);
+    changed |= slider("friction rate limit", o.friction_rate_limit, 1e3, 1e9, "%.3g 1/s", true);
     double g = -o.gravity.y;
     if (slider("gravity", g, 0.0, 30.0, "%.2f m/s^2", false)) o.gravity.y = -g, changed = true;
     int method = static_cast<int>(in.method);

@@ -265,6 +265,7 @@ Scene parse_scene(const json& doc, const std::string& source) {
   n.optional("gravity", [&](const JsonNode& v) { s.model.options.gravity = v.vec3(); });
   n.optional("model", [&](const JsonNode& m) {
     m.optional("friction_sharpness", [&](const JsonNode& v) { s.model.options.friction_sharpness = v.positive(); });
+    m.optional("friction_rate_limit", [&](const JsonNode& v) { s.model.options.friction_rate_limit = v.non_negative(); });
     m.optional("rest_speed", [&](const JsonNode& v) { s.model.options.rest_speed = v.positive(); });
     m.optional("contact_margin", [&](const JsonNode& v) { s.model.options.contact_margin = v.positive(); });
     m.optional("sleep_time", [&](const JsonNode& v) { s.model.options.sleep_time = v.non_negative(); });
@@ -386,6 +387,7 @@ json scene_to_json(const Scene& s) {
   doc["allow_overlap"] = s.allow_overlap;
   doc["gravity"] = vec(s.model.options.gravity);
   doc["model"] = {{"friction_sharpness", s.model.options.friction_sharpness},
+                  {"friction_rate_limit", s.model.options.friction_rate_limit},
                   {"rest_speed", s.model.options.rest_speed},
                   {"contact_margin", s.model.options.contact_margin},
                   {"sleep_time", s.model.options.sleep_time},
