@@ -1,6 +1,7 @@
 #include "contact_force.hpp"
 
 namespace shotlab {
+
 double sharpness_for(const Smoothing& s, double strength, double mobility) {
   const double rate = 1.5 * s.sharpness * strength * mobility;
   return s.rate_limit > 0 && rate > s.rate_limit ? s.sharpness * s.rate_limit / rate : s.sharpness;

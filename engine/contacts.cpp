@@ -11,6 +11,10 @@ ContactCache::ContactCache(const Model& model) : ball_ball(&model.material(kBall
     collider_material.push_back(&model.material(c.material));
     collider_bounds.push_back(bounds(c.shape));
   }
+  for (const BallSpec& b : model.balls) {
+    inv_mass.push_back(1.0 / b.mass);
+    inv_inertia_r2.push_back(b.radius * b.radius / b.inertia());
+  }
 }
 
 namespace {

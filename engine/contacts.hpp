@@ -27,6 +27,8 @@ struct ContactCache {
   std::vector<const ContactMaterial*> collider_material;
   std::vector<Bounds> collider_bounds;  // broad phase against static colliders
   const ContactMaterial* ball_ball;
+  // Each ball's mobilities (contact_force.hpp), constant for the model: 1/m (1/kg) and r^2/I (1/kg).
+  std::vector<double> inv_mass, inv_inertia_r2;
   std::vector<std::pair<int, int>> pairs;
   // Broad phase: awake balls sorted by the left end of their x extent on every call; sleepers sorted once per change
   // of who sleeps (they do not move), so that a thousand resting balls cost a binary search, not a sweep.

@@ -41,9 +41,8 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
                       bool with_inactive) {
   const Smoothing k{model.options.friction_sharpness, model.options.friction_rate_limit};
   const int n = state.ball_count();
-  // Mobilities of ball i (contact_force.hpp): 1/m and r^2/I.
-  auto inv_mass = [&](int i) { return 1.0 / model.balls[i].mass; };
-  auto inv_inertia_r2 = [&](int i) { return model.balls[i].radius * model.balls[i].radius / model.balls[i].inertia(); };
+  const std::vector<double>& inv_mass = cache.inv_mass;  // mobilities of each ball (contact_force.hpp)
+  const std::vector<double>& inv_inertia_r2 = cache.inv_inertia_r2;
   // Ball against static colliders: B has zero velocity.
   for (int i = 0; i < n; ++i) {
     if (!state.in_play[i] || ((state.sleeping(i) || state.rolling(i)) && !with_inactive)) continue;
@@ -55,7 +54,7 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
       if (!pen || pen->depth <= 0) continue;
       const Vec3& nrm = pen->normal;
       const ContactKinematics kin{nrm, pen->depth, v, v + r * glm::cross(nrm, w), glm::dot(w, nrm), r,
-                                  inv_mass(i) + inv_inertia_r2(i), inv_mass(i), inv_inertia_r2(i)};
+                                  inv_mass[i] + inv_inertia_r2[i], inv_mass[i], inv_inertia_r2[i]};
       const ContactForce f = contact_force(*cache.collider_material[c], kin, k);
       fn(Contact{i, -1, static_cast<int>(c), pen->depth, nrm, p - r * nrm, f});
     }
@@ -73,8 +72,8 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
     const Vec3 vrel = velocity(x, i) - velocity(x, j);
     const Vec3 slip = vrel + ri * glm::cross(nrm, wi) + rj * glm::cross(nrm, wj);
     const ContactKinematics kin{nrm, ri + rj - dist, vrel, slip, glm::dot(wi - wj, nrm), ri,
-                                inv_mass(i) + inv_inertia_r2(i) + inv_mass(j) + inv_inertia_r2(j),
-                                inv_mass(i) + inv_mass(j), inv_inertia_r2(i) + inv_inertia_r2(j)};
+                                inv_mass[i] + inv_inertia_r2[i] + inv_mass[j] + inv_inertia_r2[j],
+                                inv_mass[i] + inv_mass[j], inv_inertia_r2[i] + inv_inertia_r2[j]};
     fn(Contact{i, j, -1, kin.depth, nrm, position(x, i) - ri * nrm, contact_force(bb, kin, k)});
   }
 }

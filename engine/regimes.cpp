@@ -36,12 +36,11 @@ void rolling_derivative(const Model& model, const State& state, const ContactCac
   const ContactMaterial& m = *cache.collider_material[state.rolling_on[i]];
   Vec3 n, point;
   flat_bed(bed, model.options.gravity, n, point);
-  const BallSpec& ball = model.balls[i];
-  const double g = glm::length(model.options.gravity), r = ball.radius, weight = ball.mass * g;
+  const double g = glm::length(model.options.gravity), r = model.balls[i].radius, weight = model.balls[i].mass * g;
   const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
   // The sharpness each term would get in contact_force (the static normal force is m g).
-  const double k_roll = sharpness_for(smooth, m.rolling_resistance * weight, 1.0 / ball.mass);
-  const double k_spin = sharpness_for(smooth, m.spin_friction * weight, r * r / ball.inertia());
+  const double k_roll = sharpness_for(smooth, m.rolling_resistance * weight, cache.inv_mass[i]);
+  const double k_spin = sharpness_for(smooth, m.spin_friction * weight, cache.inv_inertia_r2[i]);
   const Vec3 v = velocity(x, i), w = spin(x, i);
   const double speed = glm::length(v);
   const Vec3 a = speed > 0 ? -(m.rolling_resistance * g * fricstep(k_roll * speed) / speed) * v : Vec3{0.0};

@@ -107,7 +107,15 @@ void tune_panel(Lab& lab, ProbeReadouts& probes) {
     Options& o = lab.scene.model.options;
     IntegratorOptions& in = lab.scene.model.integrator;
     changed |= slider("friction sharpness", o.friction_sharpness, 1.0, 1e6, "%.4g s/m", true);
-    changed |= slider("friction rate limit", o.friction_rate_limit, 1e3, 1e9, "%.3g 1/s", true);
+    // 0 (no limit) is off the log scale: a checkbox switches the limit off and back to the default.
+    bool limited = o.friction_rate_limit > 0;
+    if (ImGui::Checkbox("##rate_limited", &limited)) {
+      o.friction_rate_limit = limited ? Options{}.friction_rate_limit : 0.0;
+      changed = true;
+    }
+    ImGui::SameLine();
+    if (limited) changed |= slider("friction rate limit", o.friction_rate_limit, 1e3, 1e9, "%.3g 1/s", true);
+    else ImGui::TextDisabled("friction rate limit: off");
     double g = -o.gravity.y;
     if (slider("gravity", g, 0.0, 30.0, "%.2f m/s^2", false)) o.gravity.y = -g, changed = true;
     int method = static_cast<int>(in.method);

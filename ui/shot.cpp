@@ -31,7 +31,7 @@ void Shot::observe(const StepSpan& span) {
       touching = in_play[i] && in_play[j] &&
                  glm::length(position(span.x1, i) - position(span.x1, j)) < balls[i].radius + balls[j].radius;
   if (!touching) return;
-  const State probe{span.t1, span.x1, in_play};
+  const State probe{span.t1, span.x1, in_play, {}, {}};
   double force = 0;
   for (const Contact& c : contacts(sim_->model(), probe))
     if (c.other_ball >= 0) force = std::max(force, c.force.normal);
