@@ -104,13 +104,13 @@ double time_to_possible_contact(const Model& model, const State& state, const do
     vmax = std::max(vmax, s);
     // Colliders farther than the ball can travel within the horizon cannot limit the step.
     const double travel = s * horizon + a * horizon * horizon + margin;
-    for (const Collider& c : model.colliders) {
-      const auto pen = penetration(c.shape, p, model.balls[i].radius, travel);
-      if (pen && pen->depth <= 0)
-        best = std::min(best, closing_time(margin - pen->depth, collider_closing_speed(c.shape, p, v), a));
-      // A ball in the rolling regime ignores its support's geometry: it must not roll far over a pocket's edge.
-      if (state.rolling(i)) best = std::min(best, closing_time(hole_gap(c.shape, p) + margin, s, a));
-    }
+    near_colliders(model, cache, p, model.balls[i].radius, travel, [&](int c, const Penetration& pen) {
+      if (pen.depth <= 0)
+        best = std::min(best, closing_time(margin - pen.depth, collider_closing_speed(model.colliders[c].shape, p, v), a));
+    });
+    // A ball in the rolling regime ignores its support's geometry: it must not roll far over a pocket's edge.
+    if (state.rolling(i))
+      for (const Collider& c : model.colliders) best = std::min(best, closing_time(hole_gap(c.shape, p) + margin, s, a));
   }
   // Ball pairs whose x gap is within anything closable within the horizon (a sleeper does not move: only the awake
   // one closes in).

@@ -50,6 +50,13 @@ void sweep_pairs(const Model& model, const State& state, const double* x, Contac
 template <class Fn>
 void sleepers_near(const Model& model, const double* x, const ContactCache& cache, int i, double reach, Fn&& fn);
 
+// Calls fn(c, pen) for every collider c whose gap to a ball (centre p, radius r) may be under `within` m, with its
+// penetration (pen.depth may still be <= -within: the bounds are a box). The colliders' bounds reject most of a
+// table's cushions before the exact test is called: every step runs this for every ball in several passes (contact
+// onsets, motion states, regimes, step caps), and the calls themselves were a quarter of a break's wall time.
+template <class Fn>
+void near_colliders(const Model& model, const ContactCache& cache, const Vec3& p, double r, double within, Fn&& fn);
+
 // Ball pairs (at least one awake, or any with `sleeping_pairs`) whose spheres overlap or come closer than `slack` m.
 void overlapping_pairs(const Model& model, const State& state, const double* x, ContactCache& cache,
                        double slack = 0.0, bool sleeping_pairs = false);

@@ -37,6 +37,14 @@ void sweep_pairs(const Model& model, const State& state, const double* x, Contac
 }
 
 template <class Fn>
+void near_colliders(const Model& model, const ContactCache& cache, const Vec3& p, double r, double within, Fn&& fn) {
+  for (size_t c = 0; c < model.colliders.size(); ++c) {
+    if (!cache.collider_bounds[c].may_touch(p, r + within)) continue;
+    if (const auto pen = penetration(model.colliders[c].shape, p, r, within)) fn(static_cast<int>(c), *pen);
+  }
+}
+
+template <class Fn>
 void for_each_contact(const Model& model, const State& state, const double* x, ContactCache& cache, Fn&& fn,
                       bool with_inactive) {
   const Smoothing k{model.options.friction_sharpness, model.options.friction_rate_limit};
@@ -48,16 +56,14 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
     if (!state.in_play[i] || ((state.sleeping(i) || state.rolling(i)) && !with_inactive)) continue;
     const double r = model.balls[i].radius;
     const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
-    for (size_t c = 0; c < model.colliders.size(); ++c) {
-      if (!cache.collider_bounds[c].may_touch(p, r)) continue;
-      const auto pen = penetration(model.colliders[c].shape, p, r, 0.0);
-      if (!pen || pen->depth <= 0) continue;
-      const Vec3& nrm = pen->normal;
-      const ContactKinematics kin{nrm, pen->depth, v, v + r * glm::cross(nrm, w), glm::dot(w, nrm), r,
+    near_colliders(model, cache, p, r, 0.0, [&](int c, const Penetration& pen) {
+      if (pen.depth <= 0) return;
+      const Vec3& nrm = pen.normal;
+      const ContactKinematics kin{nrm, pen.depth, v, v + r * glm::cross(nrm, w), glm::dot(w, nrm), r,
                                   inv_mass[i] + inv_inertia_r2[i], inv_mass[i], inv_inertia_r2[i]};
       const ContactForce f = contact_force(*cache.collider_material[c], kin, k);
-      fn(Contact{i, -1, static_cast<int>(c), pen->depth, nrm, p - r * nrm, f});
-    }
+      fn(Contact{i, -1, c, pen.depth, nrm, p - r * nrm, f});
+    });
   }
   // Ball against ball: n points from j to i; A's contact point is at -R_i n, B's at +R_j n.
   overlapping_pairs(model, state, x, cache, 0.0, with_inactive);

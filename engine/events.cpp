@@ -46,19 +46,18 @@ const char* motion_name(Motion m) {
   return names[static_cast<int>(m)];
 }
 
-Motion classify(const Model& model, const State& state, const double* x, int i) {
+Motion classify(const Model& model, const ContactCache& cache, const State& state, const double* x, int i) {
   if (!state.in_play[i]) return Motion::Pocketed;
   const double r = model.balls[i].radius;
   const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
   Vec3 n{0.0};
   double best_up = -2;
-  for (const Collider& c : model.colliders) {
-    const auto pen = penetration(c.shape, p, r, kSupportGap);
-    if (pen && pen->depth > -kSupportGap && glm::dot(pen->normal, kUp) > best_up) {
-      best_up = glm::dot(pen->normal, kUp);
-      n = pen->normal;
+  near_colliders(model, cache, p, r, kSupportGap, [&](int, const Penetration& pen) {
+    if (pen.depth > -kSupportGap && glm::dot(pen.normal, kUp) > best_up) {
+      best_up = glm::dot(pen.normal, kUp);
+      n = pen.normal;
     }
-  }
+  });
   if (best_up == -2) return Motion::Airborne;
   const double eps = model.options.rest_speed;
   const Vec3 vt = v - glm::dot(v, n) * n;
@@ -69,14 +68,21 @@ Motion classify(const Model& model, const State& state, const double* x, int i) 
 }
 
 void EventDetector::collect(const State& state, const double* x, std::vector<Key>& keys) {
-  keys.clear();
   const int n = state.ball_count();
+  // The simulation asks first_contact_change and then scan about the same accepted state: collect it once.
+  if (memo_.in_play == state.in_play && memo_.asleep == state.asleep && memo_.x.size() == size_t(9 * n) &&
+      std::equal(memo_.x.begin(), memo_.x.end(), x)) {
+    keys = memo_keys_;
+    return;
+  }
+  keys.clear();
   // Sleepers' contacts cannot change while they sleep; leaving them out of the snapshot and of every later collect
   // is consistent, because the snapshot is retaken whenever a ball falls asleep or wakes.
   for (int i = 0; i < n; ++i) {
     if (!state.active(i)) continue;
-    for (int c = 0; c < static_cast<int>(model_.colliders.size()); ++c)
-      if (depth({i, -1 - c}, x) > kTouch) keys.emplace_back(i, -1 - c);
+    near_colliders(model_, cache_, position(x, i), model_.balls[i].radius, kTouch, [&](int c, const Penetration& pen) {
+      if (pen.depth > kTouch) keys.emplace_back(i, -1 - c);
+    });
   }
   overlapping_pairs(model_, state, x, cache_);
   for (const auto& [i, j] : cache_.pairs) {
@@ -84,6 +90,10 @@ void EventDetector::collect(const State& state, const double* x, std::vector<Key
     if (depth(k, x) > kTouch) keys.push_back(k);
   }
   std::sort(keys.begin(), keys.end());
+  memo_.in_play = state.in_play;
+  memo_.asleep = state.asleep;
+  memo_.x.assign(x, x + 9 * n);
+  memo_keys_ = keys;
 }
 
 double EventDetector::depth(const Key& key, const double* x) const {
@@ -101,7 +111,7 @@ std::string EventDetector::body_name(int other) const {
 void EventDetector::reset(const State& state) {
   collect(state, state.x.data(), contacts_);
   motion_.resize(state.ball_count());
-  for (int i = 0; i < state.ball_count(); ++i) motion_[i] = classify(model_, state, state.x.data(), i);
+  for (int i = 0; i < state.ball_count(); ++i) motion_[i] = classify(model_, cache_, state, state.x.data(), i);
 }
 
 void EventDetector::changes(const State& state, const double* x, std::vector<Key>& now, std::vector<Key>& begun,
@@ -167,10 +177,10 @@ void EventDetector::scan(const StepSpan& span, const State& state, std::vector<E
   // Motion state changes (a sleeper stays stationary).
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.active(i)) continue;
-    const Motion m1 = classify(model_, state, span.x1.data(), i);
+    const Motion m1 = classify(model_, cache_, state, span.x1.data(), i);
     if (m1 == motion_[i]) continue;
     const Motion m0 = motion_[i];
-    const double t = bisect(span.t0, span.t1, [&](double s) { return classify(model_, state, at(s), i) != m0; });
+    const double t = bisect(span.t0, span.t1, [&](double s) { return classify(model_, cache_, state, at(s), i) != m0; });
     events.push_back({t, transition_kind(m0, m1), {model_.balls[i].id}});
     motion_[i] = m1;
   }

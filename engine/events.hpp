@@ -17,8 +17,9 @@ enum class Motion { Stationary, Spinning, Rolling, Sliding, Airborne, Pocketed }
 const char* motion_name(Motion m);
 
 // Motion state of ball i in state vector x: judged relative to its supporting collider (the touching collider
-// whose normal points most upwards) with the model's rest_speed threshold on tangential speed and slip.
-Motion classify(const Model& model, const State& state, const double* x, int i);
+// whose normal points most upwards) with the model's rest_speed threshold on tangential speed and slip. `cache` is any
+// ContactCache of the model (its collider bounds).
+Motion classify(const Model& model, const ContactCache& cache, const State& state, const double* x, int i);
 
 struct Event {
   double time;                      // s
@@ -56,6 +57,8 @@ class EventDetector {
   const Model& model_;
   ContactCache cache_;
   std::vector<Key> contacts_;
+  State memo_;                 // the flags and state of the last collect (its time unused) ...
+  std::vector<Key> memo_keys_;  // ... and what it found
   std::vector<Motion> motion_;
   StateVector scratch_;
 };

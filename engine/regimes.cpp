@@ -62,7 +62,7 @@ bool Regimes::slip_below(const StateVector& x, int i, const Vec3& n, double limi
 bool Regimes::at_rest(const State& state, const StateVector& x, int i) const {
   const double eps = model_.options.rest_speed, r = model_.balls[i].radius;
   return glm::length(velocity(x, i)) < eps && r * glm::length(spin(x, i)) < eps &&
-         classify(model_, state, x.data(), i) == Motion::Stationary;
+         classify(model_, cache_, state, x.data(), i) == Motion::Stationary;
 }
 
 int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const {
@@ -70,6 +70,7 @@ int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& heig
   const Vec3 p = position(x, i);
   int support = -1;
   for (size_t c = 0; c < model_.colliders.size(); ++c) {
+    if (!cache_.collider_bounds[c].may_touch(p, r + margin)) continue;  // near_colliders' test; this loop returns early
     const auto pen = penetration(model_.colliders[c].shape, p, r, margin);
     if (!pen || pen->depth <= -margin) continue;
     Vec3 point;
@@ -78,7 +79,7 @@ int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& heig
       return -1;
     support = static_cast<int>(c);
     // Static sink: C_s d^m = m g.
-    const ContactMaterial& m = model_.material(model_.colliders[c].material);
+    const ContactMaterial& m = *cache_.collider_material[c];
     const double sink = std::pow(model_.balls[i].mass * glm::length(model_.options.gravity) / m.stiffness, 1.0 / m.exponent);
     height = glm::dot(point, normal) + r - sink;
   }

@@ -57,7 +57,7 @@ class Simulation {
   Status status() const { return status_; }
   const std::string& diagnostic() const { return diagnostic_; }
 
-  Motion motion(int ball) const { return classify(model_, state_, state_.x.data(), ball); }
+  Motion motion(int ball) const { return classify(model_, cap_cache_, state_, state_.x.data(), ball); }
   Energy energy() const { return shotlab::energy(model_, state_); }
   Vec3 momentum() const { return shotlab::momentum(model_, state_); }
   std::vector<Contact> contacts() const { return shotlab::contacts(model_, state_); }

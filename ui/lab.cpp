@@ -54,7 +54,8 @@ void Lab::scene_changed() {
   table_model = p.model;
   if (!shot) {
     frame_ = Frame{0, p.state, std::vector<glm::dquat>(scene.balls.size(), glm::dquat(1, 0, 0, 0)), {}, 0};
-    for (int i = 0; i < p.state.ball_count(); ++i) frame_.motion.push_back(classify(p.model, p.state, p.state.x.data(), i));
+    const ContactCache cache(p.model);
+    for (int i = 0; i < p.state.ball_count(); ++i) frame_.motion.push_back(classify(p.model, cache, p.state, p.state.x.data(), i));
   }
   wanted_ = predictor_.request(scene);
 }
