@@ -12,6 +12,8 @@ constexpr double kTouchSlack = 1e-9;
 // last factor 100 costs a millisecond of a few stiff steps), and the snap's difference from the full model stays
 // at the nanometre level instead of 0.1 um.
 constexpr double kEntrySlip = 0.01;
+// Speeds (m/s) this small are round-off, not motion: below every tolerance an integrator is run at.
+constexpr double kDeadTail = 1e-12;
 
 // The flat, horizontal bed a ball can roll on in closed form: a plane (bounded or not) whose normal is along
 // -gravity.
@@ -123,6 +125,8 @@ bool Regimes::update_rolling(State& state, StateVector& x) {
     if (state.rolling(i) && !eligible) {
       state.rolling_on[i] = -1;
       changed = true;
+    } else if (state.rolling(i)) {
+      changed = settle_rolling(x, i, n) || changed;
     } else if (!state.rolling(i) && eligible && slip_below(x, i, n, kEntrySlip * model_.options.rest_speed) &&
                std::abs(glm::dot(velocity(x, i), n)) < model_.options.rest_speed) {
       // Snap onto the constraint: height at the sink depth, no normal velocity, and the remaining slip u (under
@@ -143,6 +147,28 @@ bool Regimes::update_rolling(State& state, StateVector& x) {
     }
   }
   return changed;
+}
+
+// A rolling ball's speed and its spin about the normal decay to zero the way the slip does at the rolling entry:
+// linearly down to the fricstep band, then exponentially, at 1.5 k mu_r g ~ 150 1/s for the speed and
+// 1.5 k mu_sp g r^2/I ~ 400 1/s for the spin. Integrating those tails to the tolerance holds every ball in the
+// system to accuracy-limited steps of a few milliseconds. The tails are cut: the spin about the normal below the
+// entry threshold (it does not act on the rolling path at all), the speed below 1e-7 m/s (the distance still to
+// roll, v / (150 1/s), is under 1 nm).
+bool Regimes::settle_rolling(StateVector& x, int i, const Vec3& n) const {
+  const double stop_speed = 1e-7, stop_turning = kEntrySlip * model_.options.rest_speed, r = model_.balls[i].radius;
+  const Vec3 v = velocity(x, i), w = spin(x, i);
+  const double speed = glm::length(v), wn = glm::dot(w, n);
+  // Tails already at round-off (1e-12 m/s and below) are left alone: cutting them changes nothing but would restart
+  // the integrator after every step.
+  const bool stops = speed > kDeadTail && speed < stop_speed,
+             turns_off = r * std::abs(wn) > kDeadTail && r * std::abs(wn) < stop_turning;
+  if (stops) {
+    set_velocity(x, i, Vec3{0.0});
+    set_spin(x, i, wn * n);  // no rolling spin at zero speed (v + R n x w = 0)
+  }
+  if (turns_off) set_spin(x, i, spin(x, i) - wn * n);
+  return stops || turns_off;
 }
 
 bool Regimes::update_sleep(State& state, StateVector& x, double dt) {

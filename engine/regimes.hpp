@@ -10,6 +10,8 @@
 //    sleep_time is frozen exactly (no equations, no contacts), so resting balls cost nothing and cannot drift. A
 //    sleeping ball is an obstacle to awake ones and wakes, with every sleeping ball touching it, as soon as an
 //    awake ball that is not at rest touches it.
+// A rolling ball's last 1e-7 m/s of speed and 1e-5 m/s of spin about the normal (as a surface speed) are cut to zero
+// instead of integrated: those exponential tails of the smoothed friction would hold every step to milliseconds.
 // A ball leaves the rolling regime when anything other than the bed comes within contact_margin, when its support
 // is no longer the flat bed (a pocket rim), or when it stops rolling. Contact onsets end the integrator's step
 // (simulation.cpp), so regime changes happen at the instant of contact.
@@ -35,6 +37,7 @@ class Regimes {
   bool slip_below(const StateVector& x, int i, const Vec3& n, double limit) const;  // tangential slip at the bed
   bool update_sleep(State& state, StateVector& x, double dt);
   bool update_rolling(State& state, StateVector& x);
+  bool settle_rolling(StateVector& x, int i, const Vec3& n) const;  // cuts the decay tails of a rolling ball
   // The bed collider (its unit normal and the centre height of a ball resting on it in `normal`, `height`) when
   // ball i touches exactly one flat bed and nothing else within contact_margin; -1 otherwise.
   int only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const;
