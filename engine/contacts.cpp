@@ -10,6 +10,9 @@ ContactCache::ContactCache(const Model& model) : ball_ball(&model.material(kBall
   for (const Collider& c : model.colliders) {
     collider_material.push_back(&model.material(c.material));
     collider_bounds.push_back(bounds(c.shape));
+    if (const auto* s = std::get_if<Plane>(&c.shape)) plane_normal.push_back(s->normal);
+    else if (const auto* s = std::get_if<BoundedPlane>(&c.shape)) plane_normal.push_back(glm::normalize(glm::cross(s->u, s->v)));
+    else plane_normal.emplace_back(0.0);
   }
   for (const BallSpec& b : model.balls) {
     inv_mass.push_back(1.0 / b.mass);
@@ -110,7 +113,7 @@ double time_to_possible_contact(const Model& model, const State& state, const do
     });
     // A ball in the rolling regime ignores its support's geometry: it must not roll far over a pocket's edge.
     if (state.rolling(i))
-      for (const Collider& c : model.colliders) best = std::min(best, closing_time(hole_gap(c.shape, p) + margin, s, a));
+      best = std::min(best, closing_time(hole_gap(model.colliders[state.rolling_on[i]].shape, p) + margin, s, a));
   }
   // Ball pairs whose x gap is within anything closable within the horizon (a sleeper does not move: only the awake
   // one closes in).

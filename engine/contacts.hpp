@@ -26,6 +26,7 @@ struct ContactCache {
   explicit ContactCache(const Model& model);
   std::vector<const ContactMaterial*> collider_material;
   std::vector<Bounds> collider_bounds;  // broad phase against static colliders
+  std::vector<Vec3> plane_normal;       // unit normal of each plane-like collider (Plane, BoundedPlane), else 0
   const ContactMaterial* ball_ball;
   // Each ball's mobilities (contact_force.hpp), constant for the model: 1/m (1/kg) and r^2/I (1/kg).
   std::vector<double> inv_mass, inv_inertia_r2;

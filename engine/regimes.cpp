@@ -34,10 +34,8 @@ bool flat_bed(const Collider& c, const Vec3& gravity, Vec3& normal, Vec3& point)
 // The slip v + R n x w stays exactly zero: d/dt of it is a + R n x ((1/R) n x a) = a - a = 0 for a along the bed.
 void rolling_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
                         double* dxdt) {
-  const Collider& bed = model.colliders[state.rolling_on[i]];
   const ContactMaterial& m = *cache.collider_material[state.rolling_on[i]];
-  Vec3 n, point;
-  flat_bed(bed, model.options.gravity, n, point);
+  const Vec3& n = cache.plane_normal[state.rolling_on[i]];
   const double g = glm::length(model.options.gravity), r = model.balls[i].radius, weight = model.balls[i].mass * g;
   const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
   // The sharpness each term would get in contact_force (the static normal force is m g).
