@@ -3,19 +3,23 @@
 namespace shotlab {
 
 Energy energy(const Model& model, const State& state) {
+  ContactCache cache(model);
+  return energy(model, state, cache, true);
+}
+
+Energy energy(const Model& model, const State& state, ContactCache& cache, bool with_inactive) {
   Energy e;
   for (int i = 0; i < state.ball_count(); ++i) {
-    if (!state.in_play[i]) continue;
+    if (!state.in_play[i] || (state.sleeping(i) && !with_inactive)) continue;
     const BallSpec& b = model.balls[i];
     const Vec3 v = velocity(state.x, i), w = spin(state.x, i);
     e.kinetic += 0.5 * b.mass * glm::dot(v, v) + 0.5 * b.inertia() * glm::dot(w, w);
     e.potential -= b.mass * glm::dot(model.options.gravity, position(state.x, i));
   }
-  for (const Contact& c : contacts(model, state)) {
-    const ContactMaterial& m = c.other_ball >= 0 ? model.material(kBallBall)
-                                                 : model.material(model.colliders[c.collider].material);
+  for_each_contact(model, state, state.x.data(), cache, [&](const Contact& c) {
+    const ContactMaterial& m = c.other_ball >= 0 ? *cache.ball_ball : *cache.collider_material[c.collider];
     e.elastic += m.stiffness * std::pow(c.depth, m.exponent + 1) / (m.exponent + 1);
-  }
+  }, with_inactive);
   return e;
 }
 

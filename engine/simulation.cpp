@@ -45,10 +45,13 @@ void Simulation::restart() {
   integ_.x = span_.x1;
   integ_.time = span_.t1;
   detector_.reset(integ_);
+  energy_frozen_ = shotlab::energy(model_, integ_, cap_cache_, true).total() -
+                   shotlab::energy(model_, integ_, cap_cache_, false).total();
 }
 
 bool Simulation::at_rest() const {
   for (int i = 0; i < state_.ball_count(); ++i) {
+    if (state_.sleeping(i)) continue;  // frozen at rest
     const Motion m = motion(i);
     if (m != Motion::Stationary && m != Motion::Pocketed) return false;
   }
@@ -84,7 +87,7 @@ Status Simulation::advance(double dt) {
   state_.asleep = integ_.asleep;
   state_.rolling_on = integ_.rolling_on;
   if (status_ == Status::Ok) {
-    const double e = energy().total();
+    const double e = shotlab::energy(model_, state_, cap_cache_, false).total() + energy_frozen_;
     if (e - energy_start_ > energy_scale_) {
       std::ostringstream msg;
       msg << "unstable: the total energy grew from " << energy_start_ << " J to " << e << " J by t = " << state_.time

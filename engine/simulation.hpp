@@ -89,6 +89,9 @@ class Simulation {
   std::string diagnostic_;
   std::function<void(const StepSpan&)> observer_;
   double energy_start_, energy_scale_;  // J: total at t = 0, and what it may grow by before the run is Unstable
+  // J: the energy of sleepers and of the beds under rolling balls, constant between regime changes (taken at each
+  // restart), so that the energy check after every advance() costs O(awake balls), not O(balls).
+  double energy_frozen_ = 0;
 };
 
 }  // namespace shotlab
