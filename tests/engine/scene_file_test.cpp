@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "support.hpp"
 
 namespace shotlab::test {
@@ -13,8 +15,23 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A folder of this test process's own: ctest runs tests as parallel processes (and other checkouts on the machine run
+// theirs), so fixed names in /tmp let one test read another's files.
+struct TestDir {
+  fs::path path = fs::temp_directory_path() / ("shotlab_test_" + std::to_string(getpid()));
+  TestDir() { fs::create_directories(path); }
+  ~TestDir() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+const fs::path& test_dir() {
+  static const TestDir dir;
+  return dir.path;
+}
+
 std::string temp_file(const std::string& name, const std::string& text) {
-  const fs::path p = fs::temp_directory_path() / ("shotlab_test_" + name);
+  const fs::path p = test_dir() / name;
   std::ofstream(p) << text;
   return p.string();
 }
@@ -96,7 +113,7 @@ TEST(SceneFile, OverridesReachAnyValue) {
 TEST(SceneFile, SaveAndLoadGiveTheSameScene) {
   for (const char* name : {"break_realistic.json", "cradle.json", "frozen.json"}) {
     const Scene s = load_scene(preset(name));
-    const std::string path = (fs::temp_directory_path() / (std::string("shotlab_roundtrip_") + name)).string();
+    const std::string path = (test_dir() / (std::string("roundtrip_") + name)).string();
     save_scene(path, s);
     EXPECT_EQ(scene_to_json(load_scene(path)), scene_to_json(s)) << name;
   }
@@ -117,7 +134,7 @@ TEST(SceneFile, FailedSaveLeavesTheOldFileAlone) {
 
 // The command line: exit status and message.
 int run_cli(const std::string& args, std::string& err) {
-  const std::string err_file = (fs::temp_directory_path() / "shotlab_cli_err.txt").string();
+  const std::string err_file = (test_dir() / "cli_err.txt").string();
   const int status = std::system((std::string(SHOTLAB_BIN) + " " + args + " > /dev/null 2> " + err_file).c_str());
   std::ifstream in(err_file);
   std::stringstream text;
@@ -136,7 +153,7 @@ TEST(Cli, BadSceneGivesMessageAndNonZeroExit) {
 }
 
 TEST(Cli, RunWritesResultAndTrajectory) {
-  const fs::path dir = fs::temp_directory_path();
+  const fs::path dir = test_dir();
   std::string err;
   ASSERT_EQ(run_cli("run " + preset("stun.json") + " --duration 1 --out " + (dir / "r.json").string() +
                         " --trajectory " + (dir / "t.csv").string() + " --sample-rate 100",
