@@ -15,11 +15,11 @@ constexpr double kEntrySlip = 0.01;
 // Speeds (m/s) this small are round-off, not motion: below every tolerance an integrator is run at.
 constexpr double kDeadTail = 1e-12;
 
-// The flat, horizontal bed a ball can roll on in closed form: a plane (bounded or not) whose normal is along
-// -gravity.
-bool flat_bed(const Collider& c, const Vec3& gravity, Vec3& normal, Vec3& point) {
-  if (const auto* s = std::get_if<Plane>(&c.shape)) normal = s->normal, point = s->point;
-  else if (const auto* s = std::get_if<BoundedPlane>(&c.shape)) normal = glm::normalize(glm::cross(s->u, s->v)), point = s->origin;
+// The flat, horizontal bed a ball can roll on in closed form: a plane (bounded or not) whose unit normal (from the
+// contact cache, 0 for other shapes) is along -gravity; `point` is a point of it.
+bool flat_bed(const Collider& c, const Vec3& normal, const Vec3& gravity, Vec3& point) {
+  if (const auto* s = std::get_if<Plane>(&c.shape)) point = s->point;
+  else if (const auto* s = std::get_if<BoundedPlane>(&c.shape)) point = s->origin;
   else return false;
   const double g = glm::length(gravity);
   return g > 0 && glm::dot(normal, -gravity / g) > 1.0 - 1e-12;
@@ -74,7 +74,8 @@ int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& heig
     const auto pen = penetration(model_.colliders[c].shape, p, r, margin);
     if (!pen || pen->depth <= -margin) continue;
     Vec3 point;
-    if (support >= 0 || !flat_bed(model_.colliders[c], model_.options.gravity, normal, point) ||
+    normal = cache_.plane_normal[c];
+    if (support >= 0 || !flat_bed(model_.colliders[c], normal, model_.options.gravity, point) ||
         glm::dot(pen->normal, normal) < 1.0 - 1e-12)  // over a pocket the rim, not the bed, holds the ball
       return -1;
     support = static_cast<int>(c);
