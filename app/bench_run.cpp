@@ -8,29 +8,32 @@
 namespace shotlab {
 namespace {
 
-// Steps per contact, from the step end times and the contact events: a contact [begin, end] is overlapped by
-// step k, which spans (t_{k-1}, t_k], when t_k > begin and t_{k-1} < end, i.e. by the steps from the first t_k >
-// begin through the first t_k >= end. Contacts with the bed are left out: a ball on the table is always in one.
-void count_contact_steps(const std::vector<Event>& events, const std::vector<double>& step_ends, double end_time,
-                         RunResult& r) {
+// Steps per contact, from the step end times of each ball's islands and the contact events: a contact [begin, end]
+// of ball A is overlapped by step k of A's island, which spans (t_{k-1}, t_k], when t_k > begin and t_{k-1} < end,
+// i.e. by the steps from the first t_k > begin through the first t_k >= end. Contacts with the bed are left out: a
+// ball on the table is always in one.
+void count_contact_steps(const Model& model, const std::vector<Event>& events,
+                         const std::vector<std::vector<double>>& step_ends, double end_time, RunResult& r) {
   std::map<std::vector<std::string>, double> open;
-  std::vector<std::pair<double, double>> spans;
+  std::vector<std::pair<std::vector<std::string>, std::pair<double, double>>> spans;
   for (const Event& e : events) {
     if (e.kind != "contact_begin" && e.kind != "contact_end") continue;
     if (std::find(e.bodies.begin(), e.bodies.end(), "bed") != e.bodies.end()) continue;
     if (e.kind == "contact_begin") {
       open[e.bodies] = e.time;
     } else if (auto it = open.find(e.bodies); it != open.end()) {
-      spans.push_back({it->second, e.time});
+      spans.push_back({e.bodies, {it->second, e.time}});
       open.erase(it);
     }
   }
-  for (const auto& [bodies, begin] : open) spans.push_back({begin, end_time});
+  for (const auto& [bodies, begin] : open) spans.push_back({bodies, {begin, end_time}});
   long total = 0;
-  for (const auto& [begin, end] : spans) {
-    const auto first = std::upper_bound(step_ends.begin(), step_ends.end(), begin);
-    auto last = std::lower_bound(step_ends.begin(), step_ends.end(), end);
-    if (last != step_ends.end()) ++last;
+  for (const auto& [bodies, span] : spans) {
+    const auto [begin, end] = span;
+    const std::vector<double>& ends = step_ends[model.ball_index(bodies[0])];
+    const auto first = std::upper_bound(ends.begin(), ends.end(), begin);
+    auto last = std::lower_bound(ends.begin(), ends.end(), end);
+    if (last != ends.end()) ++last;
     total += std::max<long>(0, last - first);
   }
   r.contacts = static_cast<int>(spans.size());
@@ -53,8 +56,11 @@ RunResult run_case(const std::string& data_root, const BenchCase& c, const Metho
   r.energy0 = sim.energy().total();
   r.momentum0 = sim.momentum();
 
-  std::vector<double> step_ends;  // the observer only records a time: it must not distort the wall time
-  sim.set_observer([&](const StepSpan& span) { step_ends.push_back(span.t1); });
+  // The step end times of each ball's islands. The observer only records times: it must not distort the wall time.
+  std::vector<std::vector<double>> step_ends(sim.state().ball_count());
+  sim.set_observer([&](const Island& island) {
+    for (int i : island.balls()) step_ends[i].push_back(island.time());
+  });
   if (c.until_rest) {
     // Frames of 1/60 s, as the GUI runs; stop at the first frame where everything is at rest.
     while (sim.time() < scene.duration && sim.status() == Status::Ok && !sim.at_rest()) sim.advance(1.0 / 60);
@@ -67,7 +73,7 @@ RunResult run_case(const std::string& data_root, const BenchCase& c, const Metho
   r.stats = sim.stats();
   r.energy1 = sim.energy().total();
   r.momentum1 = sim.momentum();
-  count_contact_steps(sim.events(), step_ends, r.end_time, r);
+  count_contact_steps(sim.model(), sim.events(), step_ends, r.end_time, r);
   return r;
 }
 

@@ -35,8 +35,8 @@ CollisionProbe probe_collision(const ContactMaterial& material, double mass, dou
   }
   Simulation sim(model, state);
   CollisionProbe out;
-  sim.set_observer([&](const StepSpan& span) {
-    const auto list = contacts(sim.model(), State{span.t1, span.x1, state.in_play, {}, {}});
+  sim.set_observer([&](const Island& island) {
+    const auto list = contacts(island.model(), island.state());
     if (list.empty()) return;
     ++out.steps;
     for (const Contact& c : list) {

@@ -32,10 +32,14 @@ double closing_time(double gap, double s, double a) {
 }  // namespace
 
 void refresh_sleepers(const Model& model, const State& state, const double* x, ContactCache& cache) {
-  std::vector<uint8_t> key(state.in_play);
+  // The key is the flags the list was built for, compared in place: this runs in every broad phase.
+  const size_t n = state.in_play.size();
+  auto& key = cache.sleep_key;
+  if (n > 0 && key.size() == n + state.asleep.size() && std::equal(state.in_play.begin(), state.in_play.end(), key.begin()) &&
+      std::equal(state.asleep.begin(), state.asleep.end(), key.begin() + n))
+    return;
+  key = state.in_play;
   key.insert(key.end(), state.asleep.begin(), state.asleep.end());
-  if (key == cache.sleep_key && !cache.sleep_key.empty()) return;
-  cache.sleep_key = std::move(key);
   cache.sleepers.clear();
   cache.max_radius = 0;
   for (int i = 0; i < state.ball_count(); ++i) {

@@ -42,10 +42,11 @@ struct ContactCache {
 
 // Calls fn(i, j) for every pair of balls in play, at least one of them awake, whose x extents come within `reach`
 // (m) of each other; with `sleeping_pairs`, also pairs of two sleepers. The candidates of sweep-and-prune along x:
-// O(awake log awake + candidates), whatever the number of sleepers.
+// O(awake log awake + candidates) when the caller passes the list of awake balls in play (`awake`), plus a pass over
+// the balls' flags without it.
 template <class Fn>
 void sweep_pairs(const Model& model, const State& state, const double* x, ContactCache& cache, double reach,
-                 bool sleeping_pairs, Fn&& fn);
+                 bool sleeping_pairs, Fn&& fn, const std::vector<int>* awake = nullptr);
 
 // The sleepers whose x extents come within `reach` of ball i's (i itself excluded).
 template <class Fn>

@@ -17,7 +17,7 @@ void sleepers_near(const Model& model, const double* x, const ContactCache& cach
 
 template <class Fn>
 void sweep_pairs(const Model& model, const State& state, const double* x, ContactCache& cache, double reach,
-                 bool sleeping_pairs, Fn&& fn) {
+                 bool sleeping_pairs, Fn&& fn, const std::vector<int>* awake) {
   refresh_sleepers(model, state, x, cache);
   auto left = [&](int i) { return x[9 * i] - model.balls[i].radius; };
   auto sweep = [&](const std::vector<int>& order) {
@@ -26,9 +26,13 @@ void sweep_pairs(const Model& model, const State& state, const double* x, Contac
       for (size_t b = a + 1; b < order.size() && left(order[b]) < right; ++b) fn(order[a], order[b]);
     }
   };
-  cache.awake.clear();
-  for (int i = 0; i < state.ball_count(); ++i)
-    if (state.active(i)) cache.awake.push_back(i);
+  if (awake) {
+    cache.awake = *awake;
+  } else {
+    cache.awake.clear();
+    for (int i = 0; i < state.ball_count(); ++i)
+      if (state.active(i)) cache.awake.push_back(i);
+  }
   std::sort(cache.awake.begin(), cache.awake.end(), [&](int a, int b) { return left(a) < left(b); });
   sweep(cache.awake);
   if (!cache.sleepers.empty())

@@ -97,7 +97,7 @@ bool Regimes::update(State& state, StateVector& x, double dt) {
   if (n == 0) return false;
   if (state.asleep.size() != static_cast<size_t>(n)) state.asleep.assign(n, 0);
   if (state.rolling_on.size() != static_cast<size_t>(n)) state.rolling_on.assign(n, -1);
-  still_for_.resize(n, 0.0);
+  if (state.still_for.size() != static_cast<size_t>(n)) state.still_for.assign(n, 0.0);
   // Neighbour lists within contact_margin (sleep groups use only the frozen-touching ones).
   touching_.assign(n, {});
   overlapping_pairs(model_, state, x.data(), cache_, std::max(model_.options.contact_margin, kTouchSlack));
@@ -180,7 +180,7 @@ bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
   for (int i = 0; i < n; ++i) {
     if (!state.in_play[i]) continue;
     resting[i] = state.sleeping(i) || at_rest(state, x, i);
-    still_for_[i] = resting[i] && !state.sleeping(i) ? still_for_[i] + dt : 0.0;
+    state.still_for[i] = resting[i] && !state.sleeping(i) ? state.still_for[i] + dt : 0.0;
   }
   bool changed = false;
   // Wake: flood from every awake ball that is moving through the touching graph; every sleeper reached wakes. A
@@ -197,7 +197,7 @@ bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
       if (!state.sleeping(j) || seen[j]) return;
       seen[j] = 1;
       state.asleep[j] = 0;
-      still_for_[j] = 0;
+      state.still_for[j] = 0;
       changed = true;
       stack.push_back(j);
     };
@@ -217,7 +217,7 @@ bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
     bool ready = true;
     for (size_t k = 0; k < group.size(); ++k) {
       const int i = group[k];
-      ready = ready && still_for_[i] >= model_.options.sleep_time;
+      ready = ready && state.still_for[i] >= model_.options.sleep_time;
       for (int j : touching_[i])
         if (state.active(j) && !seen[j] && frozen_touch(i, j)) {
           seen[j] = 1;

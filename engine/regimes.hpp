@@ -27,9 +27,9 @@ namespace shotlab {
 class Regimes {
  public:
   explicit Regimes(const Model& model) : model_(model), cache_(model) {}
-  // After an accepted step of dt seconds ending at state x: updates state.asleep and state.rolling, zeroes the
-  // velocities of new sleepers and snaps new rollers onto the rolling constraint. Returns true when any ball changed
-  // regime: the system changed and the integrator must restart.
+  // After an accepted step of dt seconds ending at state x: updates state.asleep, state.rolling_on and
+  // state.still_for, zeroes the velocities of new sleepers and snaps new rollers onto the rolling constraint.
+  // Returns true when any ball changed regime: the system changed and the integrator must restart.
   bool update(State& state, StateVector& x, double dt);
 
  private:
@@ -44,7 +44,6 @@ class Regimes {
 
   const Model& model_;
   ContactCache cache_;
-  std::vector<double> still_for_;           // s each ball has been at rest
   std::vector<std::vector<int>> touching_;  // neighbours (frozen-touching included), rebuilt each update
 };
 

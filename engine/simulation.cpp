@@ -1,60 +1,98 @@
 #include "simulation.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
-namespace shotlab {
+#include "regimes.hpp"
 
-const char* status_name(Status s) {
-  static constexpr const char* names[] = {"ok", "step_limit", "non_finite", "step_too_small", "unstable"};
-  return names[static_cast<int>(s)];
-}
+namespace shotlab {
 
 Simulation::Simulation(Model model, State initial)
     : model_(std::move(model)),
       integ_(std::move(initial)),
-      state_(integ_),
-      dynamics_(model_, integ_),
-      stepper_(make_stepper(model_.integrator)),
-      detector_(model_),
-      regimes_(model_),
-      cap_cache_(model_),
-      dt_next_(is_adaptive(model_.integrator.method) ? model_.integrator.initial_step : model_.integrator.fixed_step) {
-  span_.t0 = span_.t1 = integ_.time;
-  span_.x1 = integ_.x;
-  restart();
+      cache_(model_),
+      partition_(model_),
+      sync_time_(integ_.time) {
   // Balls that start at rest (in their static sink on the bed, nothing moving against them) sleep from the start
-  // instead of after sleep_time of integrating a contact that cannot move.
-  if (regimes_.update(integ_, span_.x1, model_.options.sleep_time)) restart();
+  // instead of after sleep_time of integrating a contact that cannot move. The update also sizes the regime flags.
+  Regimes(model_).update(integ_, integ_.x, model_.options.sleep_time);
   state_ = integ_;
   const Energy e = energy();
   energy_start_ = e.total();
   energy_scale_ = e.kinetic + e.elastic + 1.0;
+  energy_synced_ = energy_start_;
+  synchronise();
 }
 
-void Simulation::restart() {
-  span_.f1.resize(span_.x1.size());
-  dynamics_(span_.x1, span_.f1, span_.t1);
-  span_.x0 = span_.x1;
-  span_.f0 = span_.f1;
-  span_.t0 = span_.t1;
-  stepper_->reset();
-  integ_.x = span_.x1;
-  integ_.time = span_.t1;
-  detector_.reset(integ_);
-  energy_frozen_ = shotlab::energy(model_, integ_, cap_cache_, true).total() -
-                   shotlab::energy(model_, integ_, cap_cache_, false).total();
+void Simulation::synchronise() {
+  for (const auto& island : islands_) {
+    island->write_end(integ_);
+    island->take_events(sync_time_, located_);
+    const double e = island->energy(sync_time_);
+    energy_synced_ += e - island->energy_ref();
+    island->set_energy_ref(e);
+  }
+  integ_.time = sync_time_;
+  Partition p;
+  if (model_.options.islands) {
+    // Awake balls are in islands (all of them, at the start).
+    std::vector<int> awake;
+    if (islands_.empty()) {
+      for (int i = 0; i < integ_.ball_count(); ++i)
+        if (integ_.active(i)) awake.push_back(i);
+    }
+    for (const auto& island : islands_)
+      for (int i : island->balls())
+        if (integ_.active(i)) awake.push_back(i);
+    p = partition_(integ_, awake);
+  } else {  // the plain path: every ball in one system, for good
+    p.islands.emplace_back(integ_.ball_count());
+    std::iota(p.islands[0].begin(), p.islands[0].end(), 0);
+    p.horizon = std::numeric_limits<double>::infinity();
+  }
+  // An island that keeps its balls keeps running (its step size and stepper history); a new one starts with the
+  // smallest next step of the islands its balls come from.
+  std::vector<double> step_of(integ_.ball_count(), model_.integrator.initial_step);
+  for (const auto& island : islands_)
+    for (int i : island->balls()) step_of[i] = island->next_step();
+  std::vector<std::unique_ptr<Island>> next;
+  for (std::vector<int>& balls : p.islands) {
+    const auto same = std::find_if(islands_.begin(), islands_.end(),
+                                   [&](const auto& island) { return island && island->balls() == balls; });
+    if (same != islands_.end()) {
+      next.push_back(std::move(*same));
+      continue;
+    }
+    double first = std::numeric_limits<double>::infinity();
+    for (int i : balls) first = std::min(first, step_of[i]);
+    next.push_back(std::make_unique<Island>(model_, integ_, std::move(balls), first));
+  }
+  for (const auto& island : islands_) {
+    if (!island) continue;
+    retired_ += island->stats();
+    // Its balls at the clock: those in no new island stay as they are now (the others are interpolated anew).
+    for (int i : island->balls()) {
+      std::copy_n(integ_.x.begin() + kBallDofs * i, kBallDofs, state_.x.begin() + kBallDofs * i);
+      state_.in_play[i] = integ_.in_play[i];
+      state_.asleep[i] = integ_.asleep[i];
+      state_.rolling_on[i] = integ_.rolling_on[i];
+      state_.still_for[i] = integ_.still_for[i];
+    }
+  }
+  islands_ = std::move(next);
+  sync_time_ = integ_.time + p.horizon;
 }
 
 bool Simulation::at_rest() const {
-  for (int i = 0; i < state_.ball_count(); ++i) {
-    if (state_.sleeping(i)) continue;  // frozen at rest
-    const Motion m = motion(i);
-    if (m != Motion::Stationary && m != Motion::Pocketed) return false;
-  }
+  for (const auto& island : islands_)  // balls in no island sleep or are out of play
+    for (int i : island->balls()) {
+      if (state_.sleeping(i)) continue;  // frozen at rest
+      const Motion m = motion(i);
+      if (m != Motion::Stationary && m != Motion::Pocketed) return false;
+    }
   return true;
 }
 
@@ -64,167 +102,80 @@ Status Simulation::advance(double dt) {
   if (status_ != Status::Ok) return status_;
   const auto wall0 = std::chrono::steady_clock::now();
   const double target = state_.time + dt;
-  int steps = 0;
-  while (span_.t1 < target && status_ == Status::Ok) {
-    if (steps++ >= model_.integrator.max_steps_per_call) {
+  std::vector<int> steps(islands_.size(), 0);
+  // Always step the island that is furthest behind: then every island's last step spans the time of any stop, and
+  // the caller's clock can be read off every island's dense output.
+  double reached = target;
+  while (status_ == Status::Ok && !islands_.empty()) {
+    const auto next = std::min_element(islands_.begin(), islands_.end(),
+                                       [](const auto& a, const auto& b) { return a->time() < b->time(); });
+    Island& island = **next;
+    if (island.time() >= target) break;
+    if (island.time() >= sync_time_) {
+      synchronise();
+      steps.assign(islands_.size(), 0);
+      continue;
+    }
+    if (steps[next - islands_.begin()]++ >= model_.integrator.max_steps_per_call) {
       std::ostringstream msg;
       msg << "step limit: " << model_.integrator.max_steps_per_call << " steps in one advance() did not reach t = "
-          << target << " s; stopped at t = " << span_.t1 << " s with step " << stats_.last_step << " s. "
-          << describe_balls(span_.x1);
+          << target << " s; stopped at t = " << island.time() << " s with step " << island.stats().last_step << " s. "
+          << island.describe_balls();
       stop(Status::StepLimit, msg.str());
-      break;
+    } else if (!island.step(sync_time_)) {
+      stop(island.status(), island.diagnostic());
+    } else if (observer_) {
+      observer_(island);
     }
-    step();
+    if (status_ != Status::Ok) reached = island.time();  // stay at the last good point
   }
-  if (status_ == Status::Ok) {
-    span_.interpolate(target, state_.x);
-    state_.time = target;
-  } else {  // stay at the last good point
-    state_.x = span_.x1;
-    state_.time = span_.t1;
-  }
-  state_.in_play = integ_.in_play;
-  state_.asleep = integ_.asleep;
-  state_.rolling_on = integ_.rolling_on;
-  if (status_ == Status::Ok) {
-    const double e = shotlab::energy(model_, state_, cap_cache_, false).total() + energy_frozen_;
-    if (e - energy_start_ > energy_scale_) {
-      std::ostringstream msg;
-      msg << "unstable: the total energy grew from " << energy_start_ << " J to " << e << " J by t = " << state_.time
-          << " s, which a passive system cannot do: the step is too large for the contact stiffness (use an adaptive "
-             "method, a smaller fixed step or a softer material). "
-          << describe_balls(state_.x);
-      stop(Status::Unstable, msg.str());
+  // The state at the clock; balls in no island stay as the last synchronisation left them. Events are handed over up
+  // to the time every island has reached (a little past the clock): no island can locate an earlier one later.
+  double frontier = std::numeric_limits<double>::infinity();
+  for (const auto& island : islands_) frontier = std::min(frontier, island->time());
+  const double wall = stats_.wall_seconds;
+  stats_ = retired_;
+  for (const auto& island : islands_) {
+    island->interpolate(std::min(reached, island->time()), state_.x);
+    island->take_events(frontier, located_);
+    const State& s = island->state();
+    for (size_t k = 0; k < island->balls().size(); ++k) {
+      const int i = island->balls()[k];
+      state_.in_play[i] = s.in_play[k];
+      state_.asleep[i] = s.asleep[k];
+      state_.rolling_on[i] = s.rolling_on[k];
+      state_.still_for[i] = s.still_for[k];
     }
+    stats_ += island->stats();
+    stats_.last_step = island->stats().last_step;
   }
-  stats_.rhs_evaluations = dynamics_.evaluations();
-  stats_.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  state_.time = reached;
+  std::stable_sort(located_.begin(), located_.end(), [](const Event& a, const Event& b) {
+    return a.time < b.time || (a.time == b.time && a.bodies < b.bodies);
+  });
+  events_.insert(events_.end(), located_.begin(), located_.end());
+  located_.clear();
+  if (status_ == Status::Ok) check_energy(reached);
+  stats_.wall_seconds = wall + std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return status_;
 }
 
-bool Simulation::step() {
-  const bool adaptive = is_adaptive(model_.integrator.method);
-  double dt = adaptive ? dt_next_ : model_.integrator.fixed_step;
-  const double wanted = dt;
-  if (adaptive) dt = std::min(dt, time_to_possible_contact(model_, integ_, span_.x1.data(), dt, cap_cache_));
-  const bool capped = dt < wanted;
-  StateVector x, f;
-  double t, tried;
-  int retries = 0;
-  const long rejected_before = stats_.rejected_steps;
-  for (;;) {
-    x = span_.x1;
-    f = span_.f1;
-    t = span_.t1;
-    tried = dt;
-    if (stepper_->try_step(dynamics_, x, f, t, dt)) {
-      // A contact that begins or ends inside the step puts a kink (linear damping: a jump) in the force, where every
-      // embedded error estimate misjudges a high-order step (MODEL.md, "Numerical facts"). Redo the step so that it
-      // ends at the change, located on this step's dense output; the next step then starts at the kink. Changes in
-      // the first 1 % of a step are left alone: that is where a redone step's successor finds them.
-      if (!adaptive || retries == 3) break;
-      const StepSpan trial{span_.t1, t, span_.x1, span_.f1, x, f};
-      const double onset = detector_.first_contact_change(trial, integ_);
-      if (onset <= span_.t1 + 0.01 * tried || onset >= t) break;
-      dt = onset - span_.t1;
-      ++retries;
-      ++stats_.redone_steps;
-      continue;
-    } else if (!std::isfinite(dt) || dt < 1e-14) {
-      std::ostringstream msg;
-      msg << "step too small: the error control shrank the step to " << dt << " s at t = " << span_.t1 << " s. "
-          << describe_balls(span_.x1);
-      stop(Status::StepTooSmall, msg.str());
-      return false;
-    }
-    ++stats_.rejected_steps;
-  }
-  stats_.last_step = tried;
-  ++stats_.steps;
-  // After a rejection, do not grow the step at once: odeint's controller would grow it up to 5x and, on a
-  // stability-limited problem (the stiff friction switch), be rejected again.
-  dt_next_ = retries > 0 || stats_.rejected_steps > rejected_before ? std::min(dt, tried) : capped ? std::max(dt, wanted) : dt;
-
-  if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) {
+void Simulation::check_energy(double t) {
+  double e = energy_synced_;
+  for (const auto& island : islands_) e += island->energy(t) - island->energy_ref();
+  if (e - energy_start_ > energy_scale_) {
     std::ostringstream msg;
-    msg << "non-finite state in the step from t = " << span_.t1 << " s to " << t << " s; balls: ";
-    for (int i = 0; i < integ_.ball_count(); ++i)
-      for (int k = 0; k < kBallDofs; ++k)
-        if (!std::isfinite(x[9 * i + k])) {
-          msg << model_.balls[i].id << " ";
-          break;
-        }
-    msg << ". Last finite state: " << describe_balls(span_.x1);
-    stop(Status::NonFinite, msg.str());
-    return false;
+    msg << "unstable: the total energy grew from " << energy_start_ << " J to " << e << " J by t = " << state_.time
+        << " s, which a passive system cannot do: the step is too large for the contact stiffness (use an adaptive "
+           "method, a smaller fixed step or a softer material). ";
+    for (const auto& island : islands_) msg << island->describe_balls() << " ";
+    stop(Status::Unstable, msg.str());
   }
-
-  span_.x0.swap(span_.x1);
-  span_.f0.swap(span_.f1);
-  span_.t0 = span_.t1;
-  span_.x1 = std::move(x);
-  span_.f1 = std::move(f);
-  span_.t1 = t;
-  integ_.x = span_.x1;
-  integ_.time = t;
-
-  std::vector<Exit> exits;
-  detector_.scan(span_, integ_, events_, exits);
-  if (observer_) observer_(span_);
-  // A ball that left play is frozen where it left.
-  StateVector at;
-  for (const Exit& e : exits) {
-    span_.interpolate(e.time, at);
-    integ_.in_play[e.ball] = 0;
-    set_position(span_.x1, e.ball, position(at, e.ball));
-    set_velocity(span_.x1, e.ball, Vec3{0.0});
-    set_spin(span_.x1, e.ball, Vec3{0.0});
-  }
-  const bool regime_changed = regimes_.update(integ_, span_.x1, t - span_.t0);
-  if (!exits.empty() || regime_changed) {
-    // The system lost or froze bodies, or woke them: the integrator starts afresh from the step's end. The finished
-    // step's interpolant stays for the caller's clock, with the exited balls frozen in it.
-    const StepSpan finished = span_;
-    restart();
-    span_.x0 = finished.x0;
-    span_.f0 = finished.f0;
-    span_.t0 = finished.t0;
-    for (const Exit& e : exits)
-      for (int k = 0; k < kBallDofs; ++k) {
-        span_.x0[9 * e.ball + k] = span_.x1[9 * e.ball + k];
-        span_.f0[9 * e.ball + k] = 0.0;
-      }
-  }
-  return true;
 }
 
 void Simulation::stop(Status why, std::string message) {
   status_ = why;
   diagnostic_ = std::move(message);
-}
-
-// The balls worth naming in a diagnostic: those in contact at x with depth and force, or else the pair closest to
-// touching (a failing step usually runs into the contact that this pair is about to make).
-std::string Simulation::describe_balls(const StateVector& x) const {
-  State s = integ_;
-  s.x = x;
-  std::ostringstream out;
-  const auto list = shotlab::contacts(model_, s);
-  for (const Contact& c : list)
-    out << (&c == &list.front() ? "Contacts:" : "") << " [" << model_.balls[c.ball].id << " - "
-        << (c.other_ball >= 0 ? model_.balls[c.other_ball].id : model_.colliders[c.collider].name)
-        << ": depth " << c.depth << " m, force " << c.force.normal << " N]";
-  if (!list.empty()) return out.str();
-  double best = std::numeric_limits<double>::infinity();
-  std::string pair = "none";
-  for (int i = 0; i < s.ball_count(); ++i)
-    for (int j = i + 1; j < s.ball_count(); ++j) {
-      if (!s.in_play[i] || !s.in_play[j]) continue;
-      const double gap = glm::length(position(x, i) - position(x, j)) - model_.balls[i].radius - model_.balls[j].radius;
-      if (gap < best) best = gap, pair = model_.balls[i].id + " - " + model_.balls[j].id;
-    }
-  out << "No contacts; closest pair: " << pair << " (gap " << best << " m).";
-  return out.str();
 }
 
 }  // namespace shotlab

@@ -1,6 +1,8 @@
-// The stepping loop (MODEL.md 5.2.4): advance(dt) moves the clock to exactly t + dt. The integrator steps on its
-// own schedule, independent of how the caller slices time: it steps past the target and the state at the target
-// comes from the step's dense output. Frames of 1/30 s, 1/240 s or one call give bit-identical results.
+// The simulation: advance(dt) moves the clock to exactly t + dt. The scene is split into islands (island.hpp), each
+// integrated on its own clock with its own steps, up to a synchronisation time before which no two islands can
+// touch (partition.hpp); there the islands are joined and split again. Every island steps on its own schedule,
+// independent of how the caller slices time: it steps past the target and the state at the target comes from the
+// step's dense output. Frames of 1/30 s, 1/240 s or one call give bit-identical results.
 #pragma once
 #include <chrono>
 #include <functional>
@@ -9,35 +11,12 @@
 #include <vector>
 
 #include "diagnostics.hpp"
-#include "dynamics.hpp"
-#include "events.hpp"
-#include "hermite.hpp"
-#include "regimes.hpp"
+#include "island.hpp"
 #include "model.hpp"
+#include "partition.hpp"
 #include "state.hpp"
-#include "stepper.hpp"
 
 namespace shotlab {
-
-enum class Status {
-  Ok,
-  StepLimit,     // max_steps_per_call steps in one advance() without reaching the target: the clock stops short
-  NonFinite,     // the state became NaN or infinite: the simulation stops at the last finite step
-  StepTooSmall,  // the error control shrank the step below 1e-14 s
-  Unstable,      // the total energy grew by more than the initial kinetic and elastic energy plus 1 J: a passive
-                 // system cannot gain energy, so the integration has gone unstable (a fixed step too large for the
-                 // stiffness) while staying finite
-};
-const char* status_name(Status s);
-
-struct Stats {
-  long steps = 0;           // accepted steps
-  long rejected_steps = 0;  // attempts the error control threw away
-  long redone_steps = 0;    // accepted attempts redone to end where a contact begins or ends
-  long rhs_evaluations = 0; // calls of the right-hand side (Jacobian columns included)
-  double wall_seconds = 0;  // spent inside advance()
-  double last_step = 0;     // s, the most recent accepted step
-};
 
 class Simulation {
  public:
@@ -57,41 +36,40 @@ class Simulation {
   Status status() const { return status_; }
   const std::string& diagnostic() const { return diagnostic_; }
 
-  Motion motion(int ball) const { return classify(model_, cap_cache_, state_, state_.x.data(), ball); }
+  Motion motion(int ball) const { return classify(model_, cache_, state_, state_.x.data(), ball); }
   Energy energy() const { return shotlab::energy(model_, state_); }
   Vec3 momentum() const { return shotlab::momentum(model_, state_); }
   std::vector<Contact> contacts() const { return shotlab::contacts(model_, state_); }
   // True when every ball in play is stationary (or out of play): nothing will move again.
   bool at_rest() const;
 
-  // Called after every accepted step with its span (odeint's observer): step-size plots, per-contact counts.
-  void set_observer(std::function<void(const StepSpan&)> observer) { observer_ = std::move(observer); }
+  // Called after every accepted step of any island (odeint's observer): step-size plots, per-contact counts. The
+  // island's model, state and span are its own (island.hpp): ball k of the island is ball balls()[k] of the scene.
+  void set_observer(std::function<void(const Island&)> observer) { observer_ = std::move(observer); }
+  const std::vector<std::unique_ptr<Island>>& islands() const { return islands_; }
 
  private:
-  bool step();
-  void restart();  // after the system changed (a ball left play): fresh derivative, stepper history, snapshot
+  void synchronise();  // every island is at sync_time_: join them into integ_ and split the scene again
+  void check_energy(double t);
   void stop(Status why, std::string message);
-  std::string describe_balls(const StateVector& x) const;
 
   Model model_;
-  State integ_;  // integrator state at span_.t1 (its in_play is what the right-hand side sees)
+  State integ_;  // the whole scene at the last synchronisation; balls in no island stay as they are here
   State state_;  // the state at the caller's clock, interpolated
-  Dynamics dynamics_;
-  std::unique_ptr<Stepper> stepper_;
-  EventDetector detector_;
-  Regimes regimes_;
-  ContactCache cap_cache_;  // broad phase of the step cap
-  StepSpan span_;
-  double dt_next_;
+  ContactCache cache_;  // motion states of the whole scene
+  Partitioner partition_;
+  std::vector<std::unique_ptr<Island>> islands_;
+  double sync_time_;  // s: the islands step up to here, then synchronise
   std::vector<Event> events_;
-  Stats stats_;
+  Stats stats_, retired_;  // retired_: what islands no longer running did
   Status status_ = Status::Ok;
   std::string diagnostic_;
-  std::function<void(const StepSpan&)> observer_;
+  std::function<void(const Island&)> observer_;
   double energy_start_, energy_scale_;  // J: total at t = 0, and what it may grow by before the run is Unstable
-  // J: the energy of sleepers and of the beds under rolling balls, constant between regime changes (taken at each
-  // restart), so that the energy check after every advance() costs O(awake balls), not O(balls).
-  double energy_frozen_ = 0;
+  // J: the total at the last synchronisation. Balls in no island do not move, so the total at any later time is this
+  // plus what the islands' energies changed since: the check after every advance() costs O(balls in islands).
+  double energy_synced_;
+  std::vector<Event> located_;  // taken from islands, not yet handed over
 };
 
 }  // namespace shotlab

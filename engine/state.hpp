@@ -29,6 +29,7 @@ struct State {
   std::vector<uint8_t> in_play; // 0 once a ball is pocketed or has left the table: frozen, touches nothing
   std::vector<uint8_t> asleep;  // 1 while a ball rests and nothing moving touches it (regimes.hpp); empty: none
   std::vector<int> rolling_on;  // the collider a ball rolls on in the rolling regime (regimes.hpp), else -1; empty: none
+  std::vector<double> still_for;  // s each ball has been at rest, towards sleep_time (regimes.hpp); empty: none
 
   int ball_count() const { return static_cast<int>(in_play.size()); }
   bool sleeping(int i) const { return static_cast<size_t>(i) < asleep.size() && asleep[i]; }

@@ -15,16 +15,17 @@ Shot::Shot(const Scene& start) : start_(start), chunk_(kFrameStep) {
   validate(start_);
   Prepared p = prepare(start_);
   sim_ = std::make_unique<Simulation>(std::move(p.model), std::move(p.state));
-  sim_->set_observer([this](const StepSpan& span) { observe(span); });
+  sim_->set_observer([this](const Island& island) { observe(island); });
   record();
 }
 
-void Shot::observe(const StepSpan& span) {
+void Shot::observe(const Island& island) {
+  const StepSpan& span = island.span();
   if (step_sizes_.size() < kMaxSamples) step_sizes_.push_back({span.t1, span.t1 - span.t0});
   // Largest ball-ball normal force at the end of the step; a gap of 5 ms without one starts a new collision.
   // Most steps have no touching pair: a distance check keeps the full contact evaluation off them.
-  const auto& in_play = sim_->state().in_play;
-  const auto& balls = sim_->model().balls;
+  const auto& in_play = island.state().in_play;
+  const auto& balls = island.model().balls;
   bool touching = false;
   for (size_t i = 0; i < balls.size() && !touching; ++i)
     for (size_t j = i + 1; j < balls.size() && !touching; ++j)
@@ -33,7 +34,7 @@ void Shot::observe(const StepSpan& span) {
   if (!touching) return;
   const State probe{span.t1, span.x1, in_play, {}, {}};
   double force = 0;
-  for (const Contact& c : contacts(sim_->model(), probe))
+  for (const Contact& c : contacts(island.model(), probe))
     if (c.other_ball >= 0) force = std::max(force, c.force.normal);
   if (force <= 0) return;
   if (span.t1 - last_contact_time_ > 5e-3) collision_force_.clear();

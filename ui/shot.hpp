@@ -48,7 +48,7 @@ class Shot {
 
  private:
   void record();
-  void observe(const StepSpan& span);
+  void observe(const Island& island);
 
   Scene start_;
   std::unique_ptr<Simulation> sim_;

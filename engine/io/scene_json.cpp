@@ -270,6 +270,7 @@ Scene parse_scene(const json& doc, const std::string& source) {
     m.optional("contact_margin", [&](const JsonNode& v) { s.model.options.contact_margin = v.positive(); });
     m.optional("sleep_time", [&](const JsonNode& v) { s.model.options.sleep_time = v.non_negative(); });
     m.optional("rolling_regime", [&](const JsonNode& v) { s.model.options.rolling_regime = v.boolean(); });
+    m.optional("islands", [&](const JsonNode& v) { s.model.options.islands = v.boolean(); });
     m.finish();
   });
   n.optional("integrator", [&](const JsonNode& v) { read_integrator(v, s.model.integrator); });
@@ -391,7 +392,8 @@ json scene_to_json(const Scene& s) {
                   {"rest_speed", s.model.options.rest_speed},
                   {"contact_margin", s.model.options.contact_margin},
                   {"sleep_time", s.model.options.sleep_time},
-                  {"rolling_regime", s.model.options.rolling_regime}};
+                  {"rolling_regime", s.model.options.rolling_regime},
+                  {"islands", s.model.options.islands}};
   const IntegratorOptions& o = s.model.integrator;
   doc["integrator"] = {{"method", method_name(o.method)}, {"abs_tol", o.abs_tol}, {"rel_tol", o.rel_tol},
                        {"fixed_step", o.fixed_step}, {"initial_step", o.initial_step},

@@ -8,11 +8,9 @@ namespace {
 
 // Records in `deepest` the deepest contact (bed excluded) at the end of any accepted step, m.
 void track_depth(Simulation& sim, double& deepest) {
-  sim.set_observer([&sim, &deepest](const StepSpan& span) {
-    State s = sim.state();
-    s.x = span.x1;
-    for (const Contact& c : shotlab::contacts(sim.model(), s))
-      if (c.other_ball >= 0 || sim.model().colliders[c.collider].name != "bed") deepest = std::max(deepest, c.depth);
+  sim.set_observer([&deepest](const Island& island) {
+    for (const Contact& c : shotlab::contacts(island.model(), island.state()))
+      if (c.other_ball >= 0 || island.model().colliders[c.collider].name != "bed") deepest = std::max(deepest, c.depth);
   });
 }
 

@@ -1,0 +1,245 @@
+#include "island.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "diagnostics.hpp"
+
+namespace shotlab {
+
+const char* status_name(Status s) {
+  static constexpr const char* names[] = {"ok", "step_limit", "non_finite", "step_too_small", "unstable"};
+  return names[static_cast<int>(s)];
+}
+
+Stats& Stats::operator+=(const Stats& o) {
+  steps += o.steps;
+  rejected_steps += o.rejected_steps;
+  redone_steps += o.redone_steps;
+  rhs_evaluations += o.rhs_evaluations;
+  return *this;
+}
+
+namespace {
+
+// The world's model with only the given balls (and the rods that hold them, renumbered).
+Model sub_model(const Model& world, const std::vector<int>& balls) {
+  Model m;
+  m.colliders = world.colliders;
+  m.pockets = world.pockets;
+  m.balls_leave_below_bed = world.balls_leave_below_bed;
+  m.materials = world.materials;
+  m.options = world.options;
+  m.integrator = world.integrator;
+  for (int i : balls) m.balls.push_back(world.balls[i]);
+  for (const Rod& rod : world.rods) {
+    const auto at = std::lower_bound(balls.begin(), balls.end(), rod.ball);
+    if (at != balls.end() && *at == rod.ball) m.rods.push_back({static_cast<int>(at - balls.begin()), rod.anchor, rod.length});
+  }
+  return m;
+}
+
+State sub_state(const State& world, const std::vector<int>& balls) {
+  State s;
+  s.time = world.time;
+  for (int i : balls) {
+    s.x.insert(s.x.end(), world.x.begin() + kBallDofs * i, world.x.begin() + kBallDofs * (i + 1));
+    s.in_play.push_back(world.in_play[i]);
+    s.asleep.push_back(world.sleeping(i));
+    s.rolling_on.push_back(world.rolling(i) ? world.rolling_on[i] : -1);
+    s.still_for.push_back(static_cast<size_t>(i) < world.still_for.size() ? world.still_for[i] : 0.0);
+  }
+  return s;
+}
+
+}  // namespace
+
+Island::Island(const Model& world, const State& world_state, std::vector<int> balls, double first_step)
+    : balls_(std::move(balls)),
+      model_(sub_model(world, balls_)),
+      integ_(sub_state(world_state, balls_)),
+      dynamics_(model_, integ_),
+      stepper_(make_stepper(model_.integrator)),
+      detector_(model_),
+      regimes_(model_),
+      cap_cache_(model_),
+      dt_next_(is_adaptive(model_.integrator.method) ? first_step : model_.integrator.fixed_step) {
+  span_.t0 = span_.t1 = integ_.time;
+  span_.x1 = integ_.x;
+  restart();
+  energy_ref_ = energy(span_.t1);
+}
+
+double Island::energy(double t) {
+  energy_state_ = integ_;
+  span_.interpolate(t, energy_state_.x);
+  return shotlab::energy(model_, energy_state_, cap_cache_, true).total();
+}
+
+void Island::restart() {
+  span_.f1.resize(span_.x1.size());
+  dynamics_(span_.x1, span_.f1, span_.t1);
+  span_.x0 = span_.x1;
+  span_.f0 = span_.f1;
+  span_.t0 = span_.t1;
+  stepper_->reset();
+  integ_.x = span_.x1;
+  integ_.time = span_.t1;
+  detector_.reset(integ_);
+}
+
+void Island::interpolate(double t, StateVector& world_x) {
+  span_.interpolate(t, scratch_);
+  for (size_t k = 0; k < balls_.size(); ++k)
+    std::copy_n(scratch_.begin() + kBallDofs * k, kBallDofs, world_x.begin() + kBallDofs * balls_[k]);
+}
+
+void Island::write_end(State& world) const {
+  for (size_t k = 0; k < balls_.size(); ++k) {
+    const int i = balls_[k];
+    std::copy_n(integ_.x.begin() + kBallDofs * k, kBallDofs, world.x.begin() + kBallDofs * i);
+    world.in_play[i] = integ_.in_play[k];
+    world.asleep[i] = integ_.asleep[k];
+    world.rolling_on[i] = integ_.rolling_on[k];
+    world.still_for[i] = integ_.still_for[k];
+  }
+}
+
+void Island::take_events(double t, std::vector<Event>& out) {
+  const auto end = std::find_if(events_.begin(), events_.end(), [t](const Event& e) { return e.time > t; });
+  out.insert(out.end(), std::make_move_iterator(events_.begin()), std::make_move_iterator(end));
+  events_.erase(events_.begin(), end);
+}
+
+bool Island::step(double limit) {
+  const bool adaptive = is_adaptive(model_.integrator.method);
+  double dt = adaptive ? dt_next_ : model_.integrator.fixed_step;
+  const double wanted = dt;
+  if (adaptive) dt = std::min(dt, time_to_possible_contact(model_, integ_, span_.x1.data(), dt, cap_cache_));
+  // The synchronisation time ends the step exactly (round-off in t1 + (limit - t1) is snapped below).
+  const bool to_limit = dt >= limit - span_.t1;
+  if (to_limit) dt = limit - span_.t1;
+  const bool capped = dt < wanted;
+  StateVector x, f;
+  double t, tried;
+  int retries = 0;
+  const long rejected_before = stats_.rejected_steps;
+  for (;;) {
+    x = span_.x1;
+    f = span_.f1;
+    t = span_.t1;
+    tried = dt;
+    if (stepper_->try_step(dynamics_, x, f, t, dt)) {
+      // A contact that begins or ends inside the step puts a kink (linear damping: a jump) in the force, where every
+      // embedded error estimate misjudges a high-order step (MODEL.md, "Numerical facts"). Redo the step so that it
+      // ends at the change, located on this step's dense output; the next step then starts at the kink. Changes in
+      // the first 1 % of a step are left alone: that is where a redone step's successor finds them.
+      if (!adaptive || retries == 3) break;
+      const StepSpan trial{span_.t1, t, span_.x1, span_.f1, x, f};
+      const double onset = detector_.first_contact_change(trial, integ_);
+      if (onset <= span_.t1 + 0.01 * tried || onset >= t) break;
+      dt = onset - span_.t1;
+      ++retries;
+      ++stats_.redone_steps;
+      continue;
+    } else if (!std::isfinite(dt) || dt < 1e-14) {
+      std::ostringstream msg;
+      msg << "step too small: the error control shrank the step to " << dt << " s at t = " << span_.t1 << " s. "
+          << describe_balls(span_.x1);
+      stop(Status::StepTooSmall, msg.str());
+      return false;
+    }
+    ++stats_.rejected_steps;
+  }
+  if (to_limit && retries == 0 && tried == limit - span_.t1) t = limit;
+  stats_.last_step = tried;
+  ++stats_.steps;
+  stats_.rhs_evaluations = dynamics_.evaluations();
+  // After a rejection, do not grow the step at once: odeint's controller would grow it up to 5x and, on a
+  // stability-limited problem (the stiff friction switch), be rejected again.
+  dt_next_ = retries > 0 || stats_.rejected_steps > rejected_before ? std::min(dt, tried) : capped ? std::max(dt, wanted) : dt;
+
+  if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) {
+    std::ostringstream msg;
+    msg << "non-finite state in the step from t = " << span_.t1 << " s to " << t << " s; balls: ";
+    for (int i = 0; i < integ_.ball_count(); ++i)
+      for (int k = 0; k < kBallDofs; ++k)
+        if (!std::isfinite(x[kBallDofs * i + k])) {
+          msg << model_.balls[i].id << " ";
+          break;
+        }
+    msg << ". Last finite state: " << describe_balls(span_.x1);
+    stop(Status::NonFinite, msg.str());
+    return false;
+  }
+
+  span_.x0.swap(span_.x1);
+  span_.f0.swap(span_.f1);
+  span_.t0 = span_.t1;
+  span_.x1 = std::move(x);
+  span_.f1 = std::move(f);
+  span_.t1 = t;
+  integ_.x = span_.x1;
+  integ_.time = t;
+
+  std::vector<Exit> exits;
+  detector_.scan(span_, integ_, events_, exits);
+  // A ball that left play is frozen where it left.
+  StateVector at;
+  for (const Exit& e : exits) {
+    span_.interpolate(e.time, at);
+    integ_.in_play[e.ball] = 0;
+    set_position(span_.x1, e.ball, position(at, e.ball));
+    set_velocity(span_.x1, e.ball, Vec3{0.0});
+    set_spin(span_.x1, e.ball, Vec3{0.0});
+  }
+  const bool regime_changed = regimes_.update(integ_, span_.x1, t - span_.t0);
+  if (!exits.empty() || regime_changed) {
+    // The system lost or froze bodies, or woke them: the integrator starts afresh from the step's end. The finished
+    // step's interpolant stays for the caller's clock, with the exited balls frozen in it.
+    const StepSpan finished = span_;
+    restart();
+    span_.x0 = finished.x0;
+    span_.f0 = finished.f0;
+    span_.t0 = finished.t0;
+    for (const Exit& e : exits)
+      for (int k = 0; k < kBallDofs; ++k) {
+        span_.x0[kBallDofs * e.ball + k] = span_.x1[kBallDofs * e.ball + k];
+        span_.f0[kBallDofs * e.ball + k] = 0.0;
+      }
+  }
+  return true;
+}
+
+void Island::stop(Status why, std::string message) {
+  status_ = why;
+  diagnostic_ = std::move(message);
+}
+
+// The balls worth naming in a diagnostic: those in contact at x with depth and force, or else the pair closest to
+// touching (a failing step usually runs into the contact that this pair is about to make).
+std::string Island::describe_balls(const StateVector& x) const {
+  State s = integ_;
+  s.x = x;
+  std::ostringstream out;
+  const auto list = shotlab::contacts(model_, s);
+  for (const Contact& c : list)
+    out << (&c == &list.front() ? "Contacts:" : "") << " [" << model_.balls[c.ball].id << " - "
+        << (c.other_ball >= 0 ? model_.balls[c.other_ball].id : model_.colliders[c.collider].name)
+        << ": depth " << c.depth << " m, force " << c.force.normal << " N]";
+  if (!list.empty()) return out.str();
+  double best = std::numeric_limits<double>::infinity();
+  std::string pair = "none";
+  for (int i = 0; i < s.ball_count(); ++i)
+    for (int j = i + 1; j < s.ball_count(); ++j) {
+      if (!s.in_play[i] || !s.in_play[j]) continue;
+      const double gap = glm::length(position(x, i) - position(x, j)) - model_.balls[i].radius - model_.balls[j].radius;
+      if (gap < best) best = gap, pair = model_.balls[i].id + " - " + model_.balls[j].id;
+    }
+  out << "No contacts; closest pair: " << pair << " (gap " << best << " m).";
+  return out.str();
+}
+
+}  // namespace shotlab

@@ -1,0 +1,105 @@
+// An island: a group of balls integrated together as one ODE system, on its own clock and with its own step size
+// (MODEL.md 5.2.4's stepping loop). The simulation (simulation.hpp) splits a scene into islands that cannot touch
+// each other before the next synchronisation time (partition.hpp), so a collision on one side of the table does not
+// force small steps on the other, and a ball that sleeps is in no island and costs nothing.
+//
+// An island is a small scene of its own: a sub-model holding its balls (the awake ones and the sleepers they may
+// reach) and every collider. The right-hand side, the event detector, the regimes and the step cap are the
+// whole-scene code run on that sub-model, so each costs what the island's balls cost, whatever else is on the table.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dynamics.hpp"
+#include "events.hpp"
+#include "hermite.hpp"
+#include "model.hpp"
+#include "regimes.hpp"
+#include "state.hpp"
+#include "stepper.hpp"
+
+namespace shotlab {
+
+enum class Status {
+  Ok,
+  StepLimit,     // max_steps_per_call steps in one advance() without reaching the target: the clock stops short
+  NonFinite,     // the state became NaN or infinite: the simulation stops at the last finite step
+  StepTooSmall,  // the error control shrank the step below 1e-14 s
+  Unstable,      // the total energy grew by more than the initial kinetic and elastic energy plus 1 J: a passive
+                 // system cannot gain energy, so the integration has gone unstable (a fixed step too large for the
+                 // stiffness) while staying finite
+};
+const char* status_name(Status s);
+
+struct Stats {
+  long steps = 0;           // accepted steps (of all islands)
+  long rejected_steps = 0;  // attempts the error control threw away
+  long redone_steps = 0;    // accepted attempts redone to end where a contact begins or ends
+  long rhs_evaluations = 0; // calls of the right-hand side (Jacobian columns included)
+  double wall_seconds = 0;  // spent inside advance()
+  double last_step = 0;     // s, the most recent accepted step
+  Stats& operator+=(const Stats& o);  // adds the counts
+};
+
+class Island {
+ public:
+  // The balls `balls` (indices into `world`, ascending) as they are in `world_state`, from its time on. `first_step`
+  // (s) is the adaptive methods' first trial step.
+  Island(const Model& world, const State& world_state, std::vector<int> balls, double first_step);
+  Island(const Island&) = delete;
+  Island& operator=(const Island&) = delete;
+
+  // One accepted step that ends at or before `limit` (s). Returns false when the island stopped: status() and
+  // diagnostic() say why, and the island stays at its last good point.
+  bool step(double limit);
+
+  double time() const { return span_.t1; }
+  const std::vector<int>& balls() const { return balls_; }  // world indices, ascending
+  const Model& model() const { return model_; }              // the sub-model: the island's balls, every collider
+  const State& state() const { return integ_; }              // the sub-state at time()
+  const StepSpan& span() const { return span_; }             // the last accepted step, on the sub-state
+  const Stats& stats() const { return stats_; }
+  double next_step() const { return dt_next_; }             // s, what the next step will try
+  Status status() const { return status_; }
+  const std::string& diagnostic() const { return diagnostic_; }
+  std::string describe_balls() const { return describe_balls(span_.x1); }
+
+  // Writes the island's balls at time t in [span().t0, time()] into a world state vector.
+  void interpolate(double t, StateVector& world_x);
+  // J: the total energy of the island's balls and contacts at time t in [span().t0, time()] (sleepers included), and
+  // at a reference time the simulation sets (the island's start, then each synchronisation). An island touches
+  // nothing outside it, so the scene's energy changes by what its islands' energies change.
+  double energy(double t);
+  double energy_ref() const { return energy_ref_; }
+  void set_energy_ref(double e) { energy_ref_ = e; }
+  // Writes the island's balls at time() (state and regime flags) into a world state.
+  void write_end(State& world) const;
+  // Hands over the events located so far at or before t, in time order.
+  void take_events(double t, std::vector<Event>& out);
+
+ private:
+  void restart();  // after the system changed (a ball left play): fresh derivative, stepper history, snapshot
+  void stop(Status why, std::string message);
+  std::string describe_balls(const StateVector& x) const;
+
+  std::vector<int> balls_;
+  Model model_;
+  State integ_;  // integrator state at span_.t1 (its in_play is what the right-hand side sees)
+  Dynamics dynamics_;
+  std::unique_ptr<Stepper> stepper_;
+  EventDetector detector_;
+  Regimes regimes_;
+  ContactCache cap_cache_;  // broad phase of the step cap
+  StepSpan span_;
+  double dt_next_;
+  std::vector<Event> events_;  // located, not yet handed over
+  Stats stats_;
+  double energy_ref_;
+  Status status_ = Status::Ok;
+  std::string diagnostic_;
+  StateVector scratch_;
+  State energy_state_;  // scratch for energy()
+};
+
+}  // namespace shotlab

@@ -1,0 +1,160 @@
+#include "partition.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace shotlab {
+namespace {
+// s: balls that could touch this soon are integrated together. Shorter splits a scene finer but synchronises more
+// often (every synchronisation cuts each island's step short once).
+constexpr double kLinkTime = 1e-3;
+// s: the longest the islands run apart while one of them holds two or more awake balls. Islands are split only when
+// they synchronise: a pair that separated after a collision stays one system until then.
+constexpr double kMaxHorizon = 0.02;
+// s: the longest they run apart when every island is a single awake ball and nothing else (nothing to split; on a
+// table only, where the height a ball can fall is in its energy bound).
+constexpr double kLoneHorizon = 0.25;
+// m: sleepers this close are frozen together and wake together (regimes.cpp's touching slack).
+constexpr double kFrozen = 1e-9;
+}  // namespace
+
+int Partitioner::root(int i) {
+  while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+  return i;
+}
+
+void Partitioner::join(int i, int j) {
+  i = root(i);
+  j = root(j);
+  if (i == j) return;
+  if (j < i) std::swap(i, j);
+  parent_[j] = i;
+  energy_[i] += energy_[j];
+  joined_ = true;
+}
+
+double Partitioner::bound(int i) {
+  // On a table the height a ball can fall is in its energy; elsewhere gravity adds up to g h within the horizon.
+  const double fall = model_.balls_leave_below_bed ? 0.0 : glm::length(model_.options.gravity) * kMaxHorizon;
+  return std::sqrt(2.0 * energy_[root(i)] / model_.balls[i].mass) + fall;
+}
+
+void Partitioner::join_sleeper(int i, int sleeper, const State& state) {
+  if (root(i) == root(sleeper)) return;
+  // A sleeper already reached (by another island, or earlier) brings its frozen group with it.
+  if (reached_[sleeper]) return join(i, sleeper);
+  const double* x = state.x.data();
+  std::vector<int> group{sleeper};
+  reached_[sleeper] = 1;
+  woken_.push_back(sleeper);
+  for (size_t k = 0; k < group.size(); ++k) {
+    const int s = group[k];
+    join(i, s);
+    sleepers_near(model_, x, cache_, s, kFrozen, [&](int j) {
+      if (reached_[j]) return;
+      const double gap = glm::length(position(x, s) - position(x, j)) - model_.balls[s].radius - model_.balls[j].radius;
+      if (gap < kFrozen) {
+        reached_[j] = 1;
+        woken_.push_back(j);
+        group.push_back(j);
+      }
+    });
+  }
+}
+
+Partition Partitioner::operator()(const State& state, const std::vector<int>& awake) {
+  const int n = state.ball_count();
+  const double* x = state.x.data();
+  const double g = glm::length(model_.options.gravity), margin = model_.options.contact_margin;
+  // The union-find arrays are as long as the scene; only the entries of awake balls and reached sleepers are used,
+  // and only those are reset afterwards, so that a partition costs O(awake), not O(balls).
+  if (parent_.size() != static_cast<size_t>(n)) {
+    parent_.resize(n);
+    std::iota(parent_.begin(), parent_.end(), 0);
+    energy_.assign(n, 0.0);
+    reached_.assign(n, 0);
+    slot_.assign(n, -1);
+  }
+  auto elastic = [](const ContactMaterial& m, double depth) {
+    return m.stiffness * std::pow(depth, m.exponent + 1) / (m.exponent + 1);
+  };
+  // Each awake ball's energy: kinetic, the height above the bed it can still fall (tables only: elsewhere free fall
+  // is covered by g h), and the elastic energy of its contacts (a compressed contact gives it back as speed).
+  for (int i : awake) {
+    const BallSpec& b = model_.balls[i];
+    const Vec3 v = velocity(x, i), w = spin(x, i);
+    energy_[i] = 0.5 * b.mass * glm::dot(v, v) + 0.5 * b.inertia() * glm::dot(w, w);
+    if (model_.balls_leave_below_bed) energy_[i] += b.mass * g * std::max(0.0, x[9 * i + 1] - b.radius);
+    if (!state.rolling(i))  // a rolling ball's bed contact is its constant static sink
+      near_colliders(model_, cache_, position(x, i), b.radius, 0.0, [&](int c, const Penetration& pen) {
+        if (pen.depth > 0) energy_[i] += elastic(*cache_.collider_material[c], pen.depth);
+      });
+  }
+  sweep_pairs(model_, state, x, cache_, 0.0, false, [&](int i, int j) {
+    const double depth = model_.balls[i].radius + model_.balls[j].radius - glm::length(position(x, i) - position(x, j));
+    if (depth <= 0) return;
+    for (int k : {i, j})  // a sleeper's share would stay behind in its entry: the awake one holds the pair's
+      if (!state.sleeping(k)) energy_[k] += elastic(*cache_.ball_ball, depth);
+  }, &awake);
+  // A sleeper that an island may reach can be woken and hit within the horizon: it moves as the island's balls may.
+  auto speed = [&](int i) { return state.sleeping(i) && !reached_[i] ? 0.0 : bound(i); };
+  // Calls fn(i, j, gap, closing) for the pairs (at least one that may move) whose x extents come within what they can
+  // close in `time`: gap (m, beyond contact_margin) and the bound on how fast they can close it.
+  auto pairs = [&](double time, auto&& fn) {
+    double vmax = 0;
+    for (int i : awake) vmax = std::max(vmax, bound(i));
+    for (int i : woken_) vmax = std::max(vmax, bound(i));
+    const double reach = 2.0 * vmax * time + margin;
+    auto visit = [&](int i, int j) {
+      const double gap =
+          glm::length(position(x, i) - position(x, j)) - model_.balls[i].radius - model_.balls[j].radius - margin;
+      fn(i, j, gap, speed(i) + speed(j));
+    };
+    sweep_pairs(model_, state, x, cache_, reach, false, visit, &awake);
+    // sweep_pairs leaves out pairs of sleepers: those of a reached one matter.
+    for (size_t k = 0; k < woken_.size(); ++k) {
+      const int s = woken_[k];
+      sleepers_near(model_, x, cache_, s, reach, [&](int j) { visit(s, j); });
+    }
+  };
+  do {
+    joined_ = false;
+    pairs(kLinkTime, [&](int i, int j, double gap, double closing) {
+      if (gap >= closing * kLinkTime) return;
+      if (state.sleeping(j) && !reached_[j]) join_sleeper(i, j, state);
+      else if (state.sleeping(i) && !reached_[i]) join_sleeper(j, i, state);
+      else join(i, j);
+    });
+  } while (joined_);  // joins raise energies, and with them the reach of every member
+
+  Partition p;
+  bool lone = model_.balls_leave_below_bed && woken_.empty();  // a reached sleeper may wake and need splitting off
+  for (int i : awake) lone = lone && root(i) == i;
+  p.horizon = lone ? kLoneHorizon : kMaxHorizon;
+  pairs(p.horizon, [&](int i, int j, double gap, double closing) {
+    if (root(i) != root(j) && closing > 0) p.horizon = std::min(p.horizon, std::max(gap, 0.0) / closing);
+  });
+  // Every ball of an island is awake or a reached sleeper; islands in the order of their first ball.
+  std::vector<int> members(awake);
+  members.insert(members.end(), woken_.begin(), woken_.end());
+  std::sort(members.begin(), members.end());
+  for (int i : members) {
+    int& s = slot_[root(i)];
+    if (s < 0) {
+      s = static_cast<int>(p.islands.size());
+      p.islands.emplace_back();
+    }
+    p.islands[s].push_back(i);
+  }
+  for (int i : members) {
+    slot_[i] = -1;
+    parent_[i] = i;
+    energy_[i] = 0;
+    reached_[i] = 0;
+  }
+  woken_.clear();
+  return p;
+}
+
+}  // namespace shotlab
