@@ -2,6 +2,7 @@
 // and gravity, the integrator and its tolerances. Any change re-simulates the current shot from its start. Next to
 // the sliders: what the stiffness and damping give in one collision at a chosen impact speed, measured by
 // probe_collision (a short engine run, in the background), and the integrator's diagnostics.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <future>
@@ -72,6 +73,10 @@ void diagnostics(const Lab& lab) {
               s.rejected_steps, s.rhs_evaluations);
   ImGui::Text("this frame: %ld steps, %ld rhs", lab.shot->last_steps(), lab.shot->last_rhs());
   ImGui::Text("last step %.3g s   real-time factor %.2f", s.last_step, lab.shot->realtime_factor());
+  // Islands integrate apart (engine/partition.hpp): how the scene is split right now.
+  size_t largest = 0;
+  for (const auto& island : sim.islands()) largest = std::max(largest, island->balls().size());
+  ImGui::Text("islands: %zu (largest %zu balls)", sim.islands().size(), largest);
   if (sim.status() == Status::StepLimit)
     ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "STEP LIMIT HIT: raise max steps or loosen the model");
   else if (sim.status() != Status::Ok)
