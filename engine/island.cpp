@@ -42,15 +42,10 @@ Model sub_model(const Model& world, const std::vector<int>& balls) {
 }
 
 State sub_state(const State& world, const std::vector<int>& balls) {
-  State s;
-  s.time = world.time;
-  for (int i : balls) {
-    s.x.insert(s.x.end(), world.x.begin() + kBallDofs * i, world.x.begin() + kBallDofs * (i + 1));
-    s.in_play.push_back(world.in_play[i]);
-    s.asleep.push_back(world.sleeping(i));
-    s.rolling_on.push_back(world.rolling(i) ? world.rolling_on[i] : -1);
-    s.still_for.push_back(static_cast<size_t>(i) < world.still_for.size() ? world.still_for[i] : 0.0);
-  }
+  const size_t n = balls.size();
+  State s{world.time, StateVector(kBallDofs * n), std::vector<uint8_t>(n), std::vector<uint8_t>(n),
+          std::vector<int>(n), std::vector<double>(n)};
+  for (size_t k = 0; k < n; ++k) copy_ball(world, balls[k], s, static_cast<int>(k));
   return s;
 }
 
@@ -90,20 +85,11 @@ void Island::restart() {
   detector_.reset(integ_);
 }
 
-void Island::interpolate(double t, StateVector& world_x) {
-  span_.interpolate(t, scratch_);
-  for (size_t k = 0; k < balls_.size(); ++k)
-    std::copy_n(scratch_.begin() + kBallDofs * k, kBallDofs, world_x.begin() + kBallDofs * balls_[k]);
-}
-
-void Island::write_end(State& world) const {
+void Island::write(double t, State& world) {
+  span_.interpolate(t, scratch_);  // at t = time() exactly the step's end: the Hermite weights are 0, 0, 1, 0
   for (size_t k = 0; k < balls_.size(); ++k) {
-    const int i = balls_[k];
-    std::copy_n(integ_.x.begin() + kBallDofs * k, kBallDofs, world.x.begin() + kBallDofs * i);
-    world.in_play[i] = integ_.in_play[k];
-    world.asleep[i] = integ_.asleep[k];
-    world.rolling_on[i] = integ_.rolling_on[k];
-    world.still_for[i] = integ_.still_for[k];
+    std::copy_n(scratch_.begin() + kBallDofs * k, kBallDofs, world.x.begin() + kBallDofs * balls_[k]);
+    copy_ball(integ_, static_cast<int>(k), world, balls_[k], false);
   }
 }
 

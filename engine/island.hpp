@@ -65,16 +65,15 @@ class Island {
   const std::string& diagnostic() const { return diagnostic_; }
   std::string describe_balls() const { return describe_balls(span_.x1); }
 
-  // Writes the island's balls at time t in [span().t0, time()] into a world state vector.
-  void interpolate(double t, StateVector& world_x);
+  // Writes the island's balls into a world state: their state at time t in [span().t0, time()], their regime flags
+  // as of time().
+  void write(double t, State& world);
   // J: the total energy of the island's balls and contacts at time t in [span().t0, time()] (sleepers included), and
   // at a reference time the simulation sets (the island's start, then each synchronisation). An island touches
   // nothing outside it, so the scene's energy changes by what its islands' energies change.
   double energy(double t);
   double energy_ref() const { return energy_ref_; }
   void set_energy_ref(double e) { energy_ref_ = e; }
-  // Writes the island's balls at time() (state and regime flags) into a world state.
-  void write_end(State& world) const;
   // Hands over the events located so far at or before t, in time order.
   void take_events(double t, std::vector<Event>& out);
 

@@ -29,7 +29,7 @@ Simulation::Simulation(Model model, State initial)
 
 void Simulation::synchronise() {
   for (const auto& island : islands_) {
-    island->write_end(integ_);
+    island->write(sync_time_, integ_);
     island->take_events(sync_time_, located_);
     const double e = island->energy(sync_time_);
     energy_synced_ += e - island->energy_ref();
@@ -74,13 +74,7 @@ void Simulation::synchronise() {
     if (!island) continue;
     retired_ += island->stats();
     // Its balls at the clock: those in no new island stay as they are now (the others are interpolated anew).
-    for (int i : island->balls()) {
-      std::copy_n(integ_.x.begin() + kBallDofs * i, kBallDofs, state_.x.begin() + kBallDofs * i);
-      state_.in_play[i] = integ_.in_play[i];
-      state_.asleep[i] = integ_.asleep[i];
-      state_.rolling_on[i] = integ_.rolling_on[i];
-      state_.still_for[i] = integ_.still_for[i];
-    }
+    for (int i : island->balls()) copy_ball(integ_, i, state_, i);
   }
   islands_ = std::move(next);
   sync_time_ = integ_.time + p.horizon;
@@ -136,16 +130,8 @@ Status Simulation::advance(double dt) {
   const double wall = stats_.wall_seconds;
   stats_ = retired_;
   for (const auto& island : islands_) {
-    island->interpolate(std::min(reached, island->time()), state_.x);
+    island->write(std::min(reached, island->time()), state_);
     island->take_events(frontier, located_);
-    const State& s = island->state();
-    for (size_t k = 0; k < island->balls().size(); ++k) {
-      const int i = island->balls()[k];
-      state_.in_play[i] = s.in_play[k];
-      state_.asleep[i] = s.asleep[k];
-      state_.rolling_on[i] = s.rolling_on[k];
-      state_.still_for[i] = s.still_for[k];
-    }
     stats_ += island->stats();
     stats_.last_step = island->stats().last_step;
   }

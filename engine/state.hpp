@@ -1,5 +1,6 @@
 // The changing side of a simulation (MuJoCo's mjData): the ODE state vector and which balls are still in play.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -37,5 +38,15 @@ struct State {
   // In play and awake: its equations are integrated.
   bool active(int i) const { return in_play[i] && !sleeping(i); }
 };
+
+// Ball i of `from` (its flags and, with `with_x`, its 9 numbers) into ball j of `to`, whose flags are sized: between
+// a scene and the sub-state of one of its islands (island.hpp).
+inline void copy_ball(const State& from, int i, State& to, int j, bool with_x = true) {
+  if (with_x) std::copy_n(from.x.begin() + kBallDofs * i, kBallDofs, to.x.begin() + kBallDofs * j);
+  to.in_play[j] = from.in_play[i];
+  to.asleep[j] = from.sleeping(i);
+  to.rolling_on[j] = from.rolling(i) ? from.rolling_on[i] : -1;
+  to.still_for[j] = static_cast<size_t>(i) < from.still_for.size() ? from.still_for[i] : 0.0;
+}
 
 }  // namespace shotlab
