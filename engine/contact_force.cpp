@@ -18,8 +18,12 @@ ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& 
   // Clamp: the damping term turns negative while the bodies separate; a contact can push but never pull.
   out.normal = std::max(fn, 0.0);
   out.force = out.normal * n;
-  if (out.normal == 0.0) return out;
+  if (out.normal > 0.0) add_friction(mat, k, smoothing, out);
+  return out;
+}
 
+void add_friction(const ContactMaterial& mat, const ContactKinematics& k, const Smoothing& smoothing, ContactForce& out) {
+  const Vec3& n = k.normal;
   // Coulomb friction against the tangential slip, its sign smoothed by fricstep (MODEL.md appendix B).
   const Vec3 u = k.slip - glm::dot(k.slip, n) * n;
   const double u_len = glm::length(u);
@@ -44,7 +48,6 @@ ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& 
     const double strength = mat.spin_friction * out.normal;  // the torque over the lever arm r, N
     out.spin_torque = -strength * k.radius * fricstep(sharpness_for(smoothing, strength, k.spin_mobility) * k.radius * k.spin_rel);
   }
-  return out;
 }
 
 }  // namespace shotlab

@@ -48,6 +48,10 @@ struct Smoothing {
 double sharpness_for(const Smoothing& s, double strength, double mobility);
 
 ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& k, const Smoothing& smoothing);
+// The tangential terms alone (friction, rolling resistance, spin friction) of a contact carrying the normal force
+// out.normal > 0, added to `out`: contact_force's second half, and the whole bed force of a ball in the sliding
+// regime (regimes.hpp), whose normal force is its weight.
+void add_friction(const ContactMaterial& mat, const ContactKinematics& k, const Smoothing& smoothing, ContactForce& out);
 
 // The torque a contact force puts on a ball of radius r whose outward contact normal (centre to contact point) is
 // -normal:  friction acts at r_c = -r n; rolling resistance comes with the torque (2/5) r n x F_roll, which keeps

@@ -115,9 +115,9 @@ double time_to_possible_contact(const Model& model, const State& state, const do
       if (pen.depth <= 0)
         best = std::min(best, closing_time(margin - pen.depth, collider_closing_speed(model.colliders[c].shape, p, v), a));
     });
-    // A ball in the rolling regime ignores its support's geometry: it must not roll far over a pocket's edge.
-    if (state.rolling(i))
-      best = std::min(best, closing_time(hole_gap(model.colliders[state.rolling_on[i]].shape, p) + margin, s, a));
+    // A ball in the rolling or sliding regime ignores its support's geometry: it must not move far over a pocket's edge.
+    const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : -1;
+    if (bed >= 0) best = std::min(best, closing_time(hole_gap(model.colliders[bed].shape, p) + margin, s, a));
   }
   // Ball pairs whose x gap is within anything closable within the horizon (a sleeper does not move: only the awake
   // one closes in).

@@ -63,10 +63,18 @@ void near_colliders(const Model& model, const ContactCache& cache, const Vec3& p
 void overlapping_pairs(const Model& model, const State& state, const double* x, ContactCache& cache,
                        double slack = 0.0, bool sleeping_pairs = false);
 
+// The kinematics of ball i (radius r, velocity v, spin w) against a static collider whose normal (towards the ball's
+// centre) is `normal`, penetrated by `depth`.
+inline ContactKinematics collider_kinematics(const ContactCache& cache, int i, double r, const Vec3& v, const Vec3& w,
+                                             const Vec3& normal, double depth) {
+  return {normal, depth, v, v + r * glm::cross(normal, w), glm::dot(w, normal), r,
+          cache.inv_mass[i] + cache.inv_inertia_r2[i], cache.inv_mass[i], cache.inv_inertia_r2[i]};
+}
+
 // Calls fn(const Contact&) for every touching ball-collider and ball-ball pair of balls in play. `x` is the state
 // vector (9 numbers a ball), which may differ from state.x (the integrator's trial states). Contacts that no
-// ball's dynamics uses (between sleeping balls; the bed under a ball in the rolling regime, whose support is in
-// closed form) are left out unless `with_inactive` (diagnostics want them).
+// ball's dynamics uses (between sleeping balls; the bed under a ball in the rolling or sliding regime, whose support is
+// in closed form) are left out unless `with_inactive` (diagnostics want them).
 template <class Fn>
 void for_each_contact(const Model& model, const State& state, const double* x, ContactCache& cache, Fn&& fn,
                       bool with_inactive = false);

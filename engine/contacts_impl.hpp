@@ -57,16 +57,14 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
   const std::vector<double>& inv_inertia_r2 = cache.inv_inertia_r2;
   // Ball against static colliders: B has zero velocity.
   for (int i = 0; i < n; ++i) {
-    if (!state.in_play[i] || ((state.sleeping(i) || state.rolling(i)) && !with_inactive)) continue;
+    if (!state.in_play[i] || ((state.sleeping(i) || state.rolling(i) || state.sliding(i)) && !with_inactive)) continue;
     const double r = model.balls[i].radius;
     const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
     near_colliders(model, cache, p, r, 0.0, [&](int c, const Penetration& pen) {
       if (pen.depth <= 0) return;
-      const Vec3& nrm = pen.normal;
-      const ContactKinematics kin{nrm, pen.depth, v, v + r * glm::cross(nrm, w), glm::dot(w, nrm), r,
-                                  inv_mass[i] + inv_inertia_r2[i], inv_mass[i], inv_inertia_r2[i]};
+      const ContactKinematics kin = collider_kinematics(cache, i, r, v, w, pen.normal, pen.depth);
       const ContactForce f = contact_force(*cache.collider_material[c], kin, k);
-      fn(Contact{i, -1, c, pen.depth, nrm, p - r * nrm, f});
+      fn(Contact{i, -1, c, pen.depth, pen.normal, p - r * pen.normal, f});
     });
   }
   // Ball against ball: n points from j to i; A's contact point is at -R_i n, B's at +R_j n.

@@ -34,6 +34,10 @@ void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/)
       rolling_derivative(model_, state_, cache_, x.data(), i, &dxdt[9 * i]);
       continue;
     }
+    if (state_.sliding(i)) {
+      sliding_derivative(model_, state_, cache_, x.data(), i, &dxdt[9 * i]);
+      continue;
+    }
     set_position(dxdt, i, velocity(x, i));
     set_velocity(dxdt, i, force_[i] / b.mass);
     set_spin(dxdt, i, torque_[i] / b.inertia());

@@ -6,6 +6,8 @@
 //   rods ............... here (apply_rods): constraint forces, computed last because they cancel the others
 //   rolling regime ..... regimes.cpp (rolling_derivative): closed-form rolling on the bed, replacing the above for
 //                        a ball that rolls and touches nothing else
+//   sliding regime ..... regimes.cpp (sliding_derivative): the bed's friction at the static sink, for a ball that
+//                        slides on the bed, settled onto it, and touches nothing else
 #pragma once
 #include <vector>
 

@@ -43,15 +43,16 @@ Model sub_model(const Model& world, const std::vector<int>& balls) {
 
 State sub_state(const State& world, const std::vector<int>& balls) {
   const size_t n = balls.size();
-  State s{world.time, StateVector(kBallDofs * n), std::vector<uint8_t>(n), std::vector<uint8_t>(n),
-          std::vector<int>(n), std::vector<double>(n)};
+  State s{world.time,          StateVector(kBallDofs * n), std::vector<uint8_t>(n), std::vector<uint8_t>(n),
+          std::vector<int>(n), std::vector<int>(n),        std::vector<double>(n)};
   for (size_t k = 0; k < n; ++k) copy_ball(world, balls[k], s, static_cast<int>(k));
   return s;
 }
 
 }  // namespace
 
-Island::Island(const Model& world, const State& world_state, std::vector<int> balls, double first_step)
+Island::Island(const Model& world, const State& world_state, std::vector<int> balls, double first_step,
+               double energy_bound)
     : balls_(std::move(balls)),
       model_(sub_model(world, balls_)),
       integ_(sub_state(world_state, balls_)),
@@ -60,10 +61,12 @@ Island::Island(const Model& world, const State& world_state, std::vector<int> ba
       detector_(model_),
       regimes_(model_),
       cap_cache_(model_),
-      dt_next_(is_adaptive(model_.integrator.method) ? first_step : model_.integrator.fixed_step) {
+      dt_next_(is_adaptive(model_.integrator.method) ? first_step : model_.integrator.fixed_step),
+      energy_bound_(energy_bound) {
   span_.t0 = span_.t1 = integ_.time;
   span_.x1 = integ_.x;
   restart();
+  start_ = integ_;
   energy_ref_ = energy(span_.t1);
 }
 
@@ -87,13 +90,34 @@ void Island::restart() {
 
 void Island::write(double t, State& world) {
   span_.interpolate(t, scratch_);  // at t = time() exactly the step's end: the Hermite weights are 0, 0, 1, 0
+  const State& flags = t < span_.t1 ? start_ : integ_;
   for (size_t k = 0; k < balls_.size(); ++k) {
     std::copy_n(scratch_.begin() + kBallDofs * k, kBallDofs, world.x.begin() + kBallDofs * balls_[k]);
-    copy_ball(integ_, static_cast<int>(k), world, balls_[k], false);
+    copy_ball(flags, static_cast<int>(k), world, balls_[k], false);
   }
 }
 
+bool Island::rewind(double t) {
+  if (t >= span_.t1) return true;
+  span_.x1 = span_.x0;
+  span_.f1 = span_.f0;
+  span_.t1 = span_.t0;
+  copy_flags(start_, integ_);
+  integ_.x = span_.x1;
+  integ_.time = span_.t1;
+  stepper_->reset();
+  detector_.reset(integ_);
+  const auto undone = std::find_if(events_.begin(), events_.end(), [&](const Event& e) { return e.time > span_.t0; });
+  events_.erase(undone, events_.end());
+  while (span_.t1 < t)
+    if (!step(t)) return false;
+  const auto again = std::find_if(events_.begin(), events_.end(), [&](const Event& e) { return e.time > handed_until_; });
+  events_.erase(events_.begin(), again);
+  return true;
+}
+
 void Island::take_events(double t, std::vector<Event>& out) {
+  handed_until_ = std::max(handed_until_, t);
   const auto end = std::find_if(events_.begin(), events_.end(), [t](const Event& e) { return e.time > t; });
   out.insert(out.end(), std::make_move_iterator(events_.begin()), std::make_move_iterator(end));
   events_.erase(events_.begin(), end);
@@ -169,7 +193,10 @@ bool Island::step(double limit) {
   span_.t1 = t;
   integ_.x = span_.x1;
   integ_.time = t;
+  ++call_steps_;
 
+  // The flags the step started with (a rewind to inside it needs them); only the flags, not the state vector.
+  copy_flags(integ_, start_);
   std::vector<Exit> exits;
   detector_.scan(span_, integ_, events_, exits);
   // A ball that left play is frozen where it left.

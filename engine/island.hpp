@@ -1,12 +1,13 @@
 // An island: a group of balls integrated together as one ODE system, on its own clock and with its own step size
-// (MODEL.md 5.2.4's stepping loop). The simulation (simulation.hpp) splits a scene into islands that cannot touch
-// each other before the next synchronisation time (partition.hpp), so a collision on one side of the table does not
-// force small steps on the other, and a ball that sleeps is in no island and costs nothing.
+// (MODEL.md 5.2.4's stepping loop). The simulation (simulation.hpp) splits a scene into islands, each of which
+// cannot touch anything outside it before its deadline (partition.hpp), so a collision on one side of the table does
+// not force small steps on the other, and a ball that sleeps is in no island and costs nothing.
 //
 // An island is a small scene of its own: a sub-model holding its balls (the awake ones and the sleepers they may
 // reach) and every collider. The right-hand side, the event detector, the regimes and the step cap are the
 // whole-scene code run on that sub-model, so each costs what the island's balls cost, whatever else is on the table.
 #pragma once
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,8 +46,9 @@ struct Stats {
 class Island {
  public:
   // The balls `balls` (indices into `world`, ascending) as they are in `world_state`, from its time on. `first_step`
-  // (s) is the adaptive methods' first trial step.
-  Island(const Model& world, const State& world_state, std::vector<int> balls, double first_step);
+  // (s) is the adaptive methods' first trial step; `energy_bound` (J) bounds what any of its balls can ever gain
+  // (partition.hpp: an island touches nothing else, so its energy cannot grow).
+  Island(const Model& world, const State& world_state, std::vector<int> balls, double first_step, double energy_bound);
   Island(const Island&) = delete;
   Island& operator=(const Island&) = delete;
 
@@ -55,6 +57,13 @@ class Island {
   bool step(double limit);
 
   double time() const { return span_.t1; }
+  // s: nothing outside the island can touch it before this time; the simulation steps it no further, then looks at
+  // it again (and may lower it whenever another island changes).
+  double deadline() const { return deadline_; }
+  void set_deadline(double t) { deadline_ = t; }
+  double energy_bound() const { return energy_bound_; }
+  long call_steps() const { return call_steps_; }  // accepted steps since start_call()
+  void start_call() { call_steps_ = 0; }
   const std::vector<int>& balls() const { return balls_; }  // world indices, ascending
   const Model& model() const { return model_; }              // the sub-model: the island's balls, every collider
   const State& state() const { return integ_; }              // the sub-state at time()
@@ -66,8 +75,14 @@ class Island {
   std::string describe_balls() const { return describe_balls(span_.x1); }
 
   // Writes the island's balls into a world state: their state at time t in [span().t0, time()], their regime flags
-  // as of time().
+  // as of the last step's start for t < time() (a regime changes at a step's end), else as of time().
   void write(double t, State& world);
+  // The island's state vector at time t in [span().t0, time()].
+  void state_at(double t, StateVector& x) const { span_.interpolate(t, x); }
+  // Undoes the last step and steps again to end exactly at t in [span().t0, time()]: the state at t then comes from
+  // the integrator rather than from the step's interpolant, whose error (O(h^4) on a long step) islands formed at t
+  // would inherit. Events found again that were handed over before are dropped. Returns false if a step failed.
+  bool rewind(double t);
   // J: the total energy of the island's balls and contacts at time t in [span().t0, time()] (sleepers included), and
   // at a reference time the simulation sets (the island's start, then each synchronisation). An island touches
   // nothing outside it, so the scene's energy changes by what its islands' energies change.
@@ -85,6 +100,7 @@ class Island {
   std::vector<int> balls_;
   Model model_;
   State integ_;  // integrator state at span_.t1 (its in_play is what the right-hand side sees)
+  State start_;  // the regime flags at span_.t0 (its x unused)
   Dynamics dynamics_;
   std::unique_ptr<Stepper> stepper_;
   EventDetector detector_;
@@ -92,7 +108,11 @@ class Island {
   ContactCache cap_cache_;  // broad phase of the step cap
   StepSpan span_;
   double dt_next_;
+  double deadline_ = 0;
+  double energy_bound_;
+  long call_steps_ = 0;
   std::vector<Event> events_;  // located, not yet handed over
+  double handed_until_ = -std::numeric_limits<double>::infinity();  // s: events up to here were handed over
   Stats stats_;
   double energy_ref_;
   Status status_ = Status::Ok;

@@ -6,9 +6,6 @@
 
 namespace shotlab {
 namespace {
-// s: balls that could touch this soon are integrated together. Shorter splits a scene finer but synchronises more
-// often (every synchronisation cuts each island's step short once).
-constexpr double kLinkTime = 1e-3;
 // s: the longest the islands run apart while one of them holds two or more awake balls. Islands are split only when
 // they synchronise: a pair that separated after a collision stays one system until then.
 constexpr double kMaxHorizon = 0.02;
@@ -34,10 +31,11 @@ void Partitioner::join(int i, int j) {
   joined_ = true;
 }
 
-double Partitioner::bound(int i) {
-  // On a table the height a ball can fall is in its energy; elsewhere gravity adds up to g h within the horizon.
+double Partitioner::speed_bound(double e, int i) const {
+  // On a table the height a ball can fall is in its energy; elsewhere gravity adds up to g h within the horizon (an
+  // island lives at most kMaxHorizon off a table).
   const double fall = model_.balls_leave_below_bed ? 0.0 : glm::length(model_.options.gravity) * kMaxHorizon;
-  return std::sqrt(2.0 * energy_[root(i)] / model_.balls[i].mass) + fall;
+  return std::sqrt(2.0 * e / model_.balls[i].mass) + fall;
 }
 
 void Partitioner::join_sleeper(int i, int sleeper, const State& state) {
@@ -86,7 +84,7 @@ Partition Partitioner::operator()(const State& state, const std::vector<int>& aw
     const Vec3 v = velocity(x, i), w = spin(x, i);
     energy_[i] = 0.5 * b.mass * glm::dot(v, v) + 0.5 * b.inertia() * glm::dot(w, w);
     if (model_.balls_leave_below_bed) energy_[i] += b.mass * g * std::max(0.0, x[9 * i + 1] - b.radius);
-    if (!state.rolling(i))  // a rolling ball's bed contact is its constant static sink
+    if (!state.rolling(i) && !state.sliding(i))  // the bed contact of a rolling or sliding ball is its static sink
       near_colliders(model_, cache_, position(x, i), b.radius, 0.0, [&](int c, const Penetration& pen) {
         if (pen.depth > 0) energy_[i] += elastic(*cache_.collider_material[c], pen.depth);
       });
@@ -128,14 +126,8 @@ Partition Partitioner::operator()(const State& state, const std::vector<int>& aw
     });
   } while (joined_);  // joins raise energies, and with them the reach of every member
 
-  Partition p;
-  bool lone = model_.balls_leave_below_bed && woken_.empty();  // a reached sleeper may wake and need splitting off
-  for (int i : awake) lone = lone && root(i) == i;
-  p.horizon = lone ? kLoneHorizon : kMaxHorizon;
-  pairs(p.horizon, [&](int i, int j, double gap, double closing) {
-    if (root(i) != root(j) && closing > 0) p.horizon = std::min(p.horizon, std::max(gap, 0.0) / closing);
-  });
   // Every ball of an island is awake or a reached sleeper; islands in the order of their first ball.
+  Partition p;
   std::vector<int> members(awake);
   members.insert(members.end(), woken_.begin(), woken_.end());
   std::sort(members.begin(), members.end());
@@ -144,9 +136,21 @@ Partition Partitioner::operator()(const State& state, const std::vector<int>& aw
     if (s < 0) {
       s = static_cast<int>(p.islands.size());
       p.islands.emplace_back();
+      p.energy.push_back(energy_[root(i)]);
     }
     p.islands[s].push_back(i);
   }
+  // Horizons: a lone ball on a table has nothing to split off (a reached sleeper may wake and need splitting off), so
+  // it runs longer; then the earliest time each island could touch another's ball or a sleeper it does not hold.
+  for (const auto& island : p.islands)
+    p.horizon.push_back(model_.balls_leave_below_bed && island.size() == 1 && !reached_[island[0]] ? kLoneHorizon
+                                                                                                    : kMaxHorizon);
+  pairs(kLoneHorizon, [&](int i, int j, double gap, double closing) {
+    if (root(i) == root(j) || closing <= 0) return;
+    const double h = std::max(gap, 0.0) / closing;
+    for (int k : {i, j})
+      if (slot_[root(k)] >= 0) p.horizon[slot_[root(k)]] = std::min(p.horizon[slot_[root(k)]], h);
+  });
   for (int i : members) {
     slot_[i] = -1;
     parent_[i] = i;

@@ -8,10 +8,11 @@
 // islands, a gap d apart, cannot touch before d / (V_i + V_j); a sleeping ball does not move (V = 0).
 //
 // Balls are grouped when they could touch within kLinkTime; the groups' energies then raise their members' bounds,
-// so grouping repeats until nothing more joins. The horizon is the earliest time at which two different islands
-// could touch, at most kMaxHorizon: then the simulation synchronises them and partitions again, joining islands that
-// come close and splitting those that have separated. A sleeper joins the island that may reach it, with every sleeper
-// frozen against it (they wake together); a sleeper that two islands may reach joins them into one.
+// so grouping repeats until nothing more joins. Each island's horizon is the earliest time at which it could touch a
+// ball of another island or a sleeper it does not hold, at most kMaxHorizon (kLoneHorizon for a lone ball on a
+// table, which has nothing to split): then the simulation looks at it again, joining islands that come close and
+// splitting those that have separated. A sleeper joins the island that may reach it, with every sleeper frozen against
+// it (they wake together); a sleeper that two islands may reach joins them into one.
 #pragma once
 #include <vector>
 
@@ -21,9 +22,14 @@
 
 namespace shotlab {
 
+// s: balls that could touch this soon are integrated together. Shorter splits a scene finer but looks at islands
+// again more often (each look cuts an island's step short once).
+inline constexpr double kLinkTime = 1e-3;
+
 struct Partition {
   std::vector<std::vector<int>> islands;  // ball indices, ascending; islands ordered by their first ball
-  double horizon = 0;                     // s from the state's time: no two islands can touch before it
+  std::vector<double> energy;             // J, each island's: the bound on what its balls can gain
+  std::vector<double> horizon;            // s from the state's time, each island's: it touches nothing else before
 };
 
 class Partitioner {
@@ -32,12 +38,14 @@ class Partitioner {
   // Islands of the awake balls in play, `awake` (with the sleepers they may reach); balls out of play and sleepers
   // nothing can reach are in none.
   Partition operator()(const State& state, const std::vector<int>& awake);
+  // m/s: how fast ball i of an island with energy e (J) can move, at most (V_i above).
+  double speed_bound(double e, int i) const;
 
  private:
   int root(int i);
   void join(int i, int j);
   void join_sleeper(int i, int sleeper, const State& state);  // with every sleeper frozen against it
-  double bound(int i);  // m/s, V_i above
+  double bound(int i) { return speed_bound(energy_[root(i)], i); }
 
   const Model& model_;
   ContactCache cache_;

@@ -15,6 +15,11 @@ constexpr double kEntrySlip = 0.01;
 // Speeds (m/s) this small are round-off, not motion: below every tolerance an integrator is run at.
 constexpr double kDeadTail = 1e-12;
 
+// m: how deep ball b sinks into a bed of material m under its own weight (C d^e = m g).
+double static_sink(const BallSpec& b, const ContactMaterial& m, double g) {
+  return std::pow(b.mass * g / m.stiffness, 1.0 / m.exponent);
+}
+
 // The flat, horizontal bed a ball can roll on in closed form: a plane (bounded or not) whose unit normal (from the
 // contact cache, 0 for other shapes) is along -gravity; `point` is a point of it.
 bool flat_bed(const Collider& c, const Vec3& normal, const Vec3& gravity, Vec3& point) {
@@ -25,6 +30,32 @@ bool flat_bed(const Collider& c, const Vec3& normal, const Vec3& gravity, Vec3& 
   return g > 0 && glm::dot(normal, -gravity / g) > 1.0 - 1e-12;
 }
 }  // namespace
+
+// Sliding on a flat bed with normal n, settled at the static sink: the normal force is the weight m g and stays so
+// (nothing changes the depth), so the contact law's tangential terms act at N = m g and the normal components of
+// the motion stay zero:
+//   dp/dt = v,  dv/dt = F_t / m,  dw/dt = T / I    (F_t, T: friction, rolling resistance and spin friction of the
+//                                                   bed at N = m g, contact_force.hpp, exactly as in the full model)
+void sliding_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+                        double* dxdt) {
+  const int bed = state.sliding_on[i];
+  const Vec3& n = cache.plane_normal[bed];
+  const BallSpec& b = model.balls[i];
+  const Vec3 v = velocity(x, i), w = spin(x, i);
+  ContactForce f;
+  f.normal = b.mass * glm::length(model.options.gravity);
+  // The depth is the static sink; the friction terms do not read it.
+  add_friction(*cache.collider_material[bed], collider_kinematics(cache, i, b.radius, v, w, n, 0.0),
+               {model.options.friction_sharpness, model.options.friction_rate_limit}, f);
+  Vec3 a = f.force / b.mass;
+  a -= glm::dot(a, n) * n;  // round-off of the projections in add_friction
+  const Vec3 alpha = contact_torque(f, n, b.radius) / b.inertia();
+  for (int c = 0; c < 3; ++c) {
+    dxdt[c] = v[c];
+    dxdt[3 + c] = a[c];
+    dxdt[6 + c] = alpha[c];
+  }
+}
 
 // Rolling on a flat bed with normal n under gravity g (magnitude), static normal force m g:
 //   dp/dt = v (tangential; the height stays at the sink depth)
@@ -79,10 +110,8 @@ int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& heig
         glm::dot(pen->normal, normal) < 1.0 - 1e-12)  // over a pocket the rim, not the bed, holds the ball
       return -1;
     support = static_cast<int>(c);
-    // Static sink: C_s d^m = m g.
-    const ContactMaterial& m = *cache_.collider_material[c];
-    const double sink = std::pow(model_.balls[i].mass * glm::length(model_.options.gravity) / m.stiffness, 1.0 / m.exponent);
-    height = glm::dot(point, normal) + r - sink;
+    height = glm::dot(point, normal) + r -
+             static_sink(model_.balls[i], *cache_.collider_material[c], glm::length(model_.options.gravity));
   }
   if (support < 0) return -1;
   for (int j : touching_[i])
@@ -97,6 +126,7 @@ bool Regimes::update(State& state, StateVector& x, double dt) {
   if (n == 0) return false;
   if (state.asleep.size() != static_cast<size_t>(n)) state.asleep.assign(n, 0);
   if (state.rolling_on.size() != static_cast<size_t>(n)) state.rolling_on.assign(n, -1);
+  if (state.sliding_on.size() != static_cast<size_t>(n)) state.sliding_on.assign(n, -1);
   if (state.still_for.size() != static_cast<size_t>(n)) state.still_for.assign(n, 0.0);
   // Neighbour lists within contact_margin (sleep groups use only the frozen-touching ones).
   touching_.assign(n, {});
@@ -107,7 +137,8 @@ bool Regimes::update(State& state, StateVector& x, double dt) {
   }
   const bool slept = update_sleep(state, x, dt);
   const bool rolled = update_rolling(state, x);
-  return slept || rolled;
+  const bool slid = update_sliding(state, x);
+  return slept || rolled || slid;
 }
 
 bool Regimes::update_rolling(State& state, StateVector& x) {
@@ -142,8 +173,47 @@ bool Regimes::update_rolling(State& state, StateVector& x) {
       set_velocity(x, i, vt + j / mass);
       set_spin(x, i, w + glm::cross(-r * n, j) / model_.balls[i].inertia());
       state.rolling_on[i] = bed;
+      state.sliding_on[i] = -1;
       changed = true;
     }
+  }
+  return changed;
+}
+
+bool Regimes::update_sliding(State& state, StateVector& x) {
+  bool changed = false;
+  const double g = glm::length(model_.options.gravity);
+  for (int i = 0; i < state.ball_count(); ++i) {
+    if (state.rolling(i)) continue;  // rolling supersedes sliding (update_rolling cleared the flag)
+    Vec3 n;
+    double height;
+    // Adaptive methods only, as for rolling: a step ends where a contact begins.
+    const int bed = model_.options.sliding_regime && is_adaptive(model_.integrator.method) && state.active(i)
+                        ? only_on_bed(x, i, n, height)
+                        : -1;
+    if (state.sliding(i)) {
+      if (bed != state.sliding_on[i]) {
+        state.sliding_on[i] = -1;  // the full model takes over at the sink, with no normal motion: its equilibrium
+        changed = true;
+      }
+      continue;
+    }
+    if (bed < 0) continue;
+    // Settled: the normal speed and the height's offset from the sink (as the speed of a bed oscillation of that
+    // amplitude, at the linearised contact's frequency sqrt(e g / sink): stiffness e m g / sink) together under the
+    // absolute tolerance (m/s), the error each step may make anyway. The snap removes that motion, and with it the
+    // friction impulse its leftover normal force would have added: at most mu m abs_tol, a change of the tangential
+    // motion below the tolerance. The vertical mode decays at about 700 1/s, so a bump of 0.1 m/s settles to 1e-7 m/s
+    // within 20 ms (to 1e-12 in 35 ms) of a slide that lasts 100s of ms.
+    const Vec3 p = position(x, i), v = velocity(x, i);
+    const double sink = static_sink(model_.balls[i], *cache_.collider_material[bed], g);
+    const double vn = glm::dot(v, n), offset = glm::dot(p, n) - height;
+    const double settled = model_.integrator.abs_tol;
+    if (std::hypot(vn, std::sqrt(cache_.collider_material[bed]->exponent * g / sink) * offset) >= settled) continue;
+    set_position(x, i, p - offset * n);
+    set_velocity(x, i, v - vn * n);
+    state.sliding_on[i] = bed;
+    changed = true;
   }
   return changed;
 }
@@ -228,6 +298,7 @@ bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
     for (int i : group) {
       state.asleep[i] = 1;
       state.rolling_on[i] = -1;
+      state.sliding_on[i] = -1;
       set_velocity(x, i, Vec3{0.0});
       set_spin(x, i, Vec3{0.0});
     }

@@ -1,6 +1,11 @@
 // Regimes: what part of the model a ball needs right now, decided at step boundaries (MuJoCo's "only what the
-// scene needs"). Three regimes:
+// scene needs"). Four regimes:
 //  - free: the full model (every contact, friction smoothed by fricstep);
+//  - sliding: the ball slides on the bed, touches nothing else and has settled onto the bed (no normal motion, its
+//    height at the static sink, where the normal force is its weight). That is an exact invariant set of the full
+//    model: nothing tangential changes the depth of a flat bed. On it the right-hand side drops the height, whose
+//    contact mode (about 1500 rad/s, damped at 0.5) would otherwise hold an explicit method to steps of 1-3 ms for
+//    the whole slide, and keeps the bed's friction, rolling resistance and spin friction at normal force m g;
 //  - rolling: the ball rolls on the bed and touches nothing else. Its slip is exactly zero and stays so, so
 //    instead of the stiff smoothed friction (a damper of rate 1.5 k mu g, about 1e4 1/s, MODEL.md "Numerical
 //    facts") the right-hand side uses the closed-form rolling dynamics: constant deceleration mu_r g along the
@@ -27,8 +32,9 @@ namespace shotlab {
 class Regimes {
  public:
   explicit Regimes(const Model& model) : model_(model), cache_(model) {}
-  // After an accepted step of dt seconds ending at state x: updates state.asleep, state.rolling_on and
-  // state.still_for, zeroes the velocities of new sleepers and snaps new rollers onto the rolling constraint.
+  // After an accepted step of dt seconds ending at state x: updates state.asleep, state.rolling_on, state.sliding_on
+  // and state.still_for, zeroes the velocities of new sleepers, snaps new rollers onto the rolling constraint and new
+  // sliders onto the bed.
   // Returns true when any ball changed regime: the system changed and the integrator must restart.
   bool update(State& state, StateVector& x, double dt);
 
@@ -37,6 +43,7 @@ class Regimes {
   bool slip_below(const StateVector& x, int i, const Vec3& n, double limit) const;  // tangential slip at the bed
   bool update_sleep(State& state, StateVector& x, double dt);
   bool update_rolling(State& state, StateVector& x);
+  bool update_sliding(State& state, StateVector& x);
   bool settle_rolling(StateVector& x, int i, const Vec3& n) const;  // cuts the decay tails of a rolling ball
   // The bed collider (its unit normal and the centre height of a ball resting on it in `normal`, `height`) when
   // ball i touches exactly one flat bed and nothing else within contact_margin; -1 otherwise.
@@ -47,9 +54,11 @@ class Regimes {
   std::vector<std::vector<int>> touching_;  // neighbours (frozen-touching included), rebuilt each update
 };
 
-// Right-hand side of a ball in the rolling regime (the closed-form dynamics above), written into dxdt.
-// `cache` supplies the bed's material without a lookup by name (this runs in every right-hand side).
+// Right-hand sides of a ball in the rolling and the sliding regime (the dynamics above), written into dxdt. `cache`
+// supplies the bed's material without a lookup by name (this runs in every right-hand side).
 void rolling_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+                        double* dxdt);
+void sliding_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
                         double* dxdt);
 
 }  // namespace shotlab

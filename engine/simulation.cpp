@@ -11,11 +11,7 @@
 namespace shotlab {
 
 Simulation::Simulation(Model model, State initial)
-    : model_(std::move(model)),
-      integ_(std::move(initial)),
-      cache_(model_),
-      partition_(model_),
-      sync_time_(integ_.time) {
+    : model_(std::move(model)), integ_(std::move(initial)), cache_(model_), partition_(model_) {
   // Balls that start at rest (in their static sink on the bed, nothing moving against them) sleep from the start
   // instead of after sleep_time of integrating a contact that cannot move. The update also sizes the regime flags.
   Regimes(model_).update(integ_, integ_.x, model_.options.sleep_time);
@@ -24,60 +20,117 @@ Simulation::Simulation(Model model, State initial)
   energy_start_ = e.total();
   energy_scale_ = e.kinetic + e.elastic + 1.0;
   energy_synced_ = energy_start_;
-  synchronise();
+  std::vector<int> awake;
+  for (int i = 0; i < integ_.ball_count(); ++i)
+    if (integ_.active(i)) awake.push_back(i);
+  regroup(integ_.time, {}, std::move(awake));
 }
 
-void Simulation::synchronise() {
-  for (const auto& island : islands_) {
-    island->write(sync_time_, integ_);
-    island->take_events(sync_time_, located_);
-    const double e = island->energy(sync_time_);
-    energy_synced_ += e - island->energy_ref();
-    island->set_energy_ref(e);
+double Simulation::meeting_time(double t, const std::vector<int>& balls, double energy, const Island& other) {
+  other.state_at(t, scratch_);
+  const State& flags = other.state();
+  double best = std::numeric_limits<double>::infinity();
+  for (int a : balls) {
+    if (!integ_.in_play[a]) continue;
+    const double va = partition_.speed_bound(energy, a);
+    for (size_t k = 0; k < other.balls().size(); ++k) {
+      const int b = other.balls()[k];
+      if (!flags.in_play[k]) continue;
+      const double closing = va + partition_.speed_bound(other.energy_bound(), b);
+      const double gap = glm::length(position(integ_.x, a) - position(scratch_, static_cast<int>(k))) -
+                         model_.balls[a].radius - model_.balls[b].radius - model_.options.contact_margin;
+      if (closing > 0) best = std::min(best, std::max(gap, 0.0) / closing);
+    }
   }
-  integ_.time = sync_time_;
+  return t + best;
+}
+
+void Simulation::regroup(double t, std::vector<Island*> group, std::vector<int> awake) {
+  integ_.time = t;
+  auto in_group = [&](const Island* island) { return std::find(group.begin(), group.end(), island) != group.end(); };
   Partition p;
-  if (model_.options.islands) {
-    // Awake balls are in islands (all of them, at the start).
-    std::vector<int> awake;
-    if (islands_.empty()) {
-      for (int i = 0; i < integ_.ball_count(); ++i)
+  std::vector<double> deadline;
+  for (size_t taken = 0;;) {
+    // The group's balls at t (a member past t is rewound to t: its last step began at or before t).
+    for (; taken < group.size(); ++taken) {
+      if (!group[taken]->rewind(t)) stop(group[taken]->status(), group[taken]->diagnostic());
+      group[taken]->write(t, integ_);
+      for (int i : group[taken]->balls())
         if (integ_.active(i)) awake.push_back(i);
     }
-    for (const auto& island : islands_)
-      for (int i : island->balls())
-        if (integ_.active(i)) awake.push_back(i);
-    p = partition_(integ_, awake);
-  } else {  // the plain path: every ball in one system, for good
-    p.islands.emplace_back(integ_.ball_count());
-    std::iota(p.islands[0].begin(), p.islands[0].end(), 0);
-    p.horizon = std::numeric_limits<double>::infinity();
+    if (model_.options.islands) {
+      p = partition_(integ_, awake);
+    } else {  // the plain path: every ball in one system, for good
+      p.islands.assign(1, std::vector<int>(integ_.ball_count()));
+      std::iota(p.islands[0].begin(), p.islands[0].end(), 0);
+      p.energy.assign(1, 0.0);
+      p.horizon.assign(1, std::numeric_limits<double>::infinity());
+    }
+    // Every other island against each new one: one that could meet it before it got where it is (or very soon) must be
+    // rewound to t and split with the group; the others only lower their deadlines.
+    deadline.resize(p.islands.size());
+    for (size_t n = 0; n < p.islands.size(); ++n) deadline[n] = t + p.horizon[n];
+    bool grew = false;
+    for (const auto& other : islands_) {
+      if (in_group(other.get())) continue;
+      double meet = std::numeric_limits<double>::infinity();
+      for (size_t n = 0; n < p.islands.size(); ++n) {
+        const double m = meeting_time(t, p.islands[n], p.energy[n], *other);
+        deadline[n] = std::min(deadline[n], m);
+        meet = std::min(meet, m);
+      }
+      if (meet < std::max(t + kLinkTime, other->time())) {
+        group.push_back(other.get());
+        grew = true;
+      } else {
+        other->set_deadline(std::min(other->deadline(), meet));
+      }
+    }
+    if (!grew) break;
   }
-  // An island that keeps its balls keeps running (its step size and stepper history); a new one starts with the
-  // smallest next step of the islands its balls come from.
-  std::vector<double> step_of(integ_.ball_count(), model_.integrator.initial_step);
-  for (const auto& island : islands_)
-    for (int i : island->balls()) step_of[i] = island->next_step();
+  // Retire the group: events up to t are handed over (later ones are found again), energy booked at t. A member at t
+  // that keeps exactly its balls goes on running (its step size and stepper history); the others end here.
   std::vector<std::unique_ptr<Island>> next;
-  for (std::vector<int>& balls : p.islands) {
-    const auto same = std::find_if(islands_.begin(), islands_.end(),
-                                   [&](const auto& island) { return island && island->balls() == balls; });
-    if (same != islands_.end()) {
-      next.push_back(std::move(*same));
+  std::vector<std::unique_ptr<Island>> ending;
+  for (auto& island : islands_) {
+    if (!in_group(island.get())) {
+      next.push_back(std::move(island));
       continue;
     }
-    double first = std::numeric_limits<double>::infinity();
-    for (int i : balls) first = std::min(first, step_of[i]);
-    next.push_back(std::make_unique<Island>(model_, integ_, std::move(balls), first));
+    island->take_events(t, located_);
+    const double e = island->energy(t);
+    energy_synced_ += e - island->energy_ref();
+    island->set_energy_ref(e);
+    ending.push_back(std::move(island));
   }
-  for (const auto& island : islands_) {
+  for (size_t n = 0; n < p.islands.size(); ++n) {
+    std::vector<int>& balls = p.islands[n];
+    const auto same = std::find_if(ending.begin(), ending.end(), [&](const auto& island) {
+      return island && island->time() == t && island->balls() == balls;
+    });
+    if (same != ending.end()) {
+      next.push_back(std::move(*same));
+    } else {
+      // A new island starts with the smallest next step of the islands its balls come from.
+      double first = std::numeric_limits<double>::infinity();
+      for (const auto& island : ending)
+        if (island)
+          for (int i : island->balls())
+            if (std::binary_search(balls.begin(), balls.end(), i)) first = std::min(first, island->next_step());
+      if (!std::isfinite(first)) first = model_.integrator.initial_step;
+      next.push_back(std::make_unique<Island>(model_, integ_, std::move(balls), first, p.energy[n]));
+      // While it holds them, its balls are no sleepers to the partitioner (their flags here are as they joined).
+      for (int i : next.back()->balls()) integ_.asleep[i] = 0;
+    }
+    next.back()->set_deadline(deadline[n]);
+  }
+  for (const auto& island : ending) {
     if (!island) continue;
     retired_ += island->stats();
     // Its balls at the clock: those in no new island stay as they are now (the others are interpolated anew).
     for (int i : island->balls()) copy_ball(integ_, i, state_, i);
   }
   islands_ = std::move(next);
-  sync_time_ = integ_.time + p.horizon;
 }
 
 bool Simulation::at_rest() const {
@@ -96,7 +149,7 @@ Status Simulation::advance(double dt) {
   if (status_ != Status::Ok) return status_;
   const auto wall0 = std::chrono::steady_clock::now();
   const double target = state_.time + dt;
-  std::vector<int> steps(islands_.size(), 0);
+  for (const auto& island : islands_) island->start_call();
   // Always step the island that is furthest behind: then every island's last step spans the time of any stop, and
   // the caller's clock can be read off every island's dense output.
   double reached = target;
@@ -105,25 +158,24 @@ Status Simulation::advance(double dt) {
                                        [](const auto& a, const auto& b) { return a->time() < b->time(); });
     Island& island = **next;
     if (island.time() >= target) break;
-    if (island.time() >= sync_time_) {
-      synchronise();
-      steps.assign(islands_.size(), 0);
+    if (island.time() >= island.deadline()) {
+      regroup(island.time(), {&island}, {});
       continue;
     }
-    if (steps[next - islands_.begin()]++ >= model_.integrator.max_steps_per_call) {
+    if (island.call_steps() >= model_.integrator.max_steps_per_call) {
       std::ostringstream msg;
       msg << "step limit: " << model_.integrator.max_steps_per_call << " steps in one advance() did not reach t = "
           << target << " s; stopped at t = " << island.time() << " s with step " << island.stats().last_step << " s. "
           << island.describe_balls();
       stop(Status::StepLimit, msg.str());
-    } else if (!island.step(sync_time_)) {
+    } else if (!island.step(island.deadline())) {
       stop(island.status(), island.diagnostic());
     } else if (observer_) {
       observer_(island);
     }
     if (status_ != Status::Ok) reached = island.time();  // stay at the last good point
   }
-  // The state at the clock; balls in no island stay as the last synchronisation left them. Events are handed over up
+  // The state at the clock; balls in no island stay as their last island left them. Events are handed over up
   // to the time every island has reached (a little past the clock): no island can locate an earlier one later.
   double frontier = std::numeric_limits<double>::infinity();
   for (const auto& island : islands_) frontier = std::min(frontier, island->time());

@@ -1,8 +1,9 @@
 // The simulation: advance(dt) moves the clock to exactly t + dt. The scene is split into islands (island.hpp), each
-// integrated on its own clock with its own steps, up to a synchronisation time before which no two islands can
-// touch (partition.hpp); there the islands are joined and split again. Every island steps on its own schedule,
-// independent of how the caller slices time: it steps past the target and the state at the target comes from the
-// step's dense output. Frames of 1/30 s, 1/240 s or one call give bit-identical results.
+// integrated on its own clock with its own steps up to its own deadline, before which nothing outside it can touch it
+// (partition.hpp). An island that reaches its deadline is looked at again, alone or with the islands it may now
+// reach: they are joined and split anew, and the others run on. Every island steps on its own schedule, independent
+// of how the caller slices time: it steps past the target and the state at the target comes from the step's dense
+// output. Frames of 1/30 s, 1/240 s or one call give bit-identical results.
 #pragma once
 #include <chrono>
 #include <functional>
@@ -49,25 +50,31 @@ class Simulation {
   const std::vector<std::unique_ptr<Island>>& islands() const { return islands_; }
 
  private:
-  void synchronise();  // every island is at sync_time_: join them into integ_ and split the scene again
+  // Splits the balls of `group` (islands at time t or, one step at most, past it) and the awake balls `awake` (in no
+  // island) into new islands at time t, taking in every other island that could meet them before it got where it is.
+  void regroup(double t, std::vector<Island*> group, std::vector<int> awake);
+  // s: the earliest time at which `balls` (at time t in integ_, in an island of energy `energy`) could touch a ball of
+  // `other` (at time t on its dense output).
+  double meeting_time(double t, const std::vector<int>& balls, double energy, const Island& other);
   void check_energy(double t);
   void stop(Status why, std::string message);
 
   Model model_;
-  State integ_;  // the whole scene at the last synchronisation; balls in no island stay as they are here
+  State integ_;  // balls in no island as they are; the others as their island last left or joined them
   State state_;  // the state at the caller's clock, interpolated
   ContactCache cache_;  // motion states of the whole scene
   Partitioner partition_;
   std::vector<std::unique_ptr<Island>> islands_;
-  double sync_time_;  // s: the islands step up to here, then synchronise
+  StateVector scratch_;
   std::vector<Event> events_;
   Stats stats_, retired_;  // retired_: what islands no longer running did
   Status status_ = Status::Ok;
   std::string diagnostic_;
   std::function<void(const Island&)> observer_;
   double energy_start_, energy_scale_;  // J: total at t = 0, and what it may grow by before the run is Unstable
-  // J: the total at the last synchronisation. Balls in no island do not move, so the total at any later time is this
-  // plus what the islands' energies changed since: the check after every advance() costs O(balls in islands).
+  // J: the total as of the islands' energy references (each island's start). Balls in no island do not move, so the
+  // total at any later time is this plus what the islands' energies changed since: the check after every advance()
+  // costs O(balls in islands).
   double energy_synced_;
   std::vector<Event> located_;  // taken from islands, not yet handed over
 };

@@ -30,14 +30,25 @@ struct State {
   std::vector<uint8_t> in_play; // 0 once a ball is pocketed or has left the table: frozen, touches nothing
   std::vector<uint8_t> asleep;  // 1 while a ball rests and nothing moving touches it (regimes.hpp); empty: none
   std::vector<int> rolling_on;  // the collider a ball rolls on in the rolling regime (regimes.hpp), else -1; empty: none
+  std::vector<int> sliding_on;  // the collider a ball slides on in the sliding regime (regimes.hpp), else -1; empty: none
   std::vector<double> still_for;  // s each ball has been at rest, towards sleep_time (regimes.hpp); empty: none
 
   int ball_count() const { return static_cast<int>(in_play.size()); }
   bool sleeping(int i) const { return static_cast<size_t>(i) < asleep.size() && asleep[i]; }
   bool rolling(int i) const { return static_cast<size_t>(i) < rolling_on.size() && rolling_on[i] >= 0; }
+  bool sliding(int i) const { return static_cast<size_t>(i) < sliding_on.size() && sliding_on[i] >= 0; }
   // In play and awake: its equations are integrated.
   bool active(int i) const { return in_play[i] && !sleeping(i); }
 };
+
+// Every ball's regime flags (everything but the time and the state vector) from one state to another.
+inline void copy_flags(const State& from, State& to) {
+  to.in_play = from.in_play;
+  to.asleep = from.asleep;
+  to.rolling_on = from.rolling_on;
+  to.sliding_on = from.sliding_on;
+  to.still_for = from.still_for;
+}
 
 // Ball i of `from` (its flags and, with `with_x`, its 9 numbers) into ball j of `to`, whose flags are sized: between
 // a scene and the sub-state of one of its islands (island.hpp).
@@ -46,6 +57,7 @@ inline void copy_ball(const State& from, int i, State& to, int j, bool with_x = 
   to.in_play[j] = from.in_play[i];
   to.asleep[j] = from.sleeping(i);
   to.rolling_on[j] = from.rolling(i) ? from.rolling_on[i] : -1;
+  to.sliding_on[j] = from.sliding(i) ? from.sliding_on[i] : -1;
   to.still_for[j] = static_cast<size_t>(i) < from.still_for.size() ? from.still_for[i] : 0.0;
 }
 
