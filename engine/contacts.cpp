@@ -96,10 +96,19 @@ double straight_line_contact_time(const Vec3& d0, const Vec3& v, double reach) {
 }  // namespace
 
 double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon,
-                                ContactCache& cache) {
+                                ContactCache& cache, std::vector<ContactKey>* separated) {
+  if (separated) separated->clear();
   // Relative acceleration bound outside contacts: gravity plus cloth friction, generously twice |g|. A pair pushed
   // harder by third balls may start touching inside a step; the simulation then cuts the step at the onset.
-  const double a = 2.0 * glm::length(model.options.gravity);
+  const double g = glm::length(model.options.gravity), a_free = 2.0 * g;
+  auto accel = [&](int i) {
+    if (state.rolling(i)) return cache.collider_material[state.rolling_on[i]]->rolling_resistance * g;
+    if (state.sliding(i)) {
+      const ContactMaterial& m = *cache.collider_material[state.sliding_on[i]];
+      return (m.friction + m.rolling_resistance) * g;
+    }
+    return a_free;
+  };
   const double margin = model.options.contact_margin;
   double best = std::numeric_limits<double>::infinity();
   double vmax = 0;
@@ -107,13 +116,14 @@ double time_to_possible_contact(const Model& model, const State& state, const do
   for (int i = 0; i < n; ++i) {
     if (!state.active(i)) continue;  // a sleeping ball does not move towards anything
     const Vec3 p = position(x, i), v = velocity(x, i);
-    const double s = glm::length(v);
+    const double s = glm::length(v), a = accel(i);
     vmax = std::max(vmax, s);
     // Colliders farther than the ball can travel within the horizon cannot limit the step.
     const double travel = s * horizon + a * horizon * horizon + margin;
     near_colliders(model, cache, p, model.balls[i].radius, travel, [&](int c, const Penetration& pen) {
       if (pen.depth <= 0)
         best = std::min(best, closing_time(margin - pen.depth, collider_closing_speed(model.colliders[c].shape, p, v), a));
+      if (separated && pen.depth <= -kTouch) separated->emplace_back(i, -1 - c);
     });
     // A ball in the rolling or sliding regime ignores its support's geometry: it must not move far over a pocket's edge.
     const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : -1;
@@ -122,20 +132,23 @@ double time_to_possible_contact(const Model& model, const State& state, const do
   // Ball pairs whose x gap is within anything closable within the horizon (a sleeper does not move: only the awake
   // one closes in).
   const double h = std::min(best, horizon);
+  if (separated) std::sort(separated->begin(), separated->end());  // (the pairs below are added in order at the end)
   if (h <= 0) return best;
   // Straight relative motion, its target widened by how far accelerations can bend the paths within the horizon (a
   // sliding ball curves at mu g). A pair already near that widened reach is bounded by its relative speed instead,
   // which never asks for less than contact_margin / speed: a step cannot stall at the widened boundary.
-  const double bend = 0.5 * a * h * h;
-  sweep_pairs(model, state, x, cache, 2.0 * vmax * h + a * h * h, false, [&](int i, int j) {
+  sweep_pairs(model, state, x, cache, 2.0 * vmax * h + a_free * h * h, false, [&](int i, int j) {
+    const double ai = accel(i), aj = accel(j), a = ai == a_free || aj == a_free ? a_free : ai + aj, bend = 0.5 * a * h * h;
     const Vec3 d0 = position(x, i) - position(x, j), v = velocity(x, i) - velocity(x, j);
     const double ri = model.balls[i].radius, rj = model.balls[j].radius, dist = glm::length(d0);
+    if (separated && dist - ri - rj >= kTouch) separated->emplace_back(std::min(i, j), std::max(i, j));
     if (dist <= ri + rj) return;  // already touching: the contact force is resolved by error control
     // Relative motion: balls moving together, as a broken rack does, do not hold each other's steps back.
     const double reach = ri + rj - margin;
     best = std::min(best, dist < reach + 2 * bend ? closing_time(dist - reach, glm::length(v), a)
                                                   : straight_line_contact_time(d0, v, reach + bend));
   });
+  if (separated) std::sort(separated->begin(), separated->end());
   return best;
 }
 

@@ -10,6 +10,14 @@
 
 namespace shotlab {
 
+// m: a contact counts from this depth on. Frozen balls touch at zero depth, and round-off or integration noise at the
+// tolerance (1e-17 to 1e-11 m) would otherwise report contacts beginning and ending that carry no force; a real impact
+// passes 1 nm within 1e-10 s at 10 m/s, 1e-6 s at 1 mm/s. A pair deeper than -kTouch counts as touching.
+inline constexpr double kTouch = 1e-9;
+
+// A contact's bodies: (ball, other ball) with ball < other, or (ball, -1 - collider index).
+using ContactKey = std::pair<int, int>;
+
 struct Contact {
   int ball;          // ball A
   int other_ball;    // ball B, or -1 when B is a collider
@@ -38,6 +46,11 @@ struct ContactCache {
   std::vector<double> sleeper_left;  // x - R of each sleeper, ascending
   std::vector<uint8_t> sleep_key;    // in_play and asleep flags the sleeper list was built for
   double max_radius = 0;
+  // Contacts the right-hand side leaves out, sorted: those separated (depth <= -kTouch) when the current step began.
+  // A contact's onset puts a jump in the force (linear damping) or in its derivatives; a step across it fails the
+  // error control and shrinks, approach after approach. Left out, the step runs smoothly past the onset, and the
+  // island cuts it where the contact begins (island.cpp); the next step starts touching. Empty outside a step.
+  std::vector<ContactKey> separated;
 };
 
 // Calls fn(i, j) for every pair of balls in play, at least one of them awake, whose x extents come within `reach`
@@ -82,9 +95,11 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
 // A lower bound on the time before any still-separated pair (ball-ball or ball-collider) could touch, given current
 // velocities and an acceleration bound; +inf when nothing can within `horizon` (the step the integrator wants).
 // Adaptive steps are capped by it so that no contact, however glancing, falls between two steps (MODEL.md,
-// "Numerical facts"). Ball pairs use their relative speed, so a cluster moving together is not held back.
+// "Numerical facts"). Ball pairs use their relative speed, so a cluster moving together is not held back. With
+// `separated`, also lists (sorted) the contacts it looked at that are separated by kTouch or more: every contact
+// that could begin within the horizon.
 double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon,
-                                ContactCache& cache);
+                                ContactCache& cache, std::vector<ContactKey>* separated = nullptr);
 
 }  // namespace shotlab
 

@@ -55,13 +55,16 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
   const int n = state.ball_count();
   const std::vector<double>& inv_mass = cache.inv_mass;  // mobilities of each ball (contact_force.hpp)
   const std::vector<double>& inv_inertia_r2 = cache.inv_inertia_r2;
+  auto left_out = [&](int a, int b) {
+    return !cache.separated.empty() && std::binary_search(cache.separated.begin(), cache.separated.end(), ContactKey{a, b});
+  };
   // Ball against static colliders: B has zero velocity.
   for (int i = 0; i < n; ++i) {
     if (!state.in_play[i] || ((state.sleeping(i) || state.rolling(i) || state.sliding(i)) && !with_inactive)) continue;
     const double r = model.balls[i].radius;
     const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
     near_colliders(model, cache, p, r, 0.0, [&](int c, const Penetration& pen) {
-      if (pen.depth <= 0) return;
+      if (pen.depth <= 0 || left_out(i, -1 - c)) return;
       const ContactKinematics kin = collider_kinematics(cache, i, r, v, w, pen.normal, pen.depth);
       const ContactForce f = contact_force(*cache.collider_material[c], kin, k);
       fn(Contact{i, -1, c, pen.depth, pen.normal, p - r * pen.normal, f});
@@ -71,7 +74,7 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
   overlapping_pairs(model, state, x, cache, 0.0, with_inactive);
   const ContactMaterial& bb = *cache.ball_ball;
   for (const auto& [i, j] : cache.pairs) {
-    if (state.sleeping(i) && state.sleeping(j) && !with_inactive) continue;
+    if ((state.sleeping(i) && state.sleeping(j) && !with_inactive) || left_out(std::min(i, j), std::max(i, j))) continue;
     const double ri = model.balls[i].radius, rj = model.balls[j].radius;
     const Vec3 d = position(x, i) - position(x, j);
     const double dist = glm::length(d);

@@ -26,6 +26,9 @@ class Dynamics {
   void operator()(const StateVector& x, StateVector& dxdt, double t);
 
   long evaluations() const { return evaluations_; }
+  // The contacts to leave out (ContactCache::separated), for the step about to be taken; {} for none.
+  void set_separated(std::vector<ContactKey> keys) { cache_.separated = std::move(keys); }
+  const std::vector<ContactKey>& separated() const { return cache_.separated; }
 
  private:
   void apply_rods(const StateVector& x, StateVector& dxdt) const;

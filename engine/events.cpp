@@ -10,10 +10,6 @@ namespace {
 // A ball counts as supported while its gap to a collider is under 10 um: it stays "on the table" through the
 // micrometre bounces of a settling contact instead of flickering between airborne and landed.
 constexpr double kSupportGap = 1e-5;
-// Events count a contact from this depth (m) on: frozen balls touch at zero depth, and round-off or integration
-// noise at the tolerance (1e-17 to 1e-11 m) would otherwise report contacts beginning and ending that carry no
-// force; a real impact passes 1 nm within 1e-10 s at 10 m/s, 1e-6 s at 1 mm/s.
-constexpr double kTouch = 1e-9;
 // Bisection stops when the bracket is this short (s).
 constexpr double kTimeResolution = 1e-10;
 
@@ -121,20 +117,21 @@ void EventDetector::changes(const State& state, const double* x, std::vector<Key
   std::set_difference(contacts_.begin(), contacts_.end(), now.begin(), now.end(), std::back_inserter(ended));
 }
 
-double EventDetector::first_contact_change(const StepSpan& span, const State& state) {
+EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span, const State& state) {
   std::vector<Key> now, begun, ended;
   changes(state, span.x1.data(), now, begun, ended);
-  double first = std::numeric_limits<double>::infinity();
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  Changes first{inf, inf};
   // Frozen balls touch at zero depth, and round-off flips them in and out of contact: no kink worth a restart.
-  auto locate = [&](const Key& k, const StateVector& apart, bool begins) {
+  auto locate = [&](const Key& k, const StateVector& apart, bool begins, double& at) {
     if (depth(k, apart.data()) > -kTouch) return;
-    first = std::min(first, bisect(span.t0, span.t1, [&](double s) {
-                       span.interpolate(s, scratch_);
-                       return (depth(k, scratch_.data()) > kTouch) == begins;
-                     }));
+    at = std::min(at, bisect(span.t0, span.t1, [&](double s) {
+                    span.interpolate(s, scratch_);
+                    return (depth(k, scratch_.data()) > kTouch) == begins;
+                  }));
   };
-  for (const Key& k : begun) locate(k, span.x0, true);
-  for (const Key& k : ended) locate(k, span.x1, false);
+  for (const Key& k : begun) locate(k, span.x0, true, first.begin);
+  for (const Key& k : ended) locate(k, span.x1, false, first.end);
   return first;
 }
 

@@ -42,11 +42,15 @@ class EventDetector {
   // Compares the end of `span` against the snapshot, appends located events and the balls that left play, and takes
   // the end of the span as the new snapshot.
   void scan(const StepSpan& span, const State& state, std::vector<Event>& events, std::vector<Exit>& exits);
-  // Earliest time in the span at which a contact begins or ends (where the force law has a kink); +inf when none.
-  double first_contact_change(const StepSpan& span, const State& state);
+  // Earliest times in the span at which a contact begins and at which one ends (where the force law has a kink);
+  // +inf when none.
+  struct Changes {
+    double begin, end;
+  };
+  Changes first_contact_change(const StepSpan& span, const State& state);
 
  private:
-  using Key = std::pair<int, int>;  // (ball, other): other >= 0 a ball, other < 0 the collider -1 - other
+  using Key = ContactKey;
   void collect(const State& state, const double* x, std::vector<Key>& keys);
   // The contacts at x, and which of them began or ended since the snapshot.
   void changes(const State& state, const double* x, std::vector<Key>& now, std::vector<Key>& begun,

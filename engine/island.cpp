@@ -24,6 +24,9 @@ Stats& Stats::operator+=(const Stats& o) {
 
 namespace {
 
+// Redone attempts of one step (each ending at a contact change found in the one before) before it is taken as is.
+constexpr int kMaxRedos = 8;
+
 // The world's model with only the given balls (and the rods that hold them, renumbered).
 Model sub_model(const Model& world, const std::vector<int>& balls) {
   Model m;
@@ -127,7 +130,16 @@ bool Island::step(double limit) {
   const bool adaptive = is_adaptive(model_.integrator.method);
   double dt = adaptive ? dt_next_ : model_.integrator.fixed_step;
   const double wanted = dt;
-  if (adaptive) dt = std::min(dt, time_to_possible_contact(model_, integ_, span_.x1.data(), dt, cap_cache_));
+  // Contacts still separated are left out of the step (ContactCache::separated); every one that may begin within it
+  // is on the cap's list. Left out, a separated contact has no force at the step's start either, so f there stays
+  // as it was, unless a contact left out of the last step touches now (that step was cut at its onset).
+  std::vector<ContactKey> separated;
+  if (adaptive) dt = std::min(dt, time_to_possible_contact(model_, integ_, span_.x1.data(), dt, cap_cache_, &separated));
+  const bool rejoined = !std::includes(separated.begin(), separated.end(), dynamics_.separated().begin(),
+                                       dynamics_.separated().end());
+  dynamics_.set_separated(std::move(separated));
+  StateVector f0 = span_.f1;
+  if (rejoined) dynamics_(span_.x1, f0, span_.t1);
   // The synchronisation time ends the step exactly (round-off in t1 + (limit - t1) is snapped below).
   const bool to_limit = dt >= limit - span_.t1;
   if (to_limit) dt = limit - span_.t1;
@@ -138,19 +150,30 @@ bool Island::step(double limit) {
   const long rejected_before = stats_.rejected_steps;
   for (;;) {
     x = span_.x1;
-    f = span_.f1;
+    f = f0;
     t = span_.t1;
     tried = dt;
     if (stepper_->try_step(dynamics_, x, f, t, dt)) {
       // A contact that begins or ends inside the step puts a kink (linear damping: a jump) in the force, where every
       // embedded error estimate misjudges a high-order step (MODEL.md, "Numerical facts"). Redo the step so that it
-      // ends at the change, located on this step's dense output; the next step then starts at the kink. Changes in
-      // the first 1 % of a step are left alone: that is where a redone step's successor finds them.
-      if (!adaptive || retries == 3) break;
-      const StepSpan trial{span_.t1, t, span_.x1, span_.f1, x, f};
-      const double onset = detector_.first_contact_change(trial, integ_);
-      if (onset <= span_.t1 + 0.01 * tried || onset >= t) break;
-      dt = onset - span_.t1;
+      // ends at the change, located on this step's dense output; the next step then starts at the kink. An onset ends
+      // the step however early it comes, since its contact was left out of the step; ends in the first 1 % of a
+      // step are left alone, where a redone step's successor finds them.
+      if (!adaptive) break;
+      const StepSpan trial{span_.t1, t, span_.x1, f0, x, f};
+      const auto change = detector_.first_contact_change(trial, integ_);
+      const double early = span_.t1 + 0.01 * tried;
+      double cut = change.end > early ? change.end : std::numeric_limits<double>::infinity();
+      if (change.begin > (dynamics_.separated().empty() ? early : span_.t1)) cut = std::min(cut, change.begin);
+      if (cut >= t) break;
+      if (retries == kMaxRedos) {
+        if (dynamics_.separated().empty()) break;
+        // Still an onset inside: the step again with every contact on, its kink left to the error control.
+        dynamics_.set_separated({});
+        dt = tried;
+        continue;
+      }
+      dt = cut - span_.t1;
       ++retries;
       ++stats_.redone_steps;
       continue;
@@ -186,7 +209,7 @@ bool Island::step(double limit) {
   }
 
   span_.x0.swap(span_.x1);
-  span_.f0.swap(span_.f1);
+  span_.f0 = std::move(f0);
   span_.t0 = span_.t1;
   span_.x1 = std::move(x);
   span_.f1 = std::move(f);
