@@ -7,18 +7,19 @@ double sharpness_for(const Smoothing& s, double strength, double mobility) {
   return s.rate_limit > 0 && rate > s.rate_limit ? s.sharpness * s.rate_limit / rate : s.sharpness;
 }
 
-ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& k, const Smoothing& smoothing) {
-  ContactForce out;
-  const Vec3& n = k.normal;
-  const double rate = -glm::dot(k.v_rel, n);  // d' > 0 while the bodies approach
+double normal_force(const ContactMaterial& mat, double depth, double rate) {
   // Hertz's exponent 1.5 as d sqrt(d): std::pow costs several times more in this innermost loop.
-  const double elastic = mat.stiffness * (mat.exponent == 1.5 ? k.depth * std::sqrt(k.depth) : std::pow(k.depth, mat.exponent));
-  const double fn = mat.damping_law == DampingLaw::Linear ? elastic + mat.damping * rate
-                                                          : elastic * (1.0 + mat.damping * rate);
+  const double elastic = mat.stiffness * (mat.exponent == 1.5 ? depth * std::sqrt(depth) : std::pow(depth, mat.exponent));
+  return mat.damping_law == DampingLaw::Linear ? elastic + mat.damping * rate : elastic * (1.0 + mat.damping * rate);
+}
+
+ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& k, const Smoothing& smoothing, bool clamp) {
+  ContactForce out;
+  const double fn = normal_force(mat, k.depth, -glm::dot(k.v_rel, k.normal));  // d' > 0 while the bodies approach
   // Clamp: the damping term turns negative while the bodies separate; a contact can push but never pull.
-  out.normal = std::max(fn, 0.0);
-  out.force = out.normal * n;
-  if (out.normal > 0.0) add_friction(mat, k, smoothing, out);
+  out.normal = clamp ? std::max(fn, 0.0) : fn;
+  out.force = out.normal * k.normal;
+  if (out.normal > 0.0 || !clamp) add_friction(mat, k, smoothing, out);
   return out;
 }
 

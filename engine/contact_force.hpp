@@ -47,7 +47,15 @@ struct Smoothing {
 // short against the contact's 0.2-1 ms, and the step stays set by the contact itself.
 double sharpness_for(const Smoothing& s, double strength, double mobility);
 
-ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& k, const Smoothing& smoothing);
+// The normal force (N) of the law before its clamp, at the given depth (m, > 0) and approach rate (m/s): Hertz plus
+// damping, negative while the damping pulls.
+double normal_force(const ContactMaterial& mat, double depth, double rate);
+
+// With clamp = false the normal force is not clamped at zero and the tangential terms act at it, even a negative one:
+// the smooth continuation of the law that a step takes up to where the force reaches zero (island.cpp), so that the
+// clamp's kink does not fall inside a step.
+ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& k, const Smoothing& smoothing,
+                           bool clamp = true);
 // The tangential terms alone (friction, rolling resistance, spin friction) of a contact carrying the normal force
 // out.normal > 0, added to `out`: contact_force's second half, and the whole bed force of a ball in the sliding
 // regime (regimes.hpp), whose normal force is its weight.

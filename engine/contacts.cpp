@@ -93,11 +93,20 @@ double straight_line_contact_time(const Vec3& d0, const Vec3& v, double reach) {
   return 2 * C / (-B + std::sqrt(disc));
 }
 
+// A contact deeper than kTouch (m) closing at `rate` (m/s) that pushes, but with less than half its elastic force: it is
+// separating and may stop pushing within a step. Contacts further from the clamp stay off StepContacts::pushing, which
+// costs a check of every listed contact on every step (a resting ball's bed contact, a rack's every pair).
+bool may_release(const ContactMaterial& m, double depth, double rate) {
+  if (depth <= kTouch || rate >= 0) return false;  // damping pulls only while the bodies separate
+  const double fn = normal_force(m, depth, rate);
+  return fn > 0 && fn < 0.5 * normal_force(m, depth, 0.0);
+}
+
 }  // namespace
 
 double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon,
-                                ContactCache& cache, std::vector<ContactKey>* separated) {
-  if (separated) separated->clear();
+                                ContactCache& cache, StepContacts* step) {
+  if (step) step->separated.clear(), step->pushing.clear();
   // Relative acceleration bound outside contacts: gravity plus cloth friction, generously twice |g|. A pair pushed
   // harder by third balls may start touching inside a step; the simulation then cuts the step at the onset.
   const double g = glm::length(model.options.gravity), a_free = 2.0 * g;
@@ -123,7 +132,9 @@ double time_to_possible_contact(const Model& model, const State& state, const do
     near_colliders(model, cache, p, model.balls[i].radius, travel, [&](int c, const Penetration& pen) {
       if (pen.depth <= 0)
         best = std::min(best, closing_time(margin - pen.depth, collider_closing_speed(model.colliders[c].shape, p, v), a));
-      if (separated && pen.depth <= -kTouch) separated->emplace_back(i, -1 - c);
+      if (!step) return;
+      if (pen.depth <= -kTouch) step->separated.emplace_back(i, -1 - c);
+      if (may_release(*cache.collider_material[c], pen.depth, -glm::dot(v, pen.normal))) step->pushing.emplace_back(i, -1 - c);
     });
     // A ball in the rolling or sliding regime ignores its support's geometry: it must not move far over a pocket's edge.
     const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : -1;
@@ -132,8 +143,13 @@ double time_to_possible_contact(const Model& model, const State& state, const do
   // Ball pairs whose x gap is within anything closable within the horizon (a sleeper does not move: only the awake
   // one closes in).
   const double h = std::min(best, horizon);
-  if (separated) std::sort(separated->begin(), separated->end());  // (the pairs below are added in order at the end)
-  if (h <= 0) return best;
+  auto sort = [&] {
+    if (step) std::sort(step->separated.begin(), step->separated.end()), std::sort(step->pushing.begin(), step->pushing.end());
+  };
+  if (h <= 0) {
+    sort();
+    return best;
+  }
   // Straight relative motion, its target widened by how far accelerations can bend the paths within the horizon (a
   // sliding ball curves at mu g). A pair already near that widened reach is bounded by its relative speed instead,
   // which never asks for less than contact_margin / speed: a step cannot stall at the widened boundary.
@@ -141,14 +157,18 @@ double time_to_possible_contact(const Model& model, const State& state, const do
     const double ai = accel(i), aj = accel(j), a = ai == a_free || aj == a_free ? a_free : ai + aj, bend = 0.5 * a * h * h;
     const Vec3 d0 = position(x, i) - position(x, j), v = velocity(x, i) - velocity(x, j);
     const double ri = model.balls[i].radius, rj = model.balls[j].radius, dist = glm::length(d0);
-    if (separated && dist - ri - rj >= kTouch) separated->emplace_back(std::min(i, j), std::max(i, j));
-    if (dist <= ri + rj) return;  // already touching: the contact force is resolved by error control
+    if (step && dist - ri - rj >= kTouch) step->separated.emplace_back(std::min(i, j), std::max(i, j));
+    if (dist <= ri + rj) {  // already touching: the contact force is resolved by error control
+      if (step && may_release(*cache.ball_ball, ri + rj - dist, -glm::dot(v, d0) / dist))
+        step->pushing.emplace_back(std::min(i, j), std::max(i, j));
+      return;
+    }
     // Relative motion: balls moving together, as a broken rack does, do not hold each other's steps back.
     const double reach = ri + rj - margin;
     best = std::min(best, dist < reach + 2 * bend ? closing_time(dist - reach, glm::length(v), a)
                                                   : straight_line_contact_time(d0, v, reach + bend));
   });
-  if (separated) std::sort(separated->begin(), separated->end());
+  sort();
   return best;
 }
 

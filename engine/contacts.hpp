@@ -18,6 +18,16 @@ inline constexpr double kTouch = 1e-9;
 // A contact's bodies: (ball, other ball) with ball < other, or (ball, -1 - collider index).
 using ContactKey = std::pair<int, int>;
 
+// How the contacts that may change during a step are treated in it (island.cpp), as sorted keys. The force law has
+// a jump at an onset (linear damping: c v) and a kink where the clamp cuts in; a step across either fails the error
+// control and shrinks, over and over as the change comes closer. Instead, the right-hand side keeps each contact's
+// law as it was at the step's start and the island ends the step where the change happens (found on the step's
+// dense output); the next step starts on the other side.
+struct StepContacts {
+  std::vector<ContactKey> separated;  // separated by kTouch or more at the start: left out of the step
+  std::vector<ContactKey> pushing;    // pushing at the start, but near the clamp: not clamped in the step
+};
+
 struct Contact {
   int ball;          // ball A
   int other_ball;    // ball B, or -1 when B is a collider
@@ -46,11 +56,7 @@ struct ContactCache {
   std::vector<double> sleeper_left;  // x - R of each sleeper, ascending
   std::vector<uint8_t> sleep_key;    // in_play and asleep flags the sleeper list was built for
   double max_radius = 0;
-  // Contacts the right-hand side leaves out, sorted: those separated (depth <= -kTouch) when the current step began.
-  // A contact's onset puts a jump in the force (linear damping) or in its derivatives; a step across it fails the
-  // error control and shrinks, approach after approach. Left out, the step runs smoothly past the onset, and the
-  // island cuts it where the contact begins (island.cpp); the next step starts touching. Empty outside a step.
-  std::vector<ContactKey> separated;
+  StepContacts step;  // for the right-hand side of an island's step (set by Dynamics); empty elsewhere
 };
 
 // Calls fn(i, j) for every pair of balls in play, at least one of them awake, whose x extents come within `reach`
@@ -96,10 +102,10 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
 // velocities and an acceleration bound; +inf when nothing can within `horizon` (the step the integrator wants).
 // Adaptive steps are capped by it so that no contact, however glancing, falls between two steps (MODEL.md,
 // "Numerical facts"). Ball pairs use their relative speed, so a cluster moving together is not held back. With
-// `separated`, also lists (sorted) the contacts it looked at that are separated by kTouch or more: every contact
-// that could begin within the horizon.
+// `step`, also sorts the contacts it looks at into step->separated (every contact that could begin within the
+// horizon) and step->pushing.
 double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon,
-                                ContactCache& cache, std::vector<ContactKey>* separated = nullptr);
+                                ContactCache& cache, StepContacts* step = nullptr);
 
 }  // namespace shotlab
 

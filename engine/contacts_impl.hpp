@@ -55,8 +55,8 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
   const int n = state.ball_count();
   const std::vector<double>& inv_mass = cache.inv_mass;  // mobilities of each ball (contact_force.hpp)
   const std::vector<double>& inv_inertia_r2 = cache.inv_inertia_r2;
-  auto left_out = [&](int a, int b) {
-    return !cache.separated.empty() && std::binary_search(cache.separated.begin(), cache.separated.end(), ContactKey{a, b});
+  auto listed = [](const std::vector<ContactKey>& keys, int a, int b) {
+    return !keys.empty() && std::binary_search(keys.begin(), keys.end(), ContactKey{a, b});
   };
   // Ball against static colliders: B has zero velocity.
   for (int i = 0; i < n; ++i) {
@@ -64,9 +64,9 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
     const double r = model.balls[i].radius;
     const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
     near_colliders(model, cache, p, r, 0.0, [&](int c, const Penetration& pen) {
-      if (pen.depth <= 0 || left_out(i, -1 - c)) return;
+      if (pen.depth <= 0 || listed(cache.step.separated, i, -1 - c)) return;
       const ContactKinematics kin = collider_kinematics(cache, i, r, v, w, pen.normal, pen.depth);
-      const ContactForce f = contact_force(*cache.collider_material[c], kin, k);
+      const ContactForce f = contact_force(*cache.collider_material[c], kin, k, !listed(cache.step.pushing, i, -1 - c));
       fn(Contact{i, -1, c, pen.depth, pen.normal, p - r * pen.normal, f});
     });
   }
@@ -74,7 +74,8 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
   overlapping_pairs(model, state, x, cache, 0.0, with_inactive);
   const ContactMaterial& bb = *cache.ball_ball;
   for (const auto& [i, j] : cache.pairs) {
-    if ((state.sleeping(i) && state.sleeping(j) && !with_inactive) || left_out(std::min(i, j), std::max(i, j))) continue;
+    const int a = std::min(i, j), b = std::max(i, j);
+    if ((state.sleeping(i) && state.sleeping(j) && !with_inactive) || listed(cache.step.separated, a, b)) continue;
     const double ri = model.balls[i].radius, rj = model.balls[j].radius;
     const Vec3 d = position(x, i) - position(x, j);
     const double dist = glm::length(d);
@@ -85,7 +86,7 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
     const ContactKinematics kin{nrm, ri + rj - dist, vrel, slip, glm::dot(wi - wj, nrm), ri,
                                 inv_mass[i] + inv_inertia_r2[i] + inv_mass[j] + inv_inertia_r2[j],
                                 inv_mass[i] + inv_mass[j], inv_inertia_r2[i] + inv_inertia_r2[j]};
-    fn(Contact{i, j, -1, kin.depth, nrm, position(x, i) - ri * nrm, contact_force(bb, kin, k)});
+    fn(Contact{i, j, -1, kin.depth, nrm, position(x, i) - ri * nrm, contact_force(bb, kin, k, !listed(cache.step.pushing, a, b))});
   }
 }
 

@@ -26,9 +26,10 @@ class Dynamics {
   void operator()(const StateVector& x, StateVector& dxdt, double t);
 
   long evaluations() const { return evaluations_; }
-  // The contacts to leave out (ContactCache::separated), for the step about to be taken; {} for none.
-  void set_separated(std::vector<ContactKey> keys) { cache_.separated = std::move(keys); }
-  const std::vector<ContactKey>& separated() const { return cache_.separated; }
+  // How the step about to be taken treats its changing contacts (contacts.hpp; empty lists: the plain law). Swapped
+  // in, so that the caller's lists keep their storage and hold the last step's afterwards.
+  void swap_step(StepContacts& step) { std::swap(cache_.step, step); }
+  const StepContacts& step() const { return cache_.step; }
 
  private:
   void apply_rods(const StateVector& x, StateVector& dxdt) const;

@@ -100,6 +100,31 @@ double EventDetector::depth(const Key& key, const double* x) const {
   return pen ? pen->depth : -1.0;
 }
 
+bool EventDetector::released(const Key& key, const double* x) const {
+  const auto [i, other] = key;
+  const double ri = model_.balls[i].radius;
+  if (other >= 0) {
+    const Vec3 d = position(x, i) - position(x, other);
+    const double dist = glm::length(d), depth = ri + model_.balls[other].radius - dist;
+    return depth <= 0 || normal_force(*cache_.ball_ball, depth, -glm::dot(velocity(x, i) - velocity(x, other), d) / dist) <= 0;
+  }
+  const auto pen = penetration(model_.colliders[-1 - other].shape, position(x, i), ri, 0.0);
+  return !pen || pen->depth <= 0 ||
+         normal_force(*cache_.collider_material[-1 - other], pen->depth, -glm::dot(velocity(x, i), pen->normal)) <= 0;
+}
+
+double EventDetector::first_release(const StepSpan& span, const std::vector<ContactKey>& pushing) {
+  double first = std::numeric_limits<double>::infinity();
+  for (const Key& k : pushing) {
+    if (!released(k, span.x1.data())) continue;
+    first = std::min(first, bisect(span.t0, span.t1, [&](double s) {
+                       span.interpolate(s, scratch_);
+                       return released(k, scratch_.data());
+                     }));
+  }
+  return first;
+}
+
 std::string EventDetector::body_name(int other) const {
   return other >= 0 ? model_.balls[other].id : model_.colliders[-1 - other].name;
 }

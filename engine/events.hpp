@@ -48,6 +48,9 @@ class EventDetector {
     double begin, end;
   };
   Changes first_contact_change(const StepSpan& span, const State& state);
+  // Earliest time in the span at which one of the `pushing` contacts stops pushing: its unclamped normal force
+  // reaches zero, or it ends; +inf when none.
+  double first_release(const StepSpan& span, const std::vector<ContactKey>& pushing);
 
  private:
   using Key = ContactKey;
@@ -56,6 +59,7 @@ class EventDetector {
   void changes(const State& state, const double* x, std::vector<Key>& now, std::vector<Key>& begun,
                std::vector<Key>& ended);
   double depth(const Key& key, const double* x) const;
+  bool released(const Key& key, const double* x) const;  // not touching, or its unclamped normal force <= 0
   std::string body_name(int other) const;
 
   const Model& model_;

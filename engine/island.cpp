@@ -130,17 +130,17 @@ bool Island::step(double limit) {
   const bool adaptive = is_adaptive(model_.integrator.method);
   double dt = adaptive ? dt_next_ : model_.integrator.fixed_step;
   const double wanted = dt;
-  // Contacts still separated are left out of the step (ContactCache::separated); every one that may begin within it
-  // is on the cap's list. Left out, a separated contact has no force at the step's start either, so f there stays
-  // as it was, unless a contact left out of the last step touches now (that step was cut at its onset).
-  std::vector<ContactKey> separated;
-  if (adaptive) dt = std::min(dt, time_to_possible_contact(model_, integ_, span_.x1.data(), dt, cap_cache_, &separated));
-  const bool rejoined = !std::includes(separated.begin(), separated.end(), dynamics_.separated().begin(),
-                                       dynamics_.separated().end());
-  dynamics_.set_separated(std::move(separated));
-  StateVector f0 = span_.f1;
-  if (rejoined) dynamics_(span_.x1, f0, span_.t1);
-  // The synchronisation time ends the step exactly (round-off in t1 + (limit - t1) is snapped below).
+  // The changing contacts keep their law through the step (StepContacts). A contact left out has no force at the
+  // step's start, nor has an unclamped one a different force there, so f there stays as it was, unless a contact
+  // left out of the last step touches now or one unclamped in it has stopped pushing (it was cut there).
+  if (adaptive) dt = std::min(dt, time_to_possible_contact(model_, integ_, span_.x1.data(), dt, cap_cache_, &plan_));
+  dynamics_.swap_step(plan_);
+  const StepContacts &now = dynamics_.step(), &last = plan_;
+  const bool changed = !std::includes(now.separated.begin(), now.separated.end(), last.separated.begin(), last.separated.end()) ||
+                       !std::includes(now.pushing.begin(), now.pushing.end(), last.pushing.begin(), last.pushing.end());
+  StateVector& f0 = f_start_;
+  f0 = span_.f1;
+  if (changed) dynamics_(span_.x1, f0, span_.t1);
   const bool to_limit = dt >= limit - span_.t1;
   if (to_limit) dt = limit - span_.t1;
   const bool capped = dt < wanted;
@@ -156,20 +156,23 @@ bool Island::step(double limit) {
     if (stepper_->try_step(dynamics_, x, f, t, dt)) {
       // A contact that begins or ends inside the step puts a kink (linear damping: a jump) in the force, where every
       // embedded error estimate misjudges a high-order step (MODEL.md, "Numerical facts"). Redo the step so that it
-      // ends at the change, located on this step's dense output; the next step then starts at the kink. An onset ends
-      // the step however early it comes, since its contact was left out of the step; ends in the first 1 % of a
-      // step are left alone, where a redone step's successor finds them.
+      // ends at the change, located on this step's dense output; the next step then starts at the kink. An onset or a
+      // release of a contact whose law the step kept (StepContacts) ends the step however early it comes; other ends
+      // in the first 1 % of a step are left alone, where a redone step's successor finds them.
       if (!adaptive) break;
       const StepSpan trial{span_.t1, t, span_.x1, f0, x, f};
       const auto change = detector_.first_contact_change(trial, integ_);
+      const StepContacts& kept = dynamics_.step();
       const double early = span_.t1 + 0.01 * tried;
       double cut = change.end > early ? change.end : std::numeric_limits<double>::infinity();
-      if (change.begin > (dynamics_.separated().empty() ? early : span_.t1)) cut = std::min(cut, change.begin);
+      if (change.begin > (kept.separated.empty() ? early : span_.t1)) cut = std::min(cut, change.begin);
+      if (!kept.pushing.empty()) cut = std::min(cut, detector_.first_release(trial, kept.pushing));
       if (cut >= t) break;
       if (retries == kMaxRedos) {
-        if (dynamics_.separated().empty()) break;
-        // Still an onset inside: the step again with every contact on, its kink left to the error control.
-        dynamics_.set_separated({});
+        if (kept.separated.empty() && kept.pushing.empty()) break;
+        // Still a change inside: the step again with the plain law, its kinks left to the error control.
+        StepContacts plain;
+        dynamics_.swap_step(plain);
         dt = tried;
         continue;
       }
@@ -209,7 +212,7 @@ bool Island::step(double limit) {
   }
 
   span_.x0.swap(span_.x1);
-  span_.f0 = std::move(f0);
+  span_.f0.swap(f0);
   span_.t0 = span_.t1;
   span_.x1 = std::move(x);
   span_.f1 = std::move(f);

@@ -106,6 +106,8 @@ class Island {
   EventDetector detector_;
   Regimes regimes_;
   ContactCache cap_cache_;  // broad phase of the step cap
+  StepContacts plan_;       // the step's contact lists as the cap finds them (then the last step's, swapped out)
+  StateVector f_start_;     // f at the step's start
   StepSpan span_;
   double dt_next_;
   double deadline_ = 0;
