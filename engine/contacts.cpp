@@ -130,10 +130,12 @@ double time_to_possible_contact(const Model& model, const State& state, const do
     // Colliders farther than the ball can travel within the horizon cannot limit the step.
     const double travel = s * horizon + a * horizon * horizon + margin;
     near_colliders(model, cache, p, model.balls[i].radius, travel, [&](int c, const Penetration& pen) {
-      if (pen.depth <= 0)
-        best = std::min(best, closing_time(margin - pen.depth, collider_closing_speed(model.colliders[c].shape, p, v), a));
+      if (pen.depth <= 0) {
+        const double t = closing_time(margin - pen.depth, collider_closing_speed(model.colliders[c].shape, p, v), a);
+        best = std::min(best, t);
+        if (step && pen.depth <= -kTouch && t <= horizon) step->separated.emplace_back(i, -1 - c);
+      }
       if (!step) return;
-      if (pen.depth <= -kTouch) step->separated.emplace_back(i, -1 - c);
       if (may_release(*cache.collider_material[c], pen.depth, -glm::dot(v, pen.normal))) step->pushing.emplace_back(i, -1 - c);
     });
     // A ball in the rolling or sliding regime ignores its support's geometry: it must not move far over a pocket's edge.
@@ -157,7 +159,6 @@ double time_to_possible_contact(const Model& model, const State& state, const do
     const double ai = accel(i), aj = accel(j), a = ai == a_free || aj == a_free ? a_free : ai + aj, bend = 0.5 * a * h * h;
     const Vec3 d0 = position(x, i) - position(x, j), v = velocity(x, i) - velocity(x, j);
     const double ri = model.balls[i].radius, rj = model.balls[j].radius, dist = glm::length(d0);
-    if (step && dist - ri - rj >= kTouch) step->separated.emplace_back(std::min(i, j), std::max(i, j));
     if (dist <= ri + rj) {  // already touching: the contact force is resolved by error control
       if (step && may_release(*cache.ball_ball, ri + rj - dist, -glm::dot(v, d0) / dist))
         step->pushing.emplace_back(std::min(i, j), std::max(i, j));
@@ -165,8 +166,10 @@ double time_to_possible_contact(const Model& model, const State& state, const do
     }
     // Relative motion: balls moving together, as a broken rack does, do not hold each other's steps back.
     const double reach = ri + rj - margin;
-    best = std::min(best, dist < reach + 2 * bend ? closing_time(dist - reach, glm::length(v), a)
-                                                  : straight_line_contact_time(d0, v, reach + bend));
+    const double t = dist < reach + 2 * bend ? closing_time(dist - reach, glm::length(v), a)
+                                             : straight_line_contact_time(d0, v, reach + bend);
+    best = std::min(best, t);
+    if (step && dist - ri - rj >= kTouch && t <= horizon) step->separated.emplace_back(std::min(i, j), std::max(i, j));
   });
   sort();
   return best;
