@@ -141,6 +141,7 @@ bool Island::step(double limit) {
   StateVector& f0 = f_start_;
   f0 = span_.f1;
   if (changed) dynamics_(span_.x1, f0, span_.t1);
+  // The synchronisation time ends the step exactly (round-off in t1 + (limit - t1) is snapped below).
   const bool to_limit = dt >= limit - span_.t1;
   if (to_limit) dt = limit - span_.t1;
   const bool capped = dt < wanted;
