@@ -10,13 +10,15 @@ namespace {
 // A ball counts as supported while its gap to a collider is under 10 um: it stays "on the table" through the
 // micrometre bounces of a settling contact instead of flickering between airborne and landed.
 constexpr double kSupportGap = 1e-5;
-// Bisection stops when the bracket is this short (s).
+// Bisection stops when the bracket is this short (s) for a reported event: its time is good to 0.1 ns.
 constexpr double kTimeResolution = 1e-10;
 
-// First time in (lo, hi] at which changed(t) holds, given !changed(lo) and changed(hi).
-double bisect(double lo, double hi, const std::function<bool(double)>& changed) {
-  while (hi - lo > kTimeResolution) {
+// First time in (lo, hi] at which changed(t) holds, given !changed(lo) and changed(hi), to `resolution` seconds or,
+// with resolution 0, to round-off (the bracket's ends are adjacent doubles).
+double bisect(double lo, double hi, const std::function<bool(double)>& changed, double resolution = kTimeResolution) {
+  while (hi - lo > resolution) {
     const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
     (changed(mid) ? hi : lo) = mid;
   }
   return hi;
@@ -113,15 +115,21 @@ bool EventDetector::released(const Key& key, const double* x) const {
          normal_force(*cache_.collider_material[-1 - other], pen->depth, -glm::dot(velocity(x, i), pen->normal)) <= 0;
 }
 
-double EventDetector::first_release(const StepSpan& span, const std::vector<ContactKey>& pushing) {
+double EventDetector::first_law_change(const StepSpan& span, const StepContacts& kept) {
   double first = std::numeric_limits<double>::infinity();
-  for (const Key& k : pushing) {
-    if (!released(k, span.x1.data())) continue;
+  auto locate = [&](double resolution, const std::function<bool(const double*)>& changed) {
+    if (!changed(span.x1.data())) return;
     first = std::min(first, bisect(span.t0, span.t1, [&](double s) {
                        span.interpolate(s, scratch_);
-                       return released(k, scratch_.data());
-                     }));
-  }
+                       return changed(scratch_.data());
+                     }, resolution));
+  };
+  // An onset at zero depth, to kOnsetResolution: the force of a damped contact jumps to c v there (see events.hpp).
+  for (const Key& k : kept.separated) locate(kOnsetResolution, [&](const double* x) { return depth(k, x) > 0; });
+  // A release to 0.1 ns, past the point: the force is continuous through zero there, so a pulling force held for
+  // 0.1 ns costs an impulse of order (dF/dt) 1e-20 N s; and the step that follows must see the contact released,
+  // which the island's own test of the sign (StepContacts) does only at some distance from the root.
+  for (const Key& k : kept.pushing) locate(kTimeResolution, [&](const double* x) { return released(k, x); });
   return first;
 }
 
@@ -160,7 +168,7 @@ EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span,
   return first;
 }
 
-void EventDetector::scan(const StepSpan& span, const State& state, std::vector<Event>& events,
+void EventDetector::scan(const StepSpan& span, const State& state, const StepContacts& kept, std::vector<Event>& events,
                          std::vector<Exit>& exits) {
   auto at = [&](double t) -> const double* {
     span.interpolate(t, scratch_);
@@ -194,6 +202,14 @@ void EventDetector::scan(const StepSpan& span, const State& state, std::vector<E
   for (const Key& k : ended)
     events.push_back({bisect(span.t0, span.t1, [&](double s) { return depth(k, at(s)) <= kTouch; }), "contact_end",
                       {model_.balls[k.first].id, body_name(k.second)}});
+  // A step that ends where a contact left out of it touches (first_law_change) ends at the contact's onset, at zero
+  // depth: the next step may carry the whole contact (a glancing one lasts 50 us), so it begins here.
+  for (const Key& k : kept.separated) {
+    const auto at_k = std::lower_bound(now.begin(), now.end(), k);
+    if ((at_k != now.end() && *at_k == k) || depth(k, span.x1.data()) <= 0) continue;
+    now.insert(at_k, k);
+    events.push_back({span.t1, "contact_begin", {model_.balls[k.first].id, body_name(k.second)}});
+  }
   contacts_ = std::move(now);
 
   // Motion state changes (a sleeper stays stationary).

@@ -158,17 +158,17 @@ bool Island::step(double limit) {
       // A contact that begins or ends inside the step puts a kink (linear damping: a jump) in the force, where every
       // embedded error estimate misjudges a high-order step (MODEL.md, "Numerical facts"). Redo the step so that it
       // ends at the change, located on this step's dense output; the next step then starts at the kink. An onset or a
-      // release of a contact whose law the step kept (StepContacts) ends the step however early it comes; other ends
-      // in the first 1 % of a step are left alone, where a redone step's successor finds them.
+      // release of a contact whose law the step kept (StepContacts) ends the step however early it comes; other onsets
+      // and ends in the first 1 % of a step are left alone, where a redone step's successor finds them.
       if (!adaptive) break;
       const StepSpan trial{span_.t1, t, span_.x1, f0, x, f};
       const auto change = detector_.first_contact_change(trial, integ_);
       const StepContacts& kept = dynamics_.step();
       const double early = span_.t1 + 0.01 * tried;
-      double cut = change.end > early ? change.end : std::numeric_limits<double>::infinity();
-      if (change.begin > (kept.separated.empty() ? early : span_.t1)) cut = std::min(cut, change.begin);
-      if (!kept.pushing.empty()) cut = std::min(cut, detector_.first_release(trial, kept.pushing));
-      if (cut >= t) break;
+      double cut = std::min(change.end > early ? change.end : std::numeric_limits<double>::infinity(),
+                            change.begin > early ? change.begin : std::numeric_limits<double>::infinity());
+      if (!kept.separated.empty() || !kept.pushing.empty()) cut = std::min(cut, detector_.first_law_change(trial, kept));
+      if (cut >= t - kOnsetResolution) break;
       if (retries == kMaxRedos) {
         if (kept.separated.empty() && kept.pushing.empty()) break;
         // Still a change inside: the step again with the plain law, its kinks left to the error control.
@@ -225,7 +225,7 @@ bool Island::step(double limit) {
   // The flags the step started with (a rewind to inside it needs them); only the flags, not the state vector.
   copy_flags(integ_, start_);
   std::vector<Exit> exits;
-  detector_.scan(span_, integ_, events_, exits);
+  detector_.scan(span_, integ_, dynamics_.step(), events_, exits);
   // A ball that left play is frozen where it left.
   StateVector at;
   for (const Exit& e : exits) {
