@@ -102,6 +102,8 @@ double EventDetector::depth(const Key& key, const double* x) const {
   return pen ? pen->depth : -1.0;
 }
 
+bool EventDetector::touches(const Key& key, const double* x) const { return depth(key, x) > 0; }
+
 bool EventDetector::released(const Key& key, const double* x) const {
   const auto [i, other] = key;
   const double ri = model_.balls[i].radius;
@@ -115,22 +117,28 @@ bool EventDetector::released(const Key& key, const double* x) const {
          normal_force(*cache_.collider_material[-1 - other], pen->depth, -glm::dot(velocity(x, i), pen->normal)) <= 0;
 }
 
-double EventDetector::first_law_change(const StepSpan& span, const StepContacts& kept) {
-  double first = std::numeric_limits<double>::infinity();
-  auto locate = [&](double resolution, const std::function<bool(const double*)>& changed) {
-    if (!changed(span.x1.data())) return;
-    first = std::min(first, bisect(span.t0, span.t1, [&](double s) {
-                       span.interpolate(s, scratch_);
-                       return changed(scratch_.data());
-                     }, resolution));
-  };
-  // An onset at zero depth, to kOnsetResolution: the force of a damped contact jumps to c v there (see events.hpp).
-  for (const Key& k : kept.separated) locate(kOnsetResolution, [&](const double* x) { return depth(k, x) > 0; });
-  // A release to 0.1 ns, past the point: the force is continuous through zero there, so a pulling force held for
-  // 0.1 ns costs an impulse of order (dF/dt) 1e-20 N s; and the step that follows must see the contact released,
-  // which the island's own test of the sign (StepContacts) does only at some distance from the root.
-  for (const Key& k : kept.pushing) locate(kTimeResolution, [&](const double* x) { return released(k, x); });
-  return first;
+double EventDetector::first(const StepSpan& span, const std::vector<ContactKey>& keys, double resolution,
+                            bool (EventDetector::*changed)(const Key&, const double*) const) {
+  double at = std::numeric_limits<double>::infinity();
+  for (const Key& k : keys) {
+    if (!(this->*changed)(k, span.x1.data())) continue;
+    at = std::min(at, bisect(span.t0, span.t1, [&](double s) {
+                    span.interpolate(s, scratch_);
+                    return (this->*changed)(k, scratch_.data());
+                  }, resolution));
+  }
+  return at;
+}
+
+double EventDetector::first_touch(const StepSpan& span, const std::vector<ContactKey>& separated) {
+  return first(span, separated, kOnsetResolution, &EventDetector::touches);
+}
+
+// A release to 0.1 ns, past the point: the force is continuous through zero there, so a pulling force held for
+// 0.1 ns costs an impulse of order (dF/dt) 1e-20 N s; and the step that follows must see the contact released,
+// which the island's own test of the sign (StepContacts) does only at some distance from the root.
+double EventDetector::first_release(const StepSpan& span, const std::vector<ContactKey>& pushing) {
+  return first(span, pushing, kTimeResolution, &EventDetector::released);
 }
 
 std::string EventDetector::body_name(int other) const {
@@ -202,7 +210,7 @@ void EventDetector::scan(const StepSpan& span, const State& state, const StepCon
   for (const Key& k : ended)
     events.push_back({bisect(span.t0, span.t1, [&](double s) { return depth(k, at(s)) <= kTouch; }), "contact_end",
                       {model_.balls[k.first].id, body_name(k.second)}});
-  // A step that ends where a contact left out of it touches (first_law_change) ends at the contact's onset, at zero
+  // A step that ends where a contact left out of it touches (first_touch) ends at the contact's onset, at zero
   // depth: the next step may carry the whole contact (a glancing one lasts 50 us), so it begins here.
   for (const Key& k : kept.separated) {
     const auto at_k = std::lower_bound(now.begin(), now.end(), k);

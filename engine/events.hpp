@@ -34,7 +34,7 @@ struct Exit {
   double time;
 };
 
-// How closely (s) the onset of a contact left out of a step is located (first_law_change). The step ends there and
+// How closely (s) the onset of a contact left out of a step is located (first_touch). The step ends there and
 // the next one starts with the contact's force, so this is time spent on the wrong law: a damped contact's force
 // jumps to c v at zero depth, and 0.1 ns late (an event's resolution) misses an impulse of c v 1e-10 N s, which floored
 // the bench's cushion and cradle references near 1e-8 (docs/bench/README.md). A step ending this close after the
@@ -57,10 +57,12 @@ class EventDetector {
     double begin, end;
   };
   Changes first_contact_change(const StepSpan& span, const State& state);
-  // Earliest time in the span at which a contact whose law the step kept (StepContacts) changes it: a `separated`
-  // contact touches (depth > 0) or a `pushing` one stops pushing (its unclamped normal force reaches zero, or it
-  // ends); +inf when none. An onset is located to kOnsetResolution.
-  double first_law_change(const StepSpan& span, const StepContacts& kept);
+  // Earliest time in the span at which one of the `separated` contacts touches (depth > 0), located to
+  // kOnsetResolution; +inf when none.
+  double first_touch(const StepSpan& span, const std::vector<ContactKey>& separated);
+  // Earliest time in the span at which one of the `pushing` contacts stops pushing: its unclamped normal force
+  // reaches zero, or it ends; +inf when none.
+  double first_release(const StepSpan& span, const std::vector<ContactKey>& pushing);
 
  private:
   using Key = ContactKey;
@@ -69,7 +71,11 @@ class EventDetector {
   void changes(const State& state, const double* x, std::vector<Key>& now, std::vector<Key>& begun,
                std::vector<Key>& ended);
   double depth(const Key& key, const double* x) const;
+  bool touches(const Key& key, const double* x) const;   // depth > 0
   bool released(const Key& key, const double* x) const;  // not touching, or its unclamped normal force <= 0
+  // The earliest time in the span at which changed(key) holds for one of the keys, to `resolution`.
+  double first(const StepSpan& span, const std::vector<ContactKey>& keys, double resolution,
+               bool (EventDetector::*changed)(const Key&, const double*) const);
   std::string body_name(int other) const;
 
   const Model& model_;

@@ -148,6 +148,8 @@ bool Island::step(double limit) {
   StateVector x, f;
   double t, tried;
   int retries = 0;
+  double passed = 0;     // the first trial the error control accepted, s
+  bool at_onset = false;  // the step was cut where a contact begins
   const long rejected_before = stats_.rejected_steps;
   for (;;) {
     x = span_.x1;
@@ -161,14 +163,16 @@ bool Island::step(double limit) {
       // release of a contact whose law the step kept (StepContacts) ends the step however early it comes; other onsets
       // and ends in the first 1 % of a step are left alone, where a redone step's successor finds them.
       if (!adaptive) break;
+      if (retries == 0) passed = tried;
       const StepSpan trial{span_.t1, t, span_.x1, f0, x, f};
       const auto change = detector_.first_contact_change(trial, integ_);
       const StepContacts& kept = dynamics_.step();
       const double early = span_.t1 + 0.01 * tried;
-      double cut = std::min(change.end > early ? change.end : std::numeric_limits<double>::infinity(),
-                            change.begin > early ? change.begin : std::numeric_limits<double>::infinity());
-      if (!kept.separated.empty() || !kept.pushing.empty()) cut = std::min(cut, detector_.first_law_change(trial, kept));
+      constexpr double inf = std::numeric_limits<double>::infinity();
+      const double onset = std::min(change.begin > early ? change.begin : inf, detector_.first_touch(trial, kept.separated));
+      const double cut = std::min({onset, change.end > early ? change.end : inf, detector_.first_release(trial, kept.pushing)});
       if (cut >= t - kOnsetResolution) break;
+      at_onset = cut == onset;
       if (retries == kMaxRedos) {
         if (kept.separated.empty() && kept.pushing.empty()) break;
         // Still a change inside: the step again with the plain law, its kinks left to the error control.
@@ -195,8 +199,11 @@ bool Island::step(double limit) {
   ++stats_.steps;
   stats_.rhs_evaluations = dynamics_.evaluations();
   // After a rejection, do not grow the step at once: odeint's controller would grow it up to 5x and, on a
-  // stability-limited problem (the stiff friction switch), be rejected again.
-  dt_next_ = retries > 0 || stats_.rejected_steps > rejected_before ? std::min(dt, tried) : capped ? std::max(dt, wanted) : dt;
+  // stability-limited problem (the stiff friction switch), be rejected again. A step cut short where a contact ends
+  // or releases passed the error control at its first length, so the next one may try that again (in a breaking rack,
+  // contacts change every 15 us and each cut would otherwise shrink the steps after it). Not after an onset: the new
+  // contact's force was not in that trial, and a loose setting's error estimate can pass a step across all of it.
+  dt_next_ = stats_.rejected_steps > rejected_before ? std::min(dt, tried) : retries > 0 && !at_onset ? std::max(dt, passed) : retries > 0 ? std::min(dt, tried) : capped ? std::max(dt, wanted) : dt;
 
   if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) {
     std::ostringstream msg;
