@@ -47,11 +47,10 @@ struct Probe {
 
   std::optional<Penetration> operator()(const Plane& s) const { return surface(s.point, s.normal, s.holes); }
   std::optional<Penetration> operator()(const BoundedPlane& s) const {
-    const Vec3 n = glm::normalize(glm::cross(s.u, s.v));
     const Vec3 d = p - s.origin;
     const double du = glm::dot(d, s.u), dv = glm::dot(d, s.v);
-    if (du <= 0 || du >= glm::dot(s.u, s.u) || dv <= 0 || dv >= glm::dot(s.v, s.v)) return std::nullopt;
-    return surface(s.origin, n, s.holes);
+    if (du <= 0 || du >= s.uu || dv <= 0 || dv >= s.vv) return std::nullopt;
+    return surface(s.origin, s.normal, s.holes);
   }
   std::optional<Penetration> operator()(const StaticSphere& s) const { return from_point(p, r, s.center, s.radius); }
   std::optional<Penetration> operator()(const Capsule& s) const {
@@ -67,6 +66,10 @@ struct Probe {
 };
 
 }  // namespace
+
+BoundedPlane::BoundedPlane(const Vec3& origin, const Vec3& u, const Vec3& v, std::vector<Hole> holes)
+    : origin(origin), u(u), v(v), holes(std::move(holes)), normal(glm::normalize(glm::cross(u, v))),
+      uu(glm::dot(u, u)), vv(glm::dot(v, v)) {}
 
 std::optional<Penetration> penetration(const Shape& shape, const Vec3& p, double r, double within) {
   return std::visit(Probe{p, r, within}, shape);
@@ -91,7 +94,7 @@ double hole_gap(const Shape& shape, const Vec3& p) {
   const std::vector<Hole>* holes = nullptr;
   Vec3 n{0.0};
   if (const auto* s = std::get_if<Plane>(&shape)) holes = &s->holes, n = s->normal;
-  if (const auto* s = std::get_if<BoundedPlane>(&shape)) holes = &s->holes, n = glm::normalize(glm::cross(s->u, s->v));
+  if (const auto* s = std::get_if<BoundedPlane>(&shape)) holes = &s->holes, n = s->normal;
   double gap = std::numeric_limits<double>::infinity();
   if (!holes) return gap;
   for (const Hole& h : *holes) {

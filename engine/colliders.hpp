@@ -31,10 +31,14 @@ struct Plane {
 };
 
 // Parallelogram spanned by u and v at origin; normal = u^ x v^ (eq. 4.9). Contact only while the centre projects
-// inside it. Optional holes.
+// inside it. Optional holes. The constructor derives the unit normal and |u|^2, |v|^2 once (the bed is probed for
+// every ball in every right-hand side); build a new shape to change one.
 struct BoundedPlane {
+  BoundedPlane(const Vec3& origin, const Vec3& u, const Vec3& v, std::vector<Hole> holes = {});
   Vec3 origin, u, v;
   std::vector<Hole> holes;
+  Vec3 normal;    // unit, u^ x v^
+  double uu, vv;  // m^2: |u|^2, |v|^2
 };
 
 // Fixed sphere (eq. 4.10).

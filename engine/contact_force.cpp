@@ -13,6 +13,11 @@ double normal_force(const ContactMaterial& mat, double depth, double rate) {
   return mat.damping_law == DampingLaw::Linear ? elastic + mat.damping * rate : elastic * (1.0 + mat.damping * rate);
 }
 
+double elastic_energy(const ContactMaterial& mat, double depth) {
+  const double e = mat.exponent + 1;
+  return mat.stiffness * (mat.exponent == 1.5 ? depth * depth * std::sqrt(depth) : std::pow(depth, e)) / e;
+}
+
 ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& k, const Smoothing& smoothing, bool clamp) {
   ContactForce out;
   const double fn = normal_force(mat, k.depth, -glm::dot(k.v_rel, k.normal));  // d' > 0 while the bodies approach

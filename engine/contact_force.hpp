@@ -51,6 +51,10 @@ double sharpness_for(const Smoothing& s, double strength, double mobility);
 // damping, negative while the damping pulls.
 double normal_force(const ContactMaterial& mat, double depth, double rate);
 
+// The elastic energy (J) stored in a contact at the given depth (m, > 0): the integral of the Hertz term,
+// C d^(e+1) / (e+1).
+double elastic_energy(const ContactMaterial& mat, double depth);
+
 // With clamp = false the normal force is not clamped at zero and the tangential terms act at it, even a negative one:
 // the smooth continuation of the law that a step takes up to where the force reaches zero (island.cpp), so that the
 // clamp's kink does not fall inside a step.

@@ -11,8 +11,36 @@ ContactCache::ContactCache(const Model& model) : ball_ball(&model.material(kBall
     collider_material.push_back(&model.material(c.material));
     collider_bounds.push_back(bounds(c.shape));
     if (const auto* s = std::get_if<Plane>(&c.shape)) plane_normal.push_back(s->normal);
-    else if (const auto* s = std::get_if<BoundedPlane>(&c.shape)) plane_normal.push_back(glm::normalize(glm::cross(s->u, s->v)));
+    else if (const auto* s = std::get_if<BoundedPlane>(&c.shape)) plane_normal.push_back(s->normal);
     else plane_normal.emplace_back(0.0);
+  }
+  // The clear column, greedily: start from the span of the other colliders' bounds and, for each of them that
+  // reaches into the column, move the one edge of the column that keeps the most area (a cushion along an edge costs
+  // a strip of its width). Colliders taken in the order of the model; an empty column (lo >= hi) matches no ball.
+  bool any = false;
+  for (size_t c = 0; c < model.colliders.size(); ++c) {
+    if (plane_normal[c] != Vec3{0.0}) {
+      plane_like.push_back(static_cast<int>(c));
+      continue;
+    }
+    const Bounds& b = collider_bounds[c];
+    if (!any) clear_lo_x = b.lo.x, clear_hi_x = b.hi.x, clear_lo_z = b.lo.z, clear_hi_z = b.hi.z, any = true;
+    clear_lo_x = std::min(clear_lo_x, b.lo.x), clear_hi_x = std::max(clear_hi_x, b.hi.x);
+    clear_lo_z = std::min(clear_lo_z, b.lo.z), clear_hi_z = std::max(clear_hi_z, b.hi.z);
+  }
+  for (size_t c = 0; c < model.colliders.size() && any; ++c) {
+    if (plane_normal[c] != Vec3{0.0}) continue;
+    const Bounds& b = collider_bounds[c];
+    if (b.hi.x <= clear_lo_x || b.lo.x >= clear_hi_x || b.hi.z <= clear_lo_z || b.lo.z >= clear_hi_z) continue;
+    const double w = clear_hi_x - clear_lo_x, d = clear_hi_z - clear_lo_z;
+    const double keep[4] = {(clear_hi_x - b.hi.x) * d, (b.lo.x - clear_lo_x) * d, (clear_hi_z - b.hi.z) * w,
+                            (b.lo.z - clear_lo_z) * w};
+    switch (std::max_element(keep, keep + 4) - keep) {
+      case 0: clear_lo_x = b.hi.x; break;
+      case 1: clear_hi_x = b.lo.x; break;
+      case 2: clear_lo_z = b.hi.z; break;
+      default: clear_hi_z = b.lo.z;
+    }
   }
   for (const BallSpec& b : model.balls) {
     inv_mass.push_back(1.0 / b.mass);
@@ -71,7 +99,7 @@ double collider_closing_speed(const Shape& shape, const Vec3& p, const Vec3& v) 
   if (hole_gap(shape, p) == 0) return glm::length(v);  // over a pocket the gap is to the rim, closing any way
   if (const auto* s = std::get_if<Plane>(&shape)) return std::max(0.0, -glm::dot(v, s->normal));
   if (const auto* s = std::get_if<BoundedPlane>(&shape))
-    return std::max(0.0, -glm::dot(v, glm::normalize(glm::cross(s->u, s->v))));
+    return std::max(0.0, -glm::dot(v, s->normal));
   if (const auto* s = std::get_if<Capsule>(&shape)) {
     const Vec3 ab = s->b - s->a;
     const double len2 = glm::dot(ab, ab);

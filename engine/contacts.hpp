@@ -45,6 +45,10 @@ struct ContactCache {
   std::vector<const ContactMaterial*> collider_material;
   std::vector<Bounds> collider_bounds;  // broad phase against static colliders
   std::vector<Vec3> plane_normal;       // unit normal of each plane-like collider (Plane, BoundedPlane), else 0
+  // A vertical column (x, z ranges, m) that no collider other than the plane-like ones reaches: a ball inside it is
+  // probed against the plane-like colliders alone (on a table, the bed; the cushions and jaws line the edges).
+  std::vector<int> plane_like;
+  double clear_lo_x = 0, clear_hi_x = 0, clear_lo_z = 0, clear_hi_z = 0;
   const ContactMaterial* ball_ball;
   // Each ball's mobilities (contact_force.hpp), constant for the model: 1/m (1/kg) and r^2/I (1/kg).
   std::vector<double> inv_mass, inv_inertia_r2;

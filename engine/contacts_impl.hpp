@@ -42,10 +42,17 @@ void sweep_pairs(const Model& model, const State& state, const double* x, Contac
 
 template <class Fn>
 void near_colliders(const Model& model, const ContactCache& cache, const Vec3& p, double r, double within, Fn&& fn) {
-  for (size_t c = 0; c < model.colliders.size(); ++c) {
-    if (!cache.collider_bounds[c].may_touch(p, r + within)) continue;
+  auto probe = [&](size_t c) {
+    if (!cache.collider_bounds[c].may_touch(p, r + within)) return;
     if (const auto pen = penetration(model.colliders[c].shape, p, r, within)) fn(static_cast<int>(c), *pen);
+  };
+  const double reach = r + within;
+  if (p.x - reach > cache.clear_lo_x && p.x + reach < cache.clear_hi_x && p.z - reach > cache.clear_lo_z &&
+      p.z + reach < cache.clear_hi_z) {
+    for (int c : cache.plane_like) probe(c);
+    return;
   }
+  for (size_t c = 0; c < model.colliders.size(); ++c) probe(c);
 }
 
 template <class Fn>

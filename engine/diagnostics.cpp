@@ -18,7 +18,7 @@ Energy energy(const Model& model, const State& state, ContactCache& cache, bool 
   }
   for_each_contact(model, state, state.x.data(), cache, [&](const Contact& c) {
     const ContactMaterial& m = c.other_ball >= 0 ? *cache.ball_ball : *cache.collider_material[c.collider];
-    e.elastic += m.stiffness * std::pow(c.depth, m.exponent + 1) / (m.exponent + 1);
+    e.elastic += elastic_energy(m, c.depth);
   }, with_inactive);
   return e;
 }

@@ -74,9 +74,6 @@ Partition Partitioner::operator()(const State& state, const std::vector<int>& aw
     reached_.assign(n, 0);
     slot_.assign(n, -1);
   }
-  auto elastic = [](const ContactMaterial& m, double depth) {
-    return m.stiffness * std::pow(depth, m.exponent + 1) / (m.exponent + 1);
-  };
   // Each awake ball's energy: kinetic, the height above the bed it can still fall (tables only: elsewhere free fall
   // is covered by g h), and the elastic energy of its contacts (a compressed contact gives it back as speed).
   for (int i : awake) {
@@ -86,14 +83,14 @@ Partition Partitioner::operator()(const State& state, const std::vector<int>& aw
     if (model_.balls_leave_below_bed) energy_[i] += b.mass * g * std::max(0.0, x[9 * i + 1] - b.radius);
     if (!state.rolling(i) && !state.sliding(i))  // the bed contact of a rolling or sliding ball is its static sink
       near_colliders(model_, cache_, position(x, i), b.radius, 0.0, [&](int c, const Penetration& pen) {
-        if (pen.depth > 0) energy_[i] += elastic(*cache_.collider_material[c], pen.depth);
+        if (pen.depth > 0) energy_[i] += elastic_energy(*cache_.collider_material[c], pen.depth);
       });
   }
   sweep_pairs(model_, state, x, cache_, 0.0, false, [&](int i, int j) {
     const double depth = model_.balls[i].radius + model_.balls[j].radius - glm::length(position(x, i) - position(x, j));
     if (depth <= 0) return;
     for (int k : {i, j})  // a sleeper's share would stay behind in its entry: the awake one holds the pair's
-      if (!state.sleeping(k)) energy_[k] += elastic(*cache_.ball_ball, depth);
+      if (!state.sleeping(k)) energy_[k] += elastic_energy(*cache_.ball_ball, depth);
   }, &awake);
   // A sleeper that an island may reach can be woken and hit within the horizon: it moves as the island's balls may.
   auto speed = [&](int i) { return state.sleeping(i) && !reached_[i] ? 0.0 : bound(i); };

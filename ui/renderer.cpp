@@ -252,7 +252,7 @@ void Renderer::draw_colliders(const Model& model) {
       glm::dmat4 m(1.0);
       m[0] = glm::dvec4(bp->u, 0);
       m[2] = glm::dvec4(bp->v, 0);
-      m[1] = glm::dvec4(glm::normalize(glm::cross(bp->u, bp->v)) * 0.01, 0);
+      m[1] = glm::dvec4(bp->normal * 0.01, 0);
       const glm::dvec3 centre = bp->origin + (bp->u + bp->v) * 0.5 - glm::dvec3(m[1]) * 0.5;
       m[3] = glm::dvec4(centre, 1);
       draw(cube_, m, {0.25f, 0.3f, 0.35f}, 0, 1);
