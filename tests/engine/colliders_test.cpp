@@ -1,7 +1,11 @@
 // Each collider's penetration depth and normal (MODEL.md eq. 4.8-4.11), checked against hand-computed geometry.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "engine/colliders.hpp"
+#include "engine/contacts.hpp"
+#include "engine/table.hpp"
 
 namespace shotlab {
 namespace {
@@ -72,6 +76,41 @@ TEST(Colliders, CapsuleMiddleAndEnds) {
   expect_vec(end->normal, {1, 0, 0});
   const auto before = penetration(c, {-0.02, 0.02, 0}, r);  // before a
   EXPECT_NEAR(before->depth, 0.04 - std::sqrt(0.0008), 1e-12);
+}
+
+
+// ContactCache's clear column (contacts.hpp): a ball inside it is probed against the plane-like colliders only. On a
+// pool table, near_colliders must still find every collider the plain probe of each finds, wherever the ball is:
+// mid-table, at a cushion's nose, in a pocket's jaws, over a hole, off the table.
+TEST(Colliders, ClearColumnHidesNoCollider) {
+  Model model = empty_model();
+  add_table(model, pool_table());
+  const ContactCache cache(model);
+  ASSERT_LT(cache.clear_lo_x, cache.clear_hi_x);
+  ASSERT_LT(cache.clear_lo_z, cache.clear_hi_z);
+  const double ball = 0.028575;
+  int column = 0, near_edge = 0;
+  for (double x = -1.45; x <= 1.45; x += 0.0061)
+    for (double z = -0.8; z <= 0.8; z += 0.0059)
+      for (double within : {0.0, 1e-3}) {
+        const Vec3 p{x, ball - 1e-5, z};
+        std::vector<int> found, expected;
+        near_colliders(model, cache, p, ball, within, [&](int c, const Penetration&) { found.push_back(c); });
+        for (size_t c = 0; c < model.colliders.size(); ++c)
+          if (penetration(model.colliders[c].shape, p, ball, within) && cache.collider_bounds[c].may_touch(p, ball + within))
+            expected.push_back(static_cast<int>(c));
+        // Every collider the plain probe reports as within reach (depth > -within) is found.
+        for (int c : expected) {
+          const auto pen = penetration(model.colliders[c].shape, p, ball, within);
+          if (pen->depth > -within) {
+            EXPECT_NE(std::find(found.begin(), found.end(), c), found.end())
+                << model.colliders[c].name << " hidden at x = " << x << ", z = " << z;
+          }
+        }
+        (found.size() == 1 && expected.size() == 1 ? column : near_edge)++;
+      }
+  EXPECT_GT(column, 0);
+  EXPECT_GT(near_edge, 0);
 }
 
 }  // namespace
