@@ -151,16 +151,17 @@ void EventDetector::reset(const State& state) {
   for (int i = 0; i < state.ball_count(); ++i) motion_[i] = classify(model_, cache_, state, state.x.data(), i);
 }
 
-void EventDetector::changes(const State& state, const double* x, std::vector<Key>& now, std::vector<Key>& begun,
-                            std::vector<Key>& ended) {
+void EventDetector::changes(const State& state, const double* x) {
+  std::vector<Key> &now = now_, &begun = begun_, &ended = ended_;
   collect(state, x, now);
+  begun.clear();
+  ended.clear();
   std::set_difference(now.begin(), now.end(), contacts_.begin(), contacts_.end(), std::back_inserter(begun));
   std::set_difference(contacts_.begin(), contacts_.end(), now.begin(), now.end(), std::back_inserter(ended));
 }
 
 EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span, const State& state) {
-  std::vector<Key> now, begun, ended;
-  changes(state, span.x1.data(), now, begun, ended);
+  changes(state, span.x1.data());
   constexpr double inf = std::numeric_limits<double>::infinity();
   Changes first{inf, inf};
   // Frozen balls touch at zero depth, and round-off flips them in and out of contact: no kink worth a restart.
@@ -171,8 +172,8 @@ EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span,
                     return (depth(k, scratch_.data()) > kTouch) == begins;
                   }));
   };
-  for (const Key& k : begun) locate(k, span.x0, true, first.begin);
-  for (const Key& k : ended) locate(k, span.x1, false, first.end);
+  for (const Key& k : begun_) locate(k, span.x0, true, first.begin);
+  for (const Key& k : ended_) locate(k, span.x1, false, first.end);
   return first;
 }
 
@@ -202,12 +203,12 @@ void EventDetector::scan(const StepSpan& span, const State& state, const StepCon
   }
 
   // Contacts that began or ended: set difference of sorted key lists, each change located on its own depth.
-  std::vector<Key> now, begun, ended;
-  changes(state, span.x1.data(), now, begun, ended);
-  for (const Key& k : begun)
+  changes(state, span.x1.data());
+  std::vector<Key>& now = now_;
+  for (const Key& k : begun_)
     events.push_back({bisect(span.t0, span.t1, [&](double s) { return depth(k, at(s)) > kTouch; }), "contact_begin",
                       {model_.balls[k.first].id, body_name(k.second)}});
-  for (const Key& k : ended)
+  for (const Key& k : ended_)
     events.push_back({bisect(span.t0, span.t1, [&](double s) { return depth(k, at(s)) <= kTouch; }), "contact_end",
                       {model_.balls[k.first].id, body_name(k.second)}});
   // A step that ends where a contact left out of it touches (first_touch) ends at the contact's onset, at zero
@@ -218,7 +219,7 @@ void EventDetector::scan(const StepSpan& span, const State& state, const StepCon
     now.insert(at_k, k);
     events.push_back({span.t1, "contact_begin", {model_.balls[k.first].id, body_name(k.second)}});
   }
-  contacts_ = std::move(now);
+  contacts_.swap(now);
 
   // Motion state changes (a sleeper stays stationary).
   for (int i = 0; i < state.ball_count(); ++i) {

@@ -67,9 +67,8 @@ class EventDetector {
  private:
   using Key = ContactKey;
   void collect(const State& state, const double* x, std::vector<Key>& keys);
-  // The contacts at x, and which of them began or ended since the snapshot.
-  void changes(const State& state, const double* x, std::vector<Key>& now, std::vector<Key>& begun,
-               std::vector<Key>& ended);
+  // The contacts at x (now_), and which of them began (begun_) or ended (ended_) since the snapshot.
+  void changes(const State& state, const double* x);
   double depth(const Key& key, const double* x) const;
   bool touches(const Key& key, const double* x) const;   // depth > 0
   bool released(const Key& key, const double* x) const;  // not touching, or its unclamped normal force <= 0
@@ -81,6 +80,7 @@ class EventDetector {
   const Model& model_;
   ContactCache cache_;
   std::vector<Key> contacts_;
+  std::vector<Key> now_, begun_, ended_;  // changes()' results, kept to spare allocations per step
   State memo_;                 // the flags and state of the last collect (its time unused) ...
   std::vector<Key> memo_keys_;  // ... and what it found
   std::vector<Motion> motion_;

@@ -145,7 +145,12 @@ bool Island::step(double limit) {
   const bool to_limit = dt >= limit - span_.t1;
   if (to_limit) dt = limit - span_.t1;
   const bool capped = dt < wanted;
-  StateVector x, f;
+  // Each trial runs in trial_ (its end in x1, f1), whose buffers outlive the step: no allocation per step.
+  StepSpan& trial = trial_;
+  trial.t0 = span_.t1;
+  trial.x0 = span_.x1;
+  trial.f0 = f0;
+  StateVector &x = trial.x1, &f = trial.f1;
   double t, tried;
   int retries = 0;
   double passed = 0;     // the first trial the error control accepted, s
@@ -164,7 +169,7 @@ bool Island::step(double limit) {
       // and ends in the first 1 % of a step are left alone, where a redone step's successor finds them.
       if (!adaptive) break;
       if (retries == 0) passed = tried;
-      const StepSpan trial{span_.t1, t, span_.x1, f0, x, f};
+      trial.t1 = t;
       const auto change = detector_.first_contact_change(trial, integ_);
       const StepContacts& kept = dynamics_.step();
       const double early = span_.t1 + 0.01 * tried;
@@ -222,8 +227,8 @@ bool Island::step(double limit) {
   span_.x0.swap(span_.x1);
   span_.f0.swap(f0);
   span_.t0 = span_.t1;
-  span_.x1 = std::move(x);
-  span_.f1 = std::move(f);
+  span_.x1.swap(x);
+  span_.f1.swap(f);
   span_.t1 = t;
   integ_.x = span_.x1;
   integ_.time = t;

@@ -108,6 +108,7 @@ class Island {
   ContactCache cap_cache_;  // broad phase of the step cap
   StepContacts plan_;       // the step's contact lists as the cap finds them (then the last step's, swapped out)
   StateVector f_start_;     // f at the step's start
+  StepSpan trial_;          // the step's trial (buffers reused from step to step)
   StepSpan span_;
   double dt_next_;
   double deadline_ = 0;

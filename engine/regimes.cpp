@@ -32,6 +32,12 @@ bool flat_bed(const Collider& c, const Vec3& normal, const Vec3& gravity, Vec3& 
 }
 }  // namespace
 
+Regimes::Regimes(const Model& model) : model_(model), cache_(model) {
+  const double g = glm::length(model.options.gravity);
+  for (const BallSpec& b : model.balls)
+    for (int c : cache_.plane_like) sink_.push_back(static_sink(b, *cache_.collider_material[c], g));
+}
+
 // Sliding on a flat bed with normal n, settled at the static sink: the normal force is the weight m g and stays so
 // (nothing changes the depth), so the contact law's tangential terms act at N = m g and the normal components of
 // the motion stay zero:
@@ -112,8 +118,7 @@ int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& heig
       return;
     }
     support = c;
-    height = glm::dot(point, normal) + r -
-             static_sink(model_.balls[i], *cache_.collider_material[c], glm::length(model_.options.gravity));
+    height = glm::dot(point, normal) + r - sink(i, c);
   });
   if (support < 0 || other) return -1;
   for (int j : touching_[i])
@@ -121,6 +126,11 @@ int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& heig
   for (const Rod& rod : model_.rods)
     if (rod.ball == i) return -1;
   return support;
+}
+
+double Regimes::sink(int i, int plane) const {
+  const auto& planes = cache_.plane_like;
+  return sink_[i * planes.size() + (std::find(planes.begin(), planes.end(), plane) - planes.begin())];
 }
 
 bool Regimes::update(State& state, StateVector& x, double dt) {
@@ -131,7 +141,8 @@ bool Regimes::update(State& state, StateVector& x, double dt) {
   if (state.sliding_on.size() != static_cast<size_t>(n)) state.sliding_on.assign(n, -1);
   if (state.still_for.size() != static_cast<size_t>(n)) state.still_for.assign(n, 0.0);
   // Neighbour lists within contact_margin (sleep groups use only the frozen-touching ones).
-  touching_.assign(n, {});
+  touching_.resize(n);
+  for (auto& list : touching_) list.clear();  // keeps each list's buffer: this runs after every step
   overlapping_pairs(model_, state, x.data(), cache_, std::max(model_.options.contact_margin, kTouchSlack));
   for (const auto& [i, j] : cache_.pairs) {
     touching_[i].push_back(j);
@@ -208,7 +219,7 @@ bool Regimes::update_sliding(State& state, StateVector& x) {
     // motion below the tolerance. The vertical mode decays at about 700 1/s, so a bump of 0.1 m/s settles to 1e-7 m/s
     // within 20 ms (to 1e-12 in 35 ms) of a slide that lasts 100s of ms.
     const Vec3 p = position(x, i), v = velocity(x, i);
-    const double sink = static_sink(model_.balls[i], *cache_.collider_material[bed], g);
+    const double sink = this->sink(i, bed);
     const double vn = glm::dot(v, n), offset = glm::dot(p, n) - height;
     const double settled = model_.integrator.abs_tol;
     if (std::hypot(vn, std::sqrt(cache_.collider_material[bed]->exponent * g / sink) * offset) >= settled) continue;
@@ -248,7 +259,8 @@ bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
   auto frozen_touch = [&](int i, int j) {
     return glm::length(position(x, i) - position(x, j)) - model_.balls[i].radius - model_.balls[j].radius < kTouchSlack;
   };
-  std::vector<uint8_t> resting(n, 0);
+  std::vector<uint8_t>& resting = resting_;
+  resting.assign(n, 0);
   for (int i = 0; i < n; ++i) {
     if (!state.in_play[i]) continue;
     resting[i] = state.sleeping(i) || at_rest(state, x, i);
@@ -258,10 +270,12 @@ bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
   // Wake: flood from every awake ball that is moving through the touching graph; every sleeper reached wakes. A
   // moving ball wakes a sleeper already within contact_margin, so that the sleeper is awake before the contact
   // force builds up (steps end at contact onsets); sleepers wake each other only when frozen together.
-  std::vector<int> stack;
+  std::vector<int>& stack = stack_;
+  stack.clear();
   for (int i = 0; i < n; ++i)
     if (state.in_play[i] && !resting[i]) stack.push_back(i);
-  std::vector<uint8_t> seen(n, 0);
+  std::vector<uint8_t>& seen = seen_;
+  seen.assign(n, 0);
   while (!stack.empty()) {
     const int i = stack.back();
     stack.pop_back();
@@ -284,7 +298,8 @@ bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
   std::fill(seen.begin(), seen.end(), 0);
   for (int start = 0; start < n; ++start) {
     if (!state.active(start) || seen[start]) continue;
-    std::vector<int> group{start};
+    std::vector<int>& group = group_;
+    group.assign(1, start);
     seen[start] = 1;
     bool ready = true;
     for (size_t k = 0; k < group.size(); ++k) {

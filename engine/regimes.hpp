@@ -31,7 +31,7 @@ namespace shotlab {
 
 class Regimes {
  public:
-  explicit Regimes(const Model& model) : model_(model), cache_(model) {}
+  explicit Regimes(const Model& model);
   // After an accepted step of dt seconds ending at state x: updates state.asleep, state.rolling_on, state.sliding_on
   // and state.still_for, zeroes the velocities of new sleepers, snaps new rollers onto the rolling constraint and new
   // sliders onto the bed.
@@ -48,10 +48,14 @@ class Regimes {
   // The bed collider (its unit normal and the centre height of a ball resting on it in `normal`, `height`) when
   // ball i touches exactly one flat bed and nothing else within contact_margin; -1 otherwise.
   int only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const;
+  double sink(int i, int plane) const;  // m: ball i's static sink into plane-like collider `plane`
 
   const Model& model_;
   ContactCache cache_;
   std::vector<std::vector<int>> touching_;  // neighbours (frozen-touching included), rebuilt each update
+  std::vector<uint8_t> resting_, seen_;  // update_sleep's work lists, kept to spare an allocation per step
+  std::vector<int> stack_, group_;
+  std::vector<double> sink_;  // m: each ball's static sink into each plane-like collider (ball-major, cache_.plane_like)
 };
 
 // Right-hand sides of a ball in the rolling and the sliding regime (the dynamics above), written into dxdt. `cache`
