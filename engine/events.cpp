@@ -13,8 +13,8 @@ constexpr double kSupportGap = 1e-5;
 // Bisection stops when the bracket is this short (s) for a reported event: its time is good to 0.1 ns.
 constexpr double kTimeResolution = 1e-10;
 
-// First time in (lo, hi] at which changed(t) holds, given !changed(lo) and changed(hi), to `resolution` seconds or,
-// with resolution 0, to round-off (the bracket's ends are adjacent doubles).
+// First time in (lo, hi] at which changed(t) holds, given !changed(lo) and changed(hi), to `resolution` seconds (or
+// until the bracket's ends are adjacent doubles, when the resolution is below their spacing).
 double bisect(double lo, double hi, const std::function<bool(double)>& changed, double resolution = kTimeResolution) {
   while (hi - lo > resolution) {
     const double mid = 0.5 * (lo + hi);
