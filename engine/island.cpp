@@ -208,7 +208,9 @@ bool Island::step(double limit) {
   // or releases passed the error control at its first length, so the next one may try that again (in a breaking rack,
   // contacts change every 15 us and each cut would otherwise shrink the steps after it). Not after an onset: the new
   // contact's force was not in that trial, and a loose setting's error estimate can pass a step across all of it.
-  dt_next_ = stats_.rejected_steps > rejected_before ? std::min(dt, tried) : retries > 0 && !at_onset ? std::max(dt, passed) : retries > 0 ? std::min(dt, tried) : capped ? std::max(dt, wanted) : dt;
+  if (stats_.rejected_steps > rejected_before || (retries > 0 && at_onset)) dt_next_ = std::min(dt, tried);
+  else if (retries > 0) dt_next_ = std::max(dt, passed);
+  else dt_next_ = capped ? std::max(dt, wanted) : dt;
 
   if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) {
     std::ostringstream msg;
