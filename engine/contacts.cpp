@@ -1,6 +1,7 @@
 #include "contacts.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numeric>
 
@@ -109,6 +110,8 @@ double collider_closing_speed(const Shape& shape, const Vec3& p, const Vec3& v) 
   return glm::length(v);
 }
 
+}  // namespace
+
 // Time for two balls (centre offset d0 = p_i - p_j, relative velocity v) to come within `reach` of each other on
 // straight paths: the smaller root of |d0 + v t| = reach; +inf when they pass wider than that. Exact for straight
 // motion (a glancing pass does not approach in ever smaller steps); accelerations, which bend the paths, are covered
@@ -121,6 +124,17 @@ double straight_line_contact_time(const Vec3& d0, const Vec3& v, double reach) {
   return 2 * C / (-B + std::sqrt(disc));
 }
 
+// Straight relative motion, its target widened by how far the accelerations can bend the paths within h (a sliding
+// ball curves at mu g). A pair already near that widened reach is bounded by its relative speed instead, which never
+// asks for less than gap / speed: a step cannot stall at the widened boundary.
+double pair_contact_time(const Vec3& d0, const Vec3& v, double reach, double a, double h) {
+  const double bend = 0.5 * a * h * h, dist = glm::length(d0);
+  return dist < reach + 2 * bend ? closing_time(dist - reach, glm::length(v), a)
+                                 : straight_line_contact_time(d0, v, reach + bend);
+}
+
+namespace {
+
 // A contact deeper than kTouch (m) closing at `rate` (m/s) that pushes, but with less than half its elastic force: it is
 // separating and may stop pushing within a step. Contacts further from the clamp stay off StepContacts::pushing, which
 // costs a check of every listed contact on every step (a resting ball's bed contact, a rack's every pair).
@@ -132,43 +146,54 @@ bool may_release(const ContactMaterial& m, double depth, double rate) {
 
 }  // namespace
 
+double free_acceleration(const Model& model, const State& state, const ContactCache& cache, int i) {
+  const double g = glm::length(model.options.gravity);
+  if (state.rolling(i)) return cache.collider_material[state.rolling_on[i]]->rolling_resistance * g;
+  if (state.sliding(i)) {
+    const ContactMaterial& m = *cache.collider_material[state.sliding_on[i]];
+    return (m.friction + m.rolling_resistance) * g;
+  }
+  return 2.0 * g;
+}
+
+double collider_contact_time(const Model& model, const State& state, const double* x, int i, double horizon,
+                             const ContactCache& cache, StepContacts* step) {
+  const double margin = model.options.contact_margin;
+  const Vec3 p = position(x, i), v = velocity(x, i);
+  const double s = glm::length(v), a = free_acceleration(model, state, cache, i);
+  double best = std::numeric_limits<double>::infinity();
+  // Colliders farther than the ball can travel within the horizon cannot limit the step.
+  const double travel = s * horizon + a * horizon * horizon + margin;
+  near_colliders(model, cache, p, model.balls[i].radius, travel, [&](int c, const Penetration& pen) {
+    if (pen.depth <= 0) {
+      const double t = closing_time(margin - pen.depth, collider_closing_speed(model.colliders[c].shape, p, v), a);
+      best = std::min(best, t);
+      if (step && pen.depth <= -kTouch && t <= horizon) step->separated.emplace_back(i, -1 - c);
+    }
+    if (!step) return;
+    if (may_release(*cache.collider_material[c], pen.depth, -glm::dot(v, pen.normal))) step->pushing.emplace_back(i, -1 - c);
+  });
+  // A ball in the rolling or sliding regime ignores its support's geometry: it must not move far over a pocket's edge.
+  const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : -1;
+  if (bed >= 0) best = std::min(best, closing_time(hole_gap(model.colliders[bed].shape, p) + margin, s, a));
+  return best;
+}
+
 double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon,
                                 ContactCache& cache, StepContacts* step) {
   if (step) step->separated.clear(), step->pushing.clear();
   // Relative acceleration bound outside contacts: gravity plus cloth friction, generously twice |g|. A pair pushed
   // harder by third balls may start touching inside a step; the simulation then cuts the step at the onset.
-  const double g = glm::length(model.options.gravity), a_free = 2.0 * g;
-  auto accel = [&](int i) {
-    if (state.rolling(i)) return cache.collider_material[state.rolling_on[i]]->rolling_resistance * g;
-    if (state.sliding(i)) {
-      const ContactMaterial& m = *cache.collider_material[state.sliding_on[i]];
-      return (m.friction + m.rolling_resistance) * g;
-    }
-    return a_free;
-  };
+  const double a_free = 2.0 * glm::length(model.options.gravity);
+  auto accel = [&](int i) { return free_acceleration(model, state, cache, i); };
   const double margin = model.options.contact_margin;
   double best = std::numeric_limits<double>::infinity();
   double vmax = 0;
   const int n = state.ball_count();
   for (int i = 0; i < n; ++i) {
     if (!state.active(i)) continue;  // a sleeping ball does not move towards anything
-    const Vec3 p = position(x, i), v = velocity(x, i);
-    const double s = glm::length(v), a = accel(i);
-    vmax = std::max(vmax, s);
-    // Colliders farther than the ball can travel within the horizon cannot limit the step.
-    const double travel = s * horizon + a * horizon * horizon + margin;
-    near_colliders(model, cache, p, model.balls[i].radius, travel, [&](int c, const Penetration& pen) {
-      if (pen.depth <= 0) {
-        const double t = closing_time(margin - pen.depth, collider_closing_speed(model.colliders[c].shape, p, v), a);
-        best = std::min(best, t);
-        if (step && pen.depth <= -kTouch && t <= horizon) step->separated.emplace_back(i, -1 - c);
-      }
-      if (!step) return;
-      if (may_release(*cache.collider_material[c], pen.depth, -glm::dot(v, pen.normal))) step->pushing.emplace_back(i, -1 - c);
-    });
-    // A ball in the rolling or sliding regime ignores its support's geometry: it must not move far over a pocket's edge.
-    const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : -1;
-    if (bed >= 0) best = std::min(best, closing_time(hole_gap(model.colliders[bed].shape, p) + margin, s, a));
+    vmax = std::max(vmax, glm::length(velocity(x, i)));
+    best = std::min(best, collider_contact_time(model, state, x, i, horizon, cache, step));
   }
   // Ball pairs whose x gap is within anything closable within the horizon (a sleeper does not move: only the awake
   // one closes in).
@@ -180,11 +205,10 @@ double time_to_possible_contact(const Model& model, const State& state, const do
     sort();
     return best;
   }
-  // Straight relative motion, its target widened by how far accelerations can bend the paths within the horizon (a
-  // sliding ball curves at mu g). A pair already near that widened reach is bounded by its relative speed instead,
-  // which never asks for less than contact_margin / speed: a step cannot stall at the widened boundary.
+  // Straight relative motion, its target widened by how far accelerations can bend the paths within the horizon
+  // (pair_contact_time).
   sweep_pairs(model, state, x, cache, 2.0 * vmax * h + a_free * h * h, false, [&](int i, int j) {
-    const double ai = accel(i), aj = accel(j), a = ai == a_free || aj == a_free ? a_free : ai + aj, bend = 0.5 * a * h * h;
+    const double ai = accel(i), aj = accel(j), a = ai == a_free || aj == a_free ? a_free : ai + aj;
     const Vec3 d0 = position(x, i) - position(x, j), v = velocity(x, i) - velocity(x, j);
     const double ri = model.balls[i].radius, rj = model.balls[j].radius, dist = glm::length(d0);
     if (dist <= ri + rj) {  // already touching: the contact force is resolved by error control
@@ -193,9 +217,7 @@ double time_to_possible_contact(const Model& model, const State& state, const do
       return;
     }
     // Relative motion: balls moving together, as a broken rack does, do not hold each other's steps back.
-    const double reach = ri + rj - margin;
-    const double t = dist < reach + 2 * bend ? closing_time(dist - reach, glm::length(v), a)
-                                             : straight_line_contact_time(d0, v, reach + bend);
+    const double t = pair_contact_time(d0, v, ri + rj - margin, a, h);
     best = std::min(best, t);
     if (step && dist - ri - rj >= kTouch && t <= horizon) step->separated.emplace_back(std::min(i, j), std::max(i, j));
   });

@@ -111,6 +111,25 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
 double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon,
                                 ContactCache& cache, StepContacts* step = nullptr);
 
+// m/s^2: a bound on ball i's acceleration while it touches nothing but the bed it rolls or slides on: rolling
+// resistance mu_r g when rolling, (mu + mu_r) g when sliding, generously 2 |g| otherwise (a ball in the air, one
+// settling onto the bed).
+double free_acceleration(const Model& model, const State& state, const ContactCache& cache, int i);
+
+// s: a lower bound on the time before ball i could touch a collider other than the bed it rolls or slides on, or
+// come over a hole's edge in that bed; +inf when nothing can within `horizon`. With `step`, lists the ball's contacts
+// in step->separated and step->pushing as time_to_possible_contact does (unsorted).
+double collider_contact_time(const Model& model, const State& state, const double* x, int i, double horizon,
+                             const ContactCache& cache, StepContacts* step = nullptr);
+
+// s: when two balls whose centres are d0 apart (m, d0 = p_i - p_j) and whose relative velocity is v (m/s) come within
+// `reach` (m) of each other on straight paths; +inf when they pass wider than that, 0 when they are that close now.
+double straight_line_contact_time(const Vec3& d0, const Vec3& v, double reach);
+
+// s: a lower bound on when two balls come within `reach` (m) of each other while their offset strays from d0 + v t
+// by at most a t^2 / 2 (d0, v as above; a: a bound on their relative acceleration, m/s^2); valid up to h (s).
+double pair_contact_time(const Vec3& d0, const Vec3& v, double reach, double a, double h);
+
 }  // namespace shotlab
 
 #include "contacts_impl.hpp"

@@ -93,11 +93,17 @@ void Island::restart() {
 
 void Island::write(double t, State& world) {
   span_.interpolate(t, scratch_);  // at t = time() exactly the step's end: the Hermite weights are 0, 0, 1, 0
-  const State& flags = t < span_.t1 ? start_ : integ_;
+  const State& flags = flags_at(t);
   for (size_t k = 0; k < balls_.size(); ++k) {
     std::copy_n(scratch_.begin() + kBallDofs * k, kBallDofs, world.x.begin() + kBallDofs * balls_[k]);
     copy_ball(flags, static_cast<int>(k), world, balls_[k], false);
   }
+}
+
+std::optional<FreePath> Island::free_path(double t, double horizon) {
+  if (balls_.size() != 1) return std::nullopt;
+  span_.interpolate(t, scratch_);
+  return shotlab::free_path(model_, flags_at(t), scratch_.data(), 0, cap_cache_, horizon);
 }
 
 bool Island::rewind(double t) {

@@ -9,6 +9,7 @@
 #pragma once
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,13 @@ class Island {
   Status status() const { return status_; }
   const std::string& diagnostic() const { return diagnostic_; }
   std::string describe_balls() const { return describe_balls(span_.x1); }
+
+  // The regime flags at time t in [span().t0, time()]: as of the last step's start for t < time() (a regime changes at
+  // a step's end), else as of time().
+  const State& flags_at(double t) const { return t < span_.t1 ? start_ : integ_; }
+  // The free path (regimes.hpp) of a single-ball island at time t in [span().t0, time()], followed for `horizon`
+  // seconds at most; none for an island of several balls or a ball in the full model.
+  std::optional<FreePath> free_path(double t, double horizon);
 
   // Writes the island's balls into a world state: their state at time t in [span().t0, time()], their regime flags
   // as of the last step's start for t < time() (a regime changes at a step's end), else as of time().

@@ -9,9 +9,6 @@ namespace {
 // s: the longest the islands run apart while one of them holds two or more awake balls. Islands are split only when
 // they synchronise: a pair that separated after a collision stays one system until then.
 constexpr double kMaxHorizon = 0.02;
-// s: the longest they run apart when every island is a single awake ball and nothing else (nothing to split; on a
-// table only, where the height a ball can fall is in its energy bound).
-constexpr double kLoneHorizon = 0.25;
 // m: sleepers this close are frozen together and wake together (regimes.cpp's touching slack).
 constexpr double kFrozen = 1e-9;
 }  // namespace
@@ -73,6 +70,8 @@ Partition Partitioner::operator()(const State& state, const std::vector<int>& aw
     energy_.assign(n, 0.0);
     reached_.assign(n, 0);
     slot_.assign(n, -1);
+    path_.assign(n, std::nullopt);
+    path_found_.assign(n, 0);
   }
   // Each awake ball's energy: kinetic, the height above the bed it can still fall (tables only: elsewhere free fall
   // is covered by g h), and the elastic energy of its contacts (a compressed contact gives it back as speed).
@@ -142,19 +141,36 @@ Partition Partitioner::operator()(const State& state, const std::vector<int>& aw
   for (const auto& island : p.islands)
     p.horizon.push_back(model_.balls_leave_below_bed && island.size() == 1 && !reached_[island[0]] ? kLoneHorizon
                                                                                                     : kMaxHorizon);
+  // Free paths of lone balls, found when first needed (path_found_), and of sleepers.
+  auto path = [&](int i) -> const std::optional<FreePath>& {
+    if (!path_found_[i]) {
+      path_found_[i] = 1;
+      const int s = slot_[root(i)];
+      const bool lone = s >= 0 ? p.islands[s].size() == 1 && !reached_[i] : state.sleeping(i);
+      path_[i] = lone ? free_path(model_, state, x, i, cache_, kLoneHorizon) : std::nullopt;
+      if (s < 0) found_.push_back(i);  // a sleeper: not among the members reset below
+    }
+    return path_[i];
+  };
+  auto horizon = [&](int i) { return slot_[root(i)] >= 0 ? p.horizon[slot_[root(i)]] : 0.0; };
   pairs(kLoneHorizon, [&](int i, int j, double gap, double closing) {
     if (root(i) == root(j) || closing <= 0) return;
-    const double h = std::max(gap, 0.0) / closing;
+    double h = std::max(gap, 0.0) / closing;
+    if (h < std::max(horizon(i), horizon(j)) && path(i) && path(j))  // only where the bound would be the horizon
+      h = std::max(h, path_meeting_time(*path(i), *path(j), model_.balls[i].radius + model_.balls[j].radius + margin, closing));
     for (int k : {i, j})
       if (slot_[root(k)] >= 0) p.horizon[slot_[root(k)]] = std::min(p.horizon[slot_[root(k)]], h);
   });
   for (int i : members) {
     slot_[i] = -1;
+    path_found_[i] = 0;
     parent_[i] = i;
     energy_[i] = 0;
     reached_[i] = 0;
   }
   woken_.clear();
+  for (int i : found_) path_found_[i] = 0;
+  found_.clear();
   return p;
 }
 

@@ -7,6 +7,10 @@
 // faster than V_i = sqrt(2 E / m_i) + g h, with g h covering free fall over a horizon h. Two balls in different
 // islands, a gap d apart, cannot touch before d / (V_i + V_j); a sleeping ball does not move (V = 0).
 //
+// A lone ball in the rolling or sliding regime, or a sleeper, follows a known path until something touches it
+// (regimes.hpp, FreePath): two of them may meet much later than their speed bounds say (balls rolling side by side or
+// apart, a ball rolling past a sleeper), and the later of the two bounds holds.
+//
 // Balls are grouped when they could touch within kLinkTime; the groups' energies then raise their members' bounds,
 // so grouping repeats until nothing more joins. Each island's horizon is the earliest time at which it could touch a
 // ball of another island or a sleeper it does not hold, at most kMaxHorizon (kLoneHorizon for a lone ball on a
@@ -14,10 +18,12 @@
 // splitting those that have separated. A sleeper joins the island that may reach it, with every sleeper frozen against
 // it (they wake together); a sleeper that two islands may reach joins them into one.
 #pragma once
+#include <optional>
 #include <vector>
 
 #include "contacts.hpp"
 #include "model.hpp"
+#include "regimes.hpp"
 #include "state.hpp"
 
 namespace shotlab {
@@ -25,6 +31,10 @@ namespace shotlab {
 // s: balls that could touch this soon are integrated together. Shorter splits a scene finer but looks at islands
 // again more often (each look cuts an island's step short once).
 inline constexpr double kLinkTime = 1e-3;
+// s: the longest islands run apart when every island is a single awake ball and nothing else (nothing to split; on a
+// table only, where the height a ball can fall is in its energy bound), and how far ahead a lone ball's free path
+// (regimes.hpp) is followed.
+inline constexpr double kLoneHorizon = 0.25;
 
 struct Partition {
   std::vector<std::vector<int>> islands;  // ball indices, ascending; islands ordered by their first ball
@@ -54,6 +64,9 @@ class Partitioner {
   std::vector<uint8_t> reached_;  // sleepers whose frozen group has joined an island ...
   std::vector<int> woken_;        // ... and the list of them
   std::vector<int> slot_;         // island number of each root while the islands are listed, else -1
+  std::vector<std::optional<FreePath>> path_;  // free paths of lone balls and sleepers while the horizons are found,
+  std::vector<uint8_t> path_found_;             // ... where found already,
+  std::vector<int> found_;                      // ... and the sleepers among them
   bool joined_ = false;           // a join happened in this round
 };
 

@@ -1,5 +1,8 @@
 #include "regimes.hpp"
 
+#include <cmath>
+#include <limits>
+
 #include "events.hpp"
 
 namespace shotlab {
@@ -14,6 +17,8 @@ constexpr double kTouchSlack = 1e-9;
 constexpr double kEntrySlip = 0.01;
 // Speeds (m/s) this small are round-off, not motion: below every tolerance an integrator is run at.
 constexpr double kDeadTail = 1e-12;
+// m/s: a rolling ball this slow stops (settle_rolling).
+constexpr double kStopSpeed = 1e-7;
 
 // m: how deep ball b sinks into a bed of material m under its own weight (C d^e = m g).
 double static_sink(const BallSpec& b, const ContactMaterial& m, double g) {
@@ -89,6 +94,29 @@ void rolling_derivative(const Model& model, const State& state, const ContactCac
     dxdt[3 + c] = a[c];
     dxdt[6 + c] = alpha[c];
   }
+}
+
+std::optional<FreePath> free_path(const Model& model, const State& state, const double* x, int i,
+                                  const ContactCache& cache, double horizon) {
+  if (!state.in_play[i]) return std::nullopt;
+  if (state.sleeping(i)) return FreePath{position(x, i), Vec3{0.0}, 0.0, 0.0, std::numeric_limits<double>::infinity()};
+  if (!state.rolling(i) && !state.sliding(i)) return std::nullopt;
+  // The rolling entry removes a slip under kEntrySlip rest_speed, 2/7 of it from the velocity (update_rolling).
+  const double jump = std::max(2.0 / 7.0 * kEntrySlip * model.options.rest_speed, kStopSpeed);
+  return FreePath{position(x, i), velocity(x, i), free_acceleration(model, state, cache, i), jump,
+                  std::min(horizon, collider_contact_time(model, state, x, i, horizon, cache))};
+}
+
+double path_meeting_time(const FreePath& a, const FreePath& b, double reach, double closing) {
+  const double h = std::min(a.free_for, b.free_for), acc = a.accel + b.accel;
+  const Vec3 d0 = a.p - b.p, v = a.v - b.v;
+  if (!std::isfinite(h)) return straight_line_contact_time(d0, v, reach);  // two sleepers
+  // Until h the velocity jumps move the balls by at most (jumps) h more: a wider reach.
+  const double wide = reach + (a.jump + b.jump) * h;
+  const double t = pair_contact_time(d0, v, wide, acc, h);
+  if (t < h) return std::max(t, 0.0);
+  const double gap = glm::length(d0 + h * v) - wide - 0.5 * acc * h * h;  // apart until h, at least this far then
+  return closing > 0 ? h + std::max(gap, 0.0) / closing : std::numeric_limits<double>::infinity();
 }
 
 bool Regimes::slip_below(const StateVector& x, int i, const Vec3& n, double limit) const {
@@ -238,12 +266,12 @@ bool Regimes::update_sliding(State& state, StateVector& x) {
 // entry threshold (it does not act on the rolling path at all), the speed below 1e-7 m/s (the distance still to
 // roll, v / (150 1/s), is under 1 nm).
 bool Regimes::settle_rolling(StateVector& x, int i, const Vec3& n) const {
-  const double stop_speed = 1e-7, stop_turning = kEntrySlip * model_.options.rest_speed, r = model_.balls[i].radius;
+  const double stop_turning = kEntrySlip * model_.options.rest_speed, r = model_.balls[i].radius;
   const Vec3 v = velocity(x, i), w = spin(x, i);
   const double speed = glm::length(v), wn = glm::dot(w, n);
   // Tails already at round-off (1e-12 m/s and below) are left alone: cutting them changes nothing but would restart
   // the integrator after every step.
-  const bool stops = speed > kDeadTail && speed < stop_speed,
+  const bool stops = speed > kDeadTail && speed < kStopSpeed,
              turns_off = r * std::abs(wn) > kDeadTail && r * std::abs(wn) < stop_turning;
   if (stops) {
     set_velocity(x, i, Vec3{0.0});

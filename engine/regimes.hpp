@@ -21,6 +21,7 @@
 // is no longer the flat bed (a pocket rim), or when it stops rolling. Contact onsets end the integrator's step
 // (simulation.cpp), so regime changes happen at the instant of contact.
 #pragma once
+#include <optional>
 #include <vector>
 
 #include "contacts.hpp"
@@ -57,6 +58,28 @@ class Regimes {
   std::vector<int> stack_, group_;
   std::vector<double> sink_;  // m: each ball's static sink into each plane-like collider (ball-major, cache_.plane_like)
 };
+
+// Where a ball can be while it touches nothing but its bed: within accel t^2 / 2 + jump t of p + v t for the first
+// `free_for` seconds. That holds for a lone ball in the rolling or sliding regime: it leaves its regime only when
+// something comes within contact_margin (or its bed ends at a pocket), its acceleration until then stays under
+// free_acceleration (contacts.hpp) and its velocity jumps only at the rolling entry's snap and the stop cut, by at
+// most `jump`. A sleeper does not move at all until something touches it.
+struct FreePath {
+  Vec3 p, v;        // m, m/s
+  double accel;     // m/s^2
+  double jump;      // m/s
+  double free_for;  // s; +inf for a sleeper
+};
+
+// The free path of ball i at (state, x), if it is asleep or in the rolling or sliding regime (the caller makes sure
+// that nothing else in its island can touch it), looked at for `horizon` seconds at most: free_for <= horizon.
+std::optional<FreePath> free_path(const Model& model, const State& state, const double* x, int i,
+                                  const ContactCache& cache, double horizon);
+
+// s: a lower bound on when two balls on free paths come within `reach` (m) of each other, given that neither can
+// close in faster than `closing` (m/s, the sum of their speed bounds) once its path ends: the paths are followed to
+// the earlier of their ends, and from there on the gap closes at most at `closing`.
+double path_meeting_time(const FreePath& a, const FreePath& b, double reach, double closing);
 
 // Right-hand sides of a ball in the rolling and the sliding regime (the dynamics above), written into dxdt. `cache`
 // supplies the bed's material without a lookup by name (this runs in every right-hand side).

@@ -27,9 +27,9 @@ Simulation::Simulation(Model model, State initial)
   regroup(integ_.time, {}, std::move(awake));
 }
 
-double Simulation::meeting_time(double t, const std::vector<int>& balls, double energy, const Island& other) {
+double Simulation::meeting_time(double t, const std::vector<int>& balls, double energy, Island& other, double until) {
   other.state_at(t, scratch_);
-  const State& flags = other.state();
+  const State& flags = other.flags_at(t);
   double best = std::numeric_limits<double>::infinity();
   for (int a : balls) {
     if (!integ_.in_play[a]) continue;
@@ -38,9 +38,21 @@ double Simulation::meeting_time(double t, const std::vector<int>& balls, double 
       const int b = other.balls()[k];
       if (!flags.in_play[k]) continue;
       const double closing = va + partition_.speed_bound(other.energy_bound(), b);
-      const double gap = glm::length(position(integ_.x, a) - position(scratch_, static_cast<int>(k))) -
-                         model_.balls[a].radius - model_.balls[b].radius - model_.options.contact_margin;
+      const double reach = model_.balls[a].radius + model_.balls[b].radius + model_.options.contact_margin;
+      const double gap = glm::length(position(integ_.x, a) - position(scratch_, static_cast<int>(k))) - reach;
       if (closing > 0) best = std::min(best, std::max(gap, 0.0) / closing);
+    }
+  }
+  // Two lone balls on free paths (regimes.hpp) may meet much later than their speed bounds say; worth a look only
+  // where the speed bounds would set a deadline.
+  if (t + best < until && balls.size() == 1 && other.balls().size() == 1 && integ_.in_play[balls[0]]) {
+    const int a = balls[0], b = other.balls()[0];
+    const auto path_a = free_path(model_, integ_, integ_.x.data(), a, cache_, kLoneHorizon);
+    const auto path_b = path_a ? other.free_path(t, kLoneHorizon) : std::nullopt;
+    if (path_b) {
+      const double reach = model_.balls[a].radius + model_.balls[b].radius + model_.options.contact_margin;
+      best = std::max(best, path_meeting_time(*path_a, *path_b, reach,
+                                              partition_.speed_bound(energy, a) + partition_.speed_bound(other.energy_bound(), b)));
     }
   }
   return t + best;
@@ -76,7 +88,7 @@ void Simulation::regroup(double t, std::vector<Island*> group, std::vector<int> 
       if (in_group(other.get())) continue;
       double meet = std::numeric_limits<double>::infinity();
       for (size_t n = 0; n < p.islands.size(); ++n) {
-        const double m = meeting_time(t, p.islands[n], p.energy[n], *other);
+        const double m = meeting_time(t, p.islands[n], p.energy[n], *other, std::max(deadline[n], other->deadline()));
         deadline[n] = std::min(deadline[n], m);
         meet = std::min(meet, m);
       }

@@ -54,8 +54,8 @@ class Simulation {
   // island) into new islands at time t, taking in every other island that could meet them before it got where it is.
   void regroup(double t, std::vector<Island*> group, std::vector<int> awake);
   // s: the earliest time at which `balls` (at time t in integ_, in an island of energy `energy`) could touch a ball of
-  // `other` (at time t on its dense output).
-  double meeting_time(double t, const std::vector<int>& balls, double energy, const Island& other);
+  // `other` (at time t on its dense output); a closer look only for a bound before `until` (s).
+  double meeting_time(double t, const std::vector<int>& balls, double energy, Island& other, double until);
   void check_energy(double t);
   void stop(Status why, std::string message);
 

@@ -70,6 +70,28 @@ TEST(Islands, LoneBallIsNotCutShortByACollisionElsewhere) {
   EXPECT_LT(lone_steps, 40);
 }
 
+// Lone rolling balls follow known paths (FreePath, regimes.hpp), so islands look at each other when those paths may
+// meet, not whenever their speed bounds could close the gap. Two balls rolling side by side 10 cm apart at 1 m/s
+// could close their 4.3 cm gap in 18 ms at their speed bounds: 55 looks a second. A pair rolling at each other
+// along lines 55 mm apart (a glancing hit: the balls' centres pass 2 R - 2 mm apart) must still touch.
+TEST(Islands, LoneBallsOnFreePathsMeetOnlyWhereThePathsMeet) {
+  nlohmann::json doc = {{"table", {{"type", "pool"}}},
+                        {"balls", {ball("a", -1.0, -0.05, 1.0), ball("b", -1.0, 0.05, 1.0),
+                                   ball("c", -0.5, 0.45, 0.8), ball("d", 0.5, 0.45 + 2 * kR - 2e-3, -0.8)}}};
+  auto sim = simulate(scene(doc));
+  long side_by_side = 0;
+  sim->set_observer([&](const Island& island) { side_by_side += island.balls()[0] <= 1; });
+  ASSERT_EQ(sim->advance(1.0), Status::Ok) << sim->diagnostic();
+  int hits = 0;
+  for (const Event& e : sim->events())
+    if (e.kind == "contact_begin" && e.bodies == std::vector<std::string>{"c", "d"}) ++hits;
+  std::printf("[ islands  ] two balls rolling side by side: %ld steps in 1 s; the glancing pair touched %d time(s)\n",
+              side_by_side, hits);
+  EXPECT_LT(side_by_side, 30);
+  EXPECT_EQ(hits, 1);
+  EXPECT_LT(std::abs(position(sim->state().x, 0).z + 0.05), 1e-9);  // a and b rolled straight: they never touched
+}
+
 // The break split into islands: no contact between islands may be missed. A missed one would let two balls pass
 // through each other; the deepest ball-ball contact seen in frames of 1/240 s stays at the Hertz depth of the
 // hardest collision (about 1 mm at 11 m/s), far from the 57 mm of a pass-through.
