@@ -139,7 +139,10 @@ bool Island::step(double limit) {
   // The changing contacts keep their law through the step (StepContacts). A contact left out has no force at the
   // step's start, nor has an unclamped one a different force there, so f there stays as it was, unless a contact
   // left out of the last step touches now or one unclamped in it has stopped pushing (it was cut there).
-  if (adaptive) dt = std::min(dt, time_to_possible_contact(model_, integ_, span_.x1.data(), dt, cap_cache_, &plan_));
+  if (adaptive) {
+    dt = std::min(dt, time_to_possible_contact(model_, integ_, span_.x1.data(), dt, cap_cache_, &plan_));
+    dt = std::min(dt, time_to_band_edge(model_, integ_, cap_cache_, span_.x1.data()));
+  }
   dynamics_.swap_step(plan_);
   const StepContacts &now = dynamics_.step(), &last = plan_;
   const bool changed = !std::includes(now.separated.begin(), now.separated.end(), last.separated.begin(), last.separated.end()) ||

@@ -119,6 +119,37 @@ double path_meeting_time(const FreePath& a, const FreePath& b, double reach, dou
   return closing > 0 ? h + std::max(gap, 0.0) / closing : std::numeric_limits<double>::infinity();
 }
 
+double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x) {
+  // A kink this close is not worth a step of its own: the step crosses it within round-off of its start.
+  constexpr double kTooClose = 1e-12;
+  const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
+  const double g = glm::length(model.options.gravity);
+  double best = std::numeric_limits<double>::infinity();
+  // A quantity q falling at `rate` (each friction term of strength F relaxes the motion it opposes at F times its
+  // mobility, contact_force.hpp) reaches its band's edge 1/k after (q - 1/k) / rate.
+  auto edge = [&](double q, double strength, double mobility) {
+    const double t = (q - 1.0 / sharpness_for(smooth, strength, mobility)) / (strength * mobility);
+    if (t > kTooClose) best = std::min(best, t);
+  };
+  for (int i = 0; i < state.ball_count(); ++i) {
+    const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : -1;
+    if (bed < 0) continue;
+    const ContactMaterial& m = *cache.collider_material[bed];
+    const Vec3& n = cache.plane_normal[bed];
+    const double weight = model.balls[i].mass * g, r = model.balls[i].radius;
+    const Vec3 v = velocity(x, i), w = spin(x, i);
+    if (m.spin_friction > 0) edge(r * std::abs(glm::dot(w, n)), m.spin_friction * weight, cache.inv_inertia_r2[i]);
+    if (state.rolling(i)) {  // the speed, against rolling resistance
+      if (m.rolling_resistance > 0) edge(glm::length(v), m.rolling_resistance * weight, cache.inv_mass[i]);
+    } else if (m.friction > 0) {  // the slip, against sliding friction (rolling resistance acts only inside its band)
+      Vec3 u = v + r * glm::cross(n, w);
+      u -= glm::dot(u, n) * n;
+      edge(glm::length(u), m.friction * weight, cache.inv_mass[i] + cache.inv_inertia_r2[i]);
+    }
+  }
+  return best;
+}
+
 bool Regimes::slip_below(const StateVector& x, int i, const Vec3& n, double limit) const {
   Vec3 u = velocity(x, i) + model_.balls[i].radius * glm::cross(n, spin(x, i));
   u -= glm::dot(u, n) * n;

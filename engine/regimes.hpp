@@ -81,6 +81,13 @@ std::optional<FreePath> free_path(const Model& model, const State& state, const 
 // the earlier of their ends, and from there on the gap closes at most at `closing`.
 double path_meeting_time(const FreePath& a, const FreePath& b, double reach, double closing);
 
+// s: the earliest time at which a ball in the rolling or sliding regime reaches the edge of a friction term's smoothing
+// band (fricstep's clamp at k s = 1: a kink in the right-hand side); +inf when none does. Outside the bands the
+// regimes' motion is polynomial in time (constant forces), so the time is exact. A step that ends there crosses no
+// kink: an embedded error estimate misjudges a step across one, and the step is rejected over and over as the kink
+// comes closer.
+double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x);
+
 // Right-hand sides of a ball in the rolling and the sliding regime (the dynamics above), written into dxdt. `cache`
 // supplies the bed's material without a lookup by name (this runs in every right-hand side).
 void rolling_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,

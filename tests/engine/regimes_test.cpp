@@ -2,6 +2,9 @@
 // in the closed-form rolling regime, has the decay tails of its speed and spin cut and then sleeps must end where the
 // full model (every ball integrated with smoothed cloth friction, no sleeping) brings it.
 #include <cstdio>
+#include <limits>
+
+#include "engine/regimes.hpp"
 
 #include "support.hpp"
 
@@ -79,6 +82,30 @@ TEST(Regimes, SlidingBallEndsWhereTheFullModelEnds) {
   EXPECT_LT(dp(x), 3 * dp(x_full) + 1e-9);
   EXPECT_LT(dv(x), 3 * dv(x_full) + 1e-9);
   EXPECT_LT(steps * 5, steps_full * 4);
+}
+
+// Steps of a ball in a closed-form regime end where a friction term reaches the edge of its smoothing band (1/k =
+// 1 mm/s of slip, speed or contact-patch speed at k = 1000 s/m). By MODEL.md's closed forms on the cloth (mu = 0.2,
+// mu_r = 0.01, mu_sp = 0.0117): slip falls at 7/2 mu g = 6.867 m/s^2, a rolling ball's speed at mu_r g =
+// 0.0981 m/s^2, the contact patch's speed R w_n at 5/2 mu_sp g = 0.2869 m/s^2.
+TEST(Regimes, StepsEndAtTheSmoothingBandsEdge) {
+  Prepared p = prepare(scene(cloth_scene({{{"id", "cue"}, {"position", {0, kR, 0}}}, {{"id", "obj"}, {"position", {1, kR, 0}}}})));
+  const ContactCache cache(p.model);
+  State& s = p.state;
+  s.sliding_on = {0, -1};
+  s.rolling_on = {-1, -1};
+  set_velocity(s.x, 0, Vec3(1.0, 0, 0));  // sliding without spin: slip 1 m/s
+  EXPECT_NEAR(time_to_band_edge(p.model, s, cache, s.x.data()), (1.0 - 1e-3) / 6.867, 1e-5);
+  set_velocity(s.x, 0, Vec3(0.0));  // no slip left: no edge ahead
+  s.rolling_on = {-1, 0};           // a ball rolling at 0.3 m/s with 1 m/s of patch speed: its speed's edge first
+  set_velocity(s.x, 1, Vec3(0.3, 0, 0));
+  set_spin(s.x, 1, Vec3(0, 1.0 / kR, -0.3 / kR));
+  EXPECT_NEAR(time_to_band_edge(p.model, s, cache, s.x.data()), (0.3 - 1e-3) / 0.0981, 1e-3);
+  set_spin(s.x, 1, Vec3(0, 0.1 / kR, -0.3 / kR));  // with 0.1 m/s of patch speed, the spin's
+  EXPECT_NEAR(time_to_band_edge(p.model, s, cache, s.x.data()), (0.1 - 1e-3) / 0.2869, 1e-4);
+  set_spin(s.x, 1, Vec3(0, 1e-3 / kR, -1e-3 / kR));  // on the bands' edges themselves: nothing left to cut
+  set_velocity(s.x, 1, Vec3(1e-3, 0, 0));
+  EXPECT_EQ(time_to_band_edge(p.model, s, cache, s.x.data()), std::numeric_limits<double>::infinity());
 }
 
 }  // namespace
