@@ -129,6 +129,7 @@ double straight_line_contact_time(const Vec3& d0, const Vec3& v, double reach) {
 // asks for less than gap / speed: a step cannot stall at the widened boundary.
 double pair_contact_time(const Vec3& d0, const Vec3& v, double reach, double a, double h) {
   const double bend = 0.5 * a * h * h, dist = glm::length(d0);
+  if (dist <= reach) return 0.0;  // within reach now (closing_time wants a positive gap)
   return dist < reach + 2 * bend ? closing_time(dist - reach, glm::length(v), a)
                                  : straight_line_contact_time(d0, v, reach + bend);
 }

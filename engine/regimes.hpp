@@ -59,15 +59,17 @@ class Regimes {
   std::vector<double> sink_;  // m: each ball's static sink into each plane-like collider (ball-major, cache_.plane_like)
 };
 
-// Where a ball can be while it touches nothing but its bed: within accel t^2 / 2 + jump t of p + v t for the first
-// `free_for` seconds. That holds for a lone ball in the rolling or sliding regime: it leaves its regime only when
-// something comes within contact_margin (or its bed ends at a pocket), its acceleration until then stays under
-// free_acceleration (contacts.hpp) and its velocity jumps only at the rolling entry's snap and the stop cut, by at
-// most `jump`. A sleeper does not move at all until something touches it.
+// Where a ball can be while it touches nothing but its bed: within accel t^2 / 2 + jump t + slack of p + v t for the
+// first `free_for` seconds. That holds for a lone ball in the rolling or sliding regime: it leaves its regime only
+// when something comes within contact_margin (or its bed ends at a pocket), its acceleration until then stays under
+// free_acceleration (contacts.hpp), its velocity jumps only at the rolling entry's snap, the stop cut and falling
+// asleep, by at most `jump` in all, and a collider may push it back by `slack` before free_for. A sleeper does not
+// move at all until something touches it.
 struct FreePath {
   Vec3 p, v;        // m, m/s
   double accel;     // m/s^2
   double jump;      // m/s
+  double slack;     // m
   double free_for;  // s; +inf for a sleeper
 };
 
