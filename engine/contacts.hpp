@@ -116,8 +116,9 @@ double time_to_possible_contact(const Model& model, const State& state, const do
 // settling onto the bed).
 double free_acceleration(const Model& model, const State& state, const ContactCache& cache, int i);
 
-// s: a lower bound on the time before ball i could touch a collider other than the bed it rolls or slides on, or
-// come over a hole's edge in that bed; +inf when nothing can within `horizon`. With `step`, lists the ball's contacts
+// s: a lower bound on the time before ball i could come contact_margin into a collider other than the bed it rolls
+// or slides on (as far as a step may take it), or that far over a hole's edge in that bed; +inf when nothing can
+// within `horizon`. With `step`, lists the ball's contacts
 // in step->separated and step->pushing as time_to_possible_contact does (unsorted).
 double collider_contact_time(const Model& model, const State& state, const double* x, int i, double horizon,
                              const ContactCache& cache, StepContacts* step = nullptr);
