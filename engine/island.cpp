@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "diagnostics.hpp"
+#include "partition.hpp"
 
 namespace shotlab {
 
@@ -135,39 +136,138 @@ void Island::take_events(double t, std::vector<Event>& out) {
 bool Island::step(double limit) {
   const bool adaptive = is_adaptive(model_.integrator.method);
   double dt = adaptive ? dt_next_ : model_.integrator.fixed_step;
-  const double wanted = dt;
+  // An island whose right-hand side stays constant (every ball asleep, or rolling or sliding outside its friction
+  // bands) moves in closed form: one step as long as the caps allow (and no longer than a lone ball's horizon, where
+  // the island's deadline is not finite), with no error to control.
+  bool constant = false;
+  if (adaptive) {
+    const double band = time_to_band_edge(model_, integ_, cap_cache_, span_.x1.data(), &constant);
+    const double horizon = constant ? std::min(limit - span_.t1, kLoneHorizon) : dt;
+    dt = std::min({horizon, band, time_to_possible_contact(model_, integ_, span_.x1.data(), horizon, cap_cache_, &plan_)});
+  }
   // The changing contacts keep their law through the step (StepContacts). A contact left out has no force at the
   // step's start, nor has an unclamped one a different force there, so f there stays as it was, unless a contact
   // left out of the last step touches now or one unclamped in it has stopped pushing (it was cut there).
-  if (adaptive) {
-    dt = std::min(dt, time_to_possible_contact(model_, integ_, span_.x1.data(), dt, cap_cache_, &plan_));
-    dt = std::min(dt, time_to_band_edge(model_, integ_, cap_cache_, span_.x1.data()));
-  }
   dynamics_.swap_step(plan_);
   const StepContacts &now = dynamics_.step(), &last = plan_;
   const bool changed = !std::includes(now.separated.begin(), now.separated.end(), last.separated.begin(), last.separated.end()) ||
                        !std::includes(now.pushing.begin(), now.pushing.end(), last.pushing.begin(), last.pushing.end());
-  StateVector& f0 = f_start_;
-  f0 = span_.f1;
-  if (changed) dynamics_(span_.x1, f0, span_.t1);
+  f_start_ = span_.f1;
+  if (changed) dynamics_(span_.x1, f_start_, span_.t1);
   // The synchronisation time ends the step exactly (round-off in t1 + (limit - t1) is snapped below).
   const bool to_limit = dt >= limit - span_.t1;
   if (to_limit) dt = limit - span_.t1;
+  // Each step runs in trial_ (its end in x1, f1), whose buffers outlive the step: no allocation per step.
+  trial_.t0 = span_.t1;
+  trial_.x0 = span_.x1;
+  trial_.f0 = f_start_;
+  double t;
+  if (constant) {
+    t = to_limit ? limit : span_.t1 + dt;
+    closed_form_step(t);
+    // The caps let a pair come contact_margin into touching within the step: end it where the contact begins,
+    // exactly, as on the closed-form path the step's interpolant is the motion itself.
+    const double touch = std::min(detector_.first_contact_change(trial_, integ_).begin,
+                                  detector_.first_touch(trial_, dynamics_.step().separated));
+    if (touch < t - kOnsetResolution) {
+      t = touch;
+      closed_form_step(t);
+      ++stats_.redone_steps;
+    }
+  } else if (!integrate(dt, to_limit ? limit : std::numeric_limits<double>::quiet_NaN(), t)) {
+    return false;
+  }
+  StateVector &x = trial_.x1, &f = trial_.f1;
+  ++stats_.steps;
+  stats_.rhs_evaluations = dynamics_.evaluations();
+
+  if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) {
+    std::ostringstream msg;
+    msg << "non-finite state in the step from t = " << span_.t1 << " s to " << t << " s; balls: ";
+    for (int i = 0; i < integ_.ball_count(); ++i)
+      for (int k = 0; k < kBallDofs; ++k)
+        if (!std::isfinite(x[kBallDofs * i + k])) {
+          msg << model_.balls[i].id << " ";
+          break;
+        }
+    msg << ". Last finite state: " << describe_balls(span_.x1);
+    stop(Status::NonFinite, msg.str());
+    return false;
+  }
+
+  span_.x0.swap(span_.x1);
+  span_.f0.swap(f_start_);
+  span_.t0 = span_.t1;
+  span_.x1.swap(x);
+  span_.f1.swap(f);
+  span_.t1 = t;
+  integ_.x = span_.x1;
+  integ_.time = t;
+  ++call_steps_;
+
+  // The flags the step started with (a rewind to inside it needs them); only the flags, not the state vector.
+  copy_flags(integ_, start_);
+  std::vector<Exit> exits;
+  detector_.scan(span_, integ_, dynamics_.step(), events_, exits);
+  // A ball that left play is frozen where it left.
+  StateVector at;
+  for (const Exit& e : exits) {
+    span_.interpolate(e.time, at);
+    integ_.in_play[e.ball] = 0;
+    set_position(span_.x1, e.ball, position(at, e.ball));
+    set_velocity(span_.x1, e.ball, Vec3{0.0});
+    set_spin(span_.x1, e.ball, Vec3{0.0});
+  }
+  const bool regime_changed = regimes_.update(integ_, span_.x1, t - span_.t0);
+  if (!exits.empty() || regime_changed) {
+    // The system lost or froze bodies, or woke them: the integrator starts afresh from the step's end. The finished
+    // step's interpolant stays for the caller's clock, with the exited balls frozen in it.
+    const StepSpan finished = span_;
+    restart();
+    span_.x0 = finished.x0;
+    span_.f0 = finished.f0;
+    span_.t0 = finished.t0;
+    for (const Exit& e : exits)
+      for (int k = 0; k < kBallDofs; ++k) {
+        span_.x0[kBallDofs * e.ball + k] = span_.x1[kBallDofs * e.ball + k];
+        span_.f0[kBallDofs * e.ball + k] = 0.0;
+      }
+  }
+  return true;
+}
+
+// Constant acceleration over the step to t1 (the island's right-hand side does not change, time_to_band_edge):
+// x(t0 + h) = x0 + h f0 + h^2 / 2 (the acceleration slots of f0 added to the positions), exact, and so is the step's
+// Hermite interpolant (cubic) of a motion that is quadratic in time. The step size suggestion is left alone: a closed
+// form estimates no error to base one on.
+void Island::closed_form_step(double t1) {
+  StateVector &x = trial_.x1, &f = trial_.f1;
+  const StateVector& f0 = trial_.f0;
+  const double h = t1 - trial_.t0;
+  x = trial_.x0;
+  for (size_t k = 0; k < x.size(); ++k) x[k] += h * f0[k];
+  for (size_t b = 0; b < x.size(); b += kBallDofs)
+    for (size_t c = 0; c < 3; ++c) x[b + c] += 0.5 * h * h * f0[b + 3 + c];
+  f.resize(x.size());
+  dynamics_(x, f, t1);
+  trial_.t1 = t1;
+  stats_.last_step = h;
+}
+
+bool Island::integrate(double dt, double limit, double& t) {
+  const bool adaptive = is_adaptive(model_.integrator.method);
+  const double wanted = dt_next_;
   const bool capped = dt < wanted;
-  // Each trial runs in trial_ (its end in x1, f1), whose buffers outlive the step: no allocation per step.
   StepSpan& trial = trial_;
-  trial.t0 = span_.t1;
-  trial.x0 = span_.x1;
-  trial.f0 = f0;
   StateVector &x = trial.x1, &f = trial.f1;
-  double t, tried;
+  double tried;
   int retries = 0;
   double passed = 0;     // the first trial the error control accepted, s
   bool at_onset = false;  // the step was cut where a contact begins
   const long rejected_before = stats_.rejected_steps;
   for (;;) {
-    x = span_.x1;
-    f = f0;
+    x = trial.x0;
+    f = trial.f0;
     t = span_.t1;
     tried = dt;
     if (stepper_->try_step(dynamics_, x, f, t, dt)) {
@@ -208,10 +308,8 @@ bool Island::step(double limit) {
     }
     ++stats_.rejected_steps;
   }
-  if (to_limit && retries == 0 && tried == limit - span_.t1) t = limit;
+  if (retries == 0 && tried == limit - span_.t1) t = limit;
   stats_.last_step = tried;
-  ++stats_.steps;
-  stats_.rhs_evaluations = dynamics_.evaluations();
   // After a rejection, do not grow the step at once: odeint's controller would grow it up to 5x and, on a
   // stability-limited problem (the stiff friction switch), be rejected again. A step cut short where a contact ends
   // or releases passed the error control at its first length, so the next one may try that again (in a breaking rack,
@@ -220,59 +318,6 @@ bool Island::step(double limit) {
   if (stats_.rejected_steps > rejected_before || (retries > 0 && at_onset)) dt_next_ = std::min(dt, tried);
   else if (retries > 0) dt_next_ = std::max(dt, passed);
   else dt_next_ = capped ? std::max(dt, wanted) : dt;
-
-  if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) {
-    std::ostringstream msg;
-    msg << "non-finite state in the step from t = " << span_.t1 << " s to " << t << " s; balls: ";
-    for (int i = 0; i < integ_.ball_count(); ++i)
-      for (int k = 0; k < kBallDofs; ++k)
-        if (!std::isfinite(x[kBallDofs * i + k])) {
-          msg << model_.balls[i].id << " ";
-          break;
-        }
-    msg << ". Last finite state: " << describe_balls(span_.x1);
-    stop(Status::NonFinite, msg.str());
-    return false;
-  }
-
-  span_.x0.swap(span_.x1);
-  span_.f0.swap(f0);
-  span_.t0 = span_.t1;
-  span_.x1.swap(x);
-  span_.f1.swap(f);
-  span_.t1 = t;
-  integ_.x = span_.x1;
-  integ_.time = t;
-  ++call_steps_;
-
-  // The flags the step started with (a rewind to inside it needs them); only the flags, not the state vector.
-  copy_flags(integ_, start_);
-  std::vector<Exit> exits;
-  detector_.scan(span_, integ_, dynamics_.step(), events_, exits);
-  // A ball that left play is frozen where it left.
-  StateVector at;
-  for (const Exit& e : exits) {
-    span_.interpolate(e.time, at);
-    integ_.in_play[e.ball] = 0;
-    set_position(span_.x1, e.ball, position(at, e.ball));
-    set_velocity(span_.x1, e.ball, Vec3{0.0});
-    set_spin(span_.x1, e.ball, Vec3{0.0});
-  }
-  const bool regime_changed = regimes_.update(integ_, span_.x1, t - span_.t0);
-  if (!exits.empty() || regime_changed) {
-    // The system lost or froze bodies, or woke them: the integrator starts afresh from the step's end. The finished
-    // step's interpolant stays for the caller's clock, with the exited balls frozen in it.
-    const StepSpan finished = span_;
-    restart();
-    span_.x0 = finished.x0;
-    span_.f0 = finished.f0;
-    span_.t0 = finished.t0;
-    for (const Exit& e : exits)
-      for (int k = 0; k < kBallDofs; ++k) {
-        span_.x0[kBallDofs * e.ball + k] = span_.x1[kBallDofs * e.ball + k];
-        span_.f0[kBallDofs * e.ball + k] = 0.0;
-      }
-  }
   return true;
 }
 

@@ -101,6 +101,11 @@ class Island {
   void take_events(double t, std::vector<Event>& out);
 
  private:
+  // The step's end (trial_.x1, f1 from trial_.x0, f0 at trial_.t0): by the error-controlled stepper, trying dt first
+  // (`limit`: where the step ends when dt was cut to reach it exactly, else NaN; t: the end's time; false when the
+  // step failed), or in closed form to t1.
+  bool integrate(double dt, double limit, double& t);
+  void closed_form_step(double t1);
   void restart();  // after the system changed (a ball left play): fresh derivative, stepper history, snapshot
   void stop(Status why, std::string message);
   std::string describe_balls(const StateVector& x) const;

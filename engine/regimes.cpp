@@ -124,34 +124,45 @@ double path_meeting_time(const FreePath& a, const FreePath& b, double reach, dou
   return closing > 0 ? h + std::max(gap, 0.0) / closing : std::numeric_limits<double>::infinity();
 }
 
-double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x) {
+double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
+                         bool* constant) {
   // A kink this close is not worth a step of its own: the step crosses it within round-off of its start.
   constexpr double kTooClose = 1e-12;
   const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
   const double g = glm::length(model.options.gravity);
   double best = std::numeric_limits<double>::infinity();
+  bool outside = true;  // every term so far outside its band
   // A quantity q falling at `rate` (each friction term of strength F relaxes the motion it opposes at F times its
-  // mobility, contact_force.hpp) reaches its band's edge 1/k after (q - 1/k) / rate.
-  auto edge = [&](double q, double strength, double mobility) {
+  // mobility, contact_force.hpp) reaches its band's edge 1/k after (q - 1/k) / rate. Where fricstep is 0 (q = 0 and
+  // `zero_holds`: nothing else moves q) or 1 (beyond the edge), the term is constant.
+  auto edge = [&](double q, double strength, double mobility, bool zero_holds) {
     const double t = (q - 1.0 / sharpness_for(smooth, strength, mobility)) / (strength * mobility);
     if (t > kTooClose) best = std::min(best, t);
+    else if (q != 0 || !zero_holds) outside = false;
   };
   for (int i = 0; i < state.ball_count(); ++i) {
+    if (!state.active(i)) continue;  // asleep or out of play: frozen
     const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : -1;
-    if (bed < 0) continue;
+    if (bed < 0) {
+      outside = false;  // the full model
+      continue;
+    }
     const ContactMaterial& m = *cache.collider_material[bed];
     const Vec3& n = cache.plane_normal[bed];
     const double weight = model.balls[i].mass * g, r = model.balls[i].radius;
     const Vec3 v = velocity(x, i), w = spin(x, i);
-    if (m.spin_friction > 0) edge(r * std::abs(glm::dot(w, n)), m.spin_friction * weight, cache.inv_inertia_r2[i]);
+    if (m.spin_friction > 0) edge(r * std::abs(glm::dot(w, n)), m.spin_friction * weight, cache.inv_inertia_r2[i], true);
     if (state.rolling(i)) {  // the speed, against rolling resistance
-      if (m.rolling_resistance > 0) edge(glm::length(v), m.rolling_resistance * weight, cache.inv_mass[i]);
+      if (m.rolling_resistance > 0) edge(glm::length(v), m.rolling_resistance * weight, cache.inv_mass[i], true);
     } else if (m.friction > 0) {  // the slip, against sliding friction (rolling resistance acts only inside its band)
       Vec3 u = v + r * glm::cross(n, w);
       u -= glm::dot(u, n) * n;
-      edge(glm::length(u), m.friction * weight, cache.inv_mass[i] + cache.inv_inertia_r2[i]);
+      edge(glm::length(u), m.friction * weight, cache.inv_mass[i] + cache.inv_inertia_r2[i], false);
+    } else if (m.rolling_resistance > 0) {
+      outside = false;  // frictionless sliding: rolling resistance acts on the centre's speed all along
     }
   }
+  if (constant) *constant = outside;
   return best;
 }
 

@@ -88,7 +88,11 @@ double path_meeting_time(const FreePath& a, const FreePath& b, double reach, dou
 // regimes' motion is polynomial in time (constant forces), so the time is exact. A step that ends there crosses no
 // kink: an embedded error estimate misjudges a step across one, and the step is rejected over and over as the kink
 // comes closer.
-double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x);
+// With `constant`, also says whether the right-hand side is constant until then: every ball in play asleep, or in the
+// rolling or sliding regime with each of its friction terms outside its band (or, rolling, at exactly zero). The
+// island may then step in closed form (island.cpp).
+double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
+                         bool* constant = nullptr);
 
 // Right-hand sides of a ball in the rolling and the sliding regime (the dynamics above), written into dxdt. `cache`
 // supplies the bed's material without a lookup by name (this runs in every right-hand side).

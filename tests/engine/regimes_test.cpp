@@ -95,8 +95,16 @@ TEST(Regimes, StepsEndAtTheSmoothingBandsEdge) {
   s.sliding_on = {0, -1};
   s.rolling_on = {-1, -1};
   set_velocity(s.x, 0, Vec3(1.0, 0, 0));  // sliding without spin: slip 1 m/s
-  EXPECT_NEAR(time_to_band_edge(p.model, s, cache, s.x.data()), (1.0 - 1e-3) / 6.867, 1e-5);
+  bool constant = false;
+  EXPECT_NEAR(time_to_band_edge(p.model, s, cache, s.x.data(), &constant), (1.0 - 1e-3) / 6.867, 1e-5);
+  EXPECT_FALSE(constant);  // obj is in the full model
+  s.asleep = {0, 1};
+  time_to_band_edge(p.model, s, cache, s.x.data(), &constant);
+  EXPECT_TRUE(constant);  // cue outside its bands, obj asleep: the island may step in closed form
   set_velocity(s.x, 0, Vec3(0.0));  // no slip left: no edge ahead
+  time_to_band_edge(p.model, s, cache, s.x.data(), &constant);
+  EXPECT_FALSE(constant);  // a slider without slip would feel rolling resistance: no closed form
+  s.asleep = {1, 0};
   s.rolling_on = {-1, 0};           // a ball rolling at 0.3 m/s with 1 m/s of patch speed: its speed's edge first
   set_velocity(s.x, 1, Vec3(0.3, 0, 0));
   set_spin(s.x, 1, Vec3(0, 1.0 / kR, -0.3 / kR));
@@ -105,7 +113,34 @@ TEST(Regimes, StepsEndAtTheSmoothingBandsEdge) {
   EXPECT_NEAR(time_to_band_edge(p.model, s, cache, s.x.data()), (0.1 - 1e-3) / 0.2869, 1e-4);
   set_spin(s.x, 1, Vec3(0, 1e-3 / kR, -1e-3 / kR));  // on the bands' edges themselves: nothing left to cut
   set_velocity(s.x, 1, Vec3(1e-3, 0, 0));
-  EXPECT_EQ(time_to_band_edge(p.model, s, cache, s.x.data()), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(time_to_band_edge(p.model, s, cache, s.x.data(), &constant), std::numeric_limits<double>::infinity());
+  EXPECT_FALSE(constant);  // its speed and spin now decay inside their bands: no closed form
+  set_velocity(s.x, 1, Vec3(0.0));  // stopped rolling, the spin still decaying
+  time_to_band_edge(p.model, s, cache, s.x.data(), &constant);
+  EXPECT_FALSE(constant);
+  set_spin(s.x, 1, Vec3(0.0));  // at rest: constant (zero)
+  time_to_band_edge(p.model, s, cache, s.x.data(), &constant);
+  EXPECT_TRUE(constant);
+  s.rolling_on = {-1, -1};  // the full model
+  time_to_band_edge(p.model, s, cache, s.x.data(), &constant);
+  EXPECT_FALSE(constant);
+}
+
+// A ball rolling outside its bands moves in closed form (MODEL.md eq. 3.6: x = v0 t - mu_r g t^2 / 2): each step
+// costs one right-hand side, for the derivative at its end, where Cash-Karp's six stages would integrate the same
+// polynomial. The position is that of the formula to round-off.
+TEST(Regimes, RollingBallStepsInClosedForm) {
+  const double v0 = 1.0, t = 2.0, a = 0.01 * 9.81;
+  auto sim = simulate(scene(cloth_scene({{{"id", "cue"}, {"position", {0, kR, 0}}, {"velocity", {v0, 0, 0}},
+                                          {"angular_velocity", {0, 0, -v0 / kR}}}})));
+  advance_to(*sim, t);
+  const Stats& st = sim->stats();
+  std::printf("[ closed   ] rolled %.9f m in %g s: %ld steps, %ld right-hand sides\n", position(sim->state().x, 0).x, t,
+              st.steps, st.rhs_evaluations);
+  ASSERT_TRUE(sim->state().rolling(0));
+  EXPECT_NEAR(position(sim->state().x, 0).x, v0 * t - 0.5 * a * t * t, 1e-12);
+  EXPECT_NEAR(velocity(sim->state().x, 0).x, v0 - a * t, 1e-13);
+  EXPECT_LE(st.rhs_evaluations, st.steps + 2);
 }
 
 }  // namespace
