@@ -68,8 +68,12 @@ void add_friction(const ContactMaterial& mat, const ContactKinematics& k, const 
 // The torque a contact force puts on a ball of radius r whose outward contact normal (centre to contact point) is
 // -normal:  friction acts at r_c = -r n; rolling resistance comes with the torque (2/5) r n x F_roll, which keeps
 // the slip unchanged (MODEL.md eq. 3.7: alpha = (1/r) n x a and I = 2/5 m r^2); spin friction about n.
+// tangential_torque is the first two alone.
+inline Vec3 tangential_torque(const ContactForce& f, const Vec3& n, double r) {
+  return glm::cross(-r * n, f.friction) + 0.4 * r * glm::cross(n, f.rolling);
+}
 inline Vec3 contact_torque(const ContactForce& f, const Vec3& n, double r) {
-  return glm::cross(-r * n, f.friction) + 0.4 * r * glm::cross(n, f.rolling) + f.spin_torque * n;
+  return tangential_torque(f, n, r) + f.spin_torque * n;
 }
 
 }  // namespace shotlab

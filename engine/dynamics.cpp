@@ -16,15 +16,18 @@ void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/)
     torque_[i] = Vec3{0.0};
   }
   for_each_contact(model_, state_, x.data(), cache_, [&](const Contact& c) {
-    force_[c.ball] += c.force.force;
-    torque_[c.ball] += contact_torque(c.force, c.normal, model_.balls[c.ball].radius);
+    const ContactForce& f = c.force;
+    const double r = model_.balls[c.ball].radius;
+    const Vec3 lever = tangential_torque(f, c.normal, r);
+    force_[c.ball] += f.force;
+    torque_[c.ball] += lever + f.spin_torque * c.normal;
     if (c.other_ball >= 0) {
-      // Newton's third law. B sees the normal -n, so its spin torque (spin_torque * normal) keeps the same scalar.
-      force_[c.other_ball] -= c.force.force;
-      ContactForce opposite = c.force;
-      opposite.friction = -opposite.friction;
-      opposite.rolling = -opposite.rolling;
-      torque_[c.other_ball] += contact_torque(opposite, -c.normal, model_.balls[c.other_ball].radius);
+      // Newton's third law. B sees the normal -n and the opposite friction and rolling forces, so its tangential
+      // torque, r_B (-n) x (-F_fric) + (2/5) r_B (-n) x (-F_roll), is A's when the radii are equal (every contact of a
+      // rack), and its spin torque about -n keeps the same scalar.
+      const double rb = model_.balls[c.other_ball].radius;
+      force_[c.other_ball] -= f.force;
+      torque_[c.other_ball] += (rb == r ? lever : tangential_torque(f, c.normal, rb)) - f.spin_torque * c.normal;
     }
   });
   for (int i = 0; i < n; ++i) {
