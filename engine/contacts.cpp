@@ -7,6 +7,49 @@
 
 namespace shotlab {
 
+namespace {
+
+// The height (m) of a plane-like shape if it is a level floor over the column: normal exactly up, a bounded plane
+// spanned by level edges and covering the column (its four corners do: the region is convex); NaN for any other
+// shape. The column is cleared of each hole's square. Over what is left, Probe::surface reduces to depth =
+// r - (p.y - y) and normal up, exactly: the dot product with (0, 1, 0) adds two zeros.
+double level_floor(const Shape& shape, ColumnXZ& column) {
+  constexpr double no = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<Hole>* holes = nullptr;
+  double y = no;
+  if (const auto* s = std::get_if<Plane>(&shape)) {
+    if (s->normal != kUp) return no;
+    holes = &s->holes, y = s->point.y;
+  } else if (const auto* s = std::get_if<BoundedPlane>(&shape)) {
+    if (s->normal != kUp || s->u.y != 0 || s->v.y != 0) return no;
+    for (const double x : {column.lo_x, column.hi_x})
+      for (const double z : {column.lo_z, column.hi_z}) {
+        const Vec3 d = Vec3{x, s->origin.y, z} - s->origin;
+        const double du = glm::dot(d, s->u), dv = glm::dot(d, s->v);
+        if (du <= 0 || du >= s->uu || dv <= 0 || dv >= s->vv) return no;
+      }
+    holes = &s->holes, y = s->origin.y;
+  } else {
+    return no;
+  }
+  for (const Hole& h : *holes) column.exclude(h.center - h.radius, h.center + h.radius);
+  return y;
+}
+
+}  // namespace
+
+void ColumnXZ::exclude(const Vec3& lo, const Vec3& hi) {
+  if (hi.x <= lo_x || lo.x >= hi_x || hi.z <= lo_z || lo.z >= hi_z) return;
+  const double w = hi_x - lo_x, d = hi_z - lo_z;
+  const double keep[4] = {(hi_x - hi.x) * d, (lo.x - lo_x) * d, (hi_z - hi.z) * w, (lo.z - lo_z) * w};
+  switch (std::max_element(keep, keep + 4) - keep) {
+    case 0: lo_x = hi.x; break;
+    case 1: hi_x = lo.x; break;
+    case 2: lo_z = hi.z; break;
+    default: hi_z = lo.z;
+  }
+}
+
 ContactCache::ContactCache(const Model& model) : ball_ball(&model.material(kBallBall)) {
   for (const Collider& c : model.colliders) {
     collider_material.push_back(&model.material(c.material));
@@ -15,9 +58,7 @@ ContactCache::ContactCache(const Model& model) : ball_ball(&model.material(kBall
     else if (const auto* s = std::get_if<BoundedPlane>(&c.shape)) plane_normal.push_back(s->normal);
     else plane_normal.emplace_back(0.0);
   }
-  // The clear column, greedily: start from the span of the other colliders' bounds and, for each of them that
-  // reaches into the column, move the one edge of the column that keeps the most area (a cushion along an edge costs
-  // a strip of its width). Colliders taken in the order of the model; an empty column (lo >= hi) matches no ball.
+  // The clear column: the span of the other colliders' bounds, cleared of each of them in the order of the model.
   bool any = false;
   for (size_t c = 0; c < model.colliders.size(); ++c) {
     if (plane_normal[c] != Vec3{0.0}) {
@@ -25,23 +66,16 @@ ContactCache::ContactCache(const Model& model) : ball_ball(&model.material(kBall
       continue;
     }
     const Bounds& b = collider_bounds[c];
-    if (!any) clear_lo_x = b.lo.x, clear_hi_x = b.hi.x, clear_lo_z = b.lo.z, clear_hi_z = b.hi.z, any = true;
-    clear_lo_x = std::min(clear_lo_x, b.lo.x), clear_hi_x = std::max(clear_hi_x, b.hi.x);
-    clear_lo_z = std::min(clear_lo_z, b.lo.z), clear_hi_z = std::max(clear_hi_z, b.hi.z);
+    if (!any) clear = {b.lo.x, b.hi.x, b.lo.z, b.hi.z}, any = true;
+    clear.lo_x = std::min(clear.lo_x, b.lo.x), clear.hi_x = std::max(clear.hi_x, b.hi.x);
+    clear.lo_z = std::min(clear.lo_z, b.lo.z), clear.hi_z = std::max(clear.hi_z, b.hi.z);
   }
-  for (size_t c = 0; c < model.colliders.size() && any; ++c) {
-    if (plane_normal[c] != Vec3{0.0}) continue;
-    const Bounds& b = collider_bounds[c];
-    if (b.hi.x <= clear_lo_x || b.lo.x >= clear_hi_x || b.hi.z <= clear_lo_z || b.lo.z >= clear_hi_z) continue;
-    const double w = clear_hi_x - clear_lo_x, d = clear_hi_z - clear_lo_z;
-    const double keep[4] = {(clear_hi_x - b.hi.x) * d, (b.lo.x - clear_lo_x) * d, (clear_hi_z - b.hi.z) * w,
-                            (b.lo.z - clear_lo_z) * w};
-    switch (std::max_element(keep, keep + 4) - keep) {
-      case 0: clear_lo_x = b.hi.x; break;
-      case 1: clear_hi_x = b.lo.x; break;
-      case 2: clear_lo_z = b.hi.z; break;
-      default: clear_hi_z = b.lo.z;
-    }
+  for (size_t c = 0; c < model.colliders.size() && any; ++c)
+    if (plane_normal[c] == Vec3{0.0}) clear.exclude(collider_bounds[c].lo, collider_bounds[c].hi);
+  for (int c : plane_like) {
+    floor.push_back(clear);
+    floor_y.push_back(level_floor(model.colliders[c].shape, floor.back()));
+    if (std::isnan(floor_y.back())) floor.back() = ColumnXZ{};
   }
   for (const BallSpec& b : model.balls) {
     inv_mass.push_back(1.0 / b.mass);

@@ -38,6 +38,18 @@ struct Contact {
   ContactForce force;  // on A
 };
 
+// A vertical column over the rectangle lo < x < hi, lo < z < hi (m) of the table's plane; empty when lo >= hi.
+struct ColumnXZ {
+  double lo_x = 0, hi_x = 0, lo_z = 0, hi_z = 0;
+  // Whether a ball at p with the given reach (m) lies inside, all of it.
+  bool holds(const Vec3& p, double reach) const {
+    return p.x - reach > lo_x && p.x + reach < hi_x && p.z - reach > lo_z && p.z + reach < hi_z;
+  }
+  // Greedily clear of the box [lo, hi] (its x-z extent): if the box reaches in, move the one edge that keeps the
+  // most area (a cushion along an edge costs a strip of its width).
+  void exclude(const Vec3& lo, const Vec3& hi);
+};
+
 // Per-model lookups done once (material of each collider) plus reusable buffers, so that the right-hand side does
 // no map lookups and no allocation. Holds pointers into the Model it was made from: rebuild it with the model.
 struct ContactCache {
@@ -45,10 +57,16 @@ struct ContactCache {
   std::vector<const ContactMaterial*> collider_material;
   std::vector<Bounds> collider_bounds;  // broad phase against static colliders
   std::vector<Vec3> plane_normal;       // unit normal of each plane-like collider (Plane, BoundedPlane), else 0
-  // A vertical column (x, z ranges, m) that no collider other than the plane-like ones reaches: a ball inside it is
-  // probed against the plane-like colliders alone (on a table, the bed; the cushions and jaws line the edges).
+  // A vertical column that no collider other than the plane-like ones reaches: a ball inside it is probed against
+  // the plane-like colliders alone (on a table, the bed; the cushions and jaws line the edges).
   std::vector<int> plane_like;
-  double clear_lo_x = 0, clear_hi_x = 0, clear_lo_z = 0, clear_hi_z = 0;
+  ColumnXZ clear;
+  // For each plane-like collider (in the order of plane_like), the part of the clear column over which it is a level
+  // floor (normal exactly up) with no edge and no hole, at height floor_y (m; NaN and an empty column where it is
+  // none). A ball whose centre is over it is probed with one subtraction: the bed under a rack of 16 balls, in every
+  // right-hand side, no longer visits the shape, its extent and its six pockets.
+  std::vector<ColumnXZ> floor;
+  std::vector<double> floor_y;
   const ContactMaterial* ball_ball;
   // Each ball's mobilities (contact_force.hpp), constant for the model: 1/m (1/kg) and r^2/I (1/kg).
   std::vector<double> inv_mass, inv_inertia_r2;

@@ -81,21 +81,29 @@ TEST(Colliders, CapsuleMiddleAndEnds) {
 
 // ContactCache's clear column (contacts.hpp): a ball inside it is probed against the plane-like colliders only. On a
 // pool table, near_colliders must still find every collider the plain probe of each finds, wherever the ball is:
-// mid-table, at a cushion's nose, in a pocket's jaws, over a hole, off the table.
+// mid-table, at a cushion's nose, in a pocket's jaws, over a hole, off the table. Where the bed is probed as a level
+// floor, it gives exactly what the plain probe gives.
 TEST(Colliders, ClearColumnHidesNoCollider) {
   Model model = empty_model();
   add_table(model, pool_table());
   const ContactCache cache(model);
-  ASSERT_LT(cache.clear_lo_x, cache.clear_hi_x);
-  ASSERT_LT(cache.clear_lo_z, cache.clear_hi_z);
+  ASSERT_LT(cache.clear.lo_x, cache.clear.hi_x);
+  ASSERT_LT(cache.clear.lo_z, cache.clear.hi_z);
   const double ball = 0.028575;
-  int column = 0, near_edge = 0;
+  int column = 0, near_edge = 0, level = 0;
   for (double x = -1.45; x <= 1.45; x += 0.0061)
     for (double z = -0.8; z <= 0.8; z += 0.0059)
       for (double within : {0.0, 1e-3}) {
         const Vec3 p{x, ball - 1e-5, z};
         std::vector<int> found, expected;
-        near_colliders(model, cache, p, ball, within, [&](int c, const Penetration&) { found.push_back(c); });
+        near_colliders(model, cache, p, ball, within, [&](int c, const Penetration& pen) {
+          found.push_back(c);
+          // Over the level floor (contacts.hpp) the bed's depth and normal are the plain probe's, to the bit.
+          const auto plain = penetration(model.colliders[c].shape, p, ball, within);
+          ASSERT_TRUE(plain.has_value()) << model.colliders[c].name << " at x = " << x << ", z = " << z;
+          EXPECT_EQ(pen.depth, plain->depth);
+          EXPECT_EQ(pen.normal, plain->normal);
+        });
         for (size_t c = 0; c < model.colliders.size(); ++c)
           if (penetration(model.colliders[c].shape, p, ball, within) && cache.collider_bounds[c].may_touch(p, ball + within))
             expected.push_back(static_cast<int>(c));
@@ -108,9 +116,12 @@ TEST(Colliders, ClearColumnHidesNoCollider) {
           }
         }
         (found.size() == 1 && expected.size() == 1 ? column : near_edge)++;
+        level += cache.floor[0].holds(p, 0.0);
       }
   EXPECT_GT(column, 0);
   EXPECT_GT(near_edge, 0);
+  // The bed is a level floor over most of the column: all of it but the strips the corner pockets reach into.
+  EXPECT_GT(level, column * 9 / 10);
 }
 
 }  // namespace
