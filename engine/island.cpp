@@ -71,13 +71,17 @@ Island::Island(const Model& world, const State& world_state, std::vector<int> ba
   span_.x1 = integ_.x;
   restart();
   start_ = integ_;
-  energy_ref_ = energy(span_.t1);
+  energy_ref_ = energy();
 }
 
-double Island::energy(double t) {
-  energy_state_ = integ_;
-  span_.interpolate(t, energy_state_.x);
-  return shotlab::energy(model_, energy_state_, cap_cache_, true).total();
+double Island::energy() {
+  if (energy_steps_ != stats_.steps) {
+    energy_state_ = integ_;
+    span_.interpolate(span_.t1, energy_state_.x);
+    energy_ = shotlab::energy(model_, energy_state_, cap_cache_, true).total();
+    energy_steps_ = stats_.steps;
+  }
+  return energy_;
 }
 
 void Island::restart() {

@@ -91,12 +91,11 @@ class Island {
   // the integrator rather than from the step's interpolant, whose error (O(h^4) on a long step) islands formed at t
   // would inherit. Events found again that were handed over before are dropped. Returns false if a step failed.
   bool rewind(double t);
-  // J: the total energy of the island's balls and contacts at time t in [span().t0, time()] (sleepers included), and
-  // at a reference time the simulation sets (the island's start, then each synchronisation). An island touches
-  // nothing outside it, so the scene's energy changes by what its islands' energies change.
-  double energy(double t);
+  // J: the total energy of the island's balls and contacts at time() (sleepers included), worked out once a step,
+  // and at the island's start. An island touches nothing outside it, so the scene's energy changes by what its
+  // islands' energies change.
+  double energy();
   double energy_ref() const { return energy_ref_; }
-  void set_energy_ref(double e) { energy_ref_ = e; }
   // Hands over the events located so far at or before t, in time order.
   void take_events(double t, std::vector<Event>& out);
 
@@ -135,6 +134,8 @@ class Island {
   std::string diagnostic_;
   StateVector scratch_;
   State energy_state_;  // scratch for energy()
+  double energy_ = 0;   // J: energy() as of the step count energy_steps_
+  long energy_steps_ = -1;
 };
 
 }  // namespace shotlab

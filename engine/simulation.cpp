@@ -27,7 +27,8 @@ Simulation::Simulation(Model model, State initial)
   regroup(integ_.time, {}, std::move(awake));
 }
 
-double Simulation::meeting_time(double t, const std::vector<int>& balls, double energy, Island& other, double until) {
+double Simulation::meeting_time(double t, const std::vector<int>& balls, double energy, const std::optional<FreePath>& path_a,
+                                Island& other, double until) {
   other.state_at(t, scratch_);
   const State& flags = other.flags_at(t);
   double best = std::numeric_limits<double>::infinity();
@@ -45,10 +46,9 @@ double Simulation::meeting_time(double t, const std::vector<int>& balls, double 
   }
   // Two lone balls on free paths (regimes.hpp) may meet much later than their speed bounds say; worth a look only
   // where the speed bounds would set a deadline.
-  if (t + best < until && balls.size() == 1 && other.balls().size() == 1 && integ_.in_play[balls[0]]) {
+  if (t + best < until && path_a && other.balls().size() == 1) {
     const int a = balls[0], b = other.balls()[0];
-    const auto path_a = free_path(model_, integ_, integ_.x.data(), a, cache_, kLoneHorizon);
-    const auto path_b = path_a ? other.free_path(t, kLoneHorizon) : std::nullopt;
+    const auto path_b = other.free_path(t, kLoneHorizon);
     if (path_b) {
       const double reach = model_.balls[a].radius + model_.balls[b].radius + model_.options.contact_margin;
       best = std::max(best, path_meeting_time(*path_a, *path_b, reach,
@@ -63,6 +63,7 @@ void Simulation::regroup(double t, std::vector<Island*> group, std::vector<int> 
   auto in_group = [&](const Island* island) { return std::find(group.begin(), group.end(), island) != group.end(); };
   Partition p;
   std::vector<double> deadline;
+  std::vector<std::optional<FreePath>> paths;  // of each new island that is a lone ball on a free path
   for (size_t taken = 0;;) {
     // The group's balls at t (a member past t is rewound to t: its last step began at or before t).
     for (; taken < group.size(); ++taken) {
@@ -82,13 +83,19 @@ void Simulation::regroup(double t, std::vector<Island*> group, std::vector<int> 
     // Every other island against each new one: one that could meet it before it got where it is (or very soon) must be
     // rewound to t and split with the group; the others only lower their deadlines.
     deadline.resize(p.islands.size());
-    for (size_t n = 0; n < p.islands.size(); ++n) deadline[n] = t + p.horizon[n];
+    paths.assign(p.islands.size(), std::nullopt);
+    for (size_t n = 0; n < p.islands.size(); ++n) {
+      deadline[n] = t + p.horizon[n];
+      const std::vector<int>& balls = p.islands[n];
+      if (balls.size() == 1 && integ_.in_play[balls[0]] && islands_.size() > group.size())
+        paths[n] = free_path(model_, integ_, integ_.x.data(), balls[0], cache_, kLoneHorizon);
+    }
     bool grew = false;
     for (const auto& other : islands_) {
       if (in_group(other.get())) continue;
       double meet = std::numeric_limits<double>::infinity();
       for (size_t n = 0; n < p.islands.size(); ++n) {
-        const double m = meeting_time(t, p.islands[n], p.energy[n], *other, std::max(deadline[n], other->deadline()));
+        const double m = meeting_time(t, p.islands[n], p.energy[n], paths[n], *other, std::max(deadline[n], other->deadline()));
         deadline[n] = std::min(deadline[n], m);
         meet = std::min(meet, m);
       }
@@ -101,8 +108,8 @@ void Simulation::regroup(double t, std::vector<Island*> group, std::vector<int> 
     }
     if (!grew) break;
   }
-  // Retire the group: events up to t are handed over (later ones are found again), energy booked at t. A member at t
-  // that keeps exactly its balls goes on running (its step size and stepper history); the others end here.
+  // Retire the group: events up to t are handed over (later ones are found again). A member at t that keeps exactly
+  // its balls goes on running (its step size and stepper history); the others end here, their energy booked at t.
   std::vector<std::unique_ptr<Island>> next;
   std::vector<std::unique_ptr<Island>> ending;
   for (auto& island : islands_) {
@@ -111,9 +118,6 @@ void Simulation::regroup(double t, std::vector<Island*> group, std::vector<int> 
       continue;
     }
     island->take_events(t, located_);
-    const double e = island->energy(t);
-    energy_synced_ += e - island->energy_ref();
-    island->set_energy_ref(e);
     ending.push_back(std::move(island));
   }
   for (size_t n = 0; n < p.islands.size(); ++n) {
@@ -139,6 +143,7 @@ void Simulation::regroup(double t, std::vector<Island*> group, std::vector<int> 
   }
   for (const auto& island : ending) {
     if (!island) continue;
+    energy_synced_ += island->energy() - island->energy_ref();  // it is at t (rewound)
     retired_ += island->stats();
     // Its balls at the clock: those in no new island stay as they are now (the others are interpolated anew).
     for (int i : island->balls()) copy_ball(integ_, i, state_, i);
@@ -206,14 +211,16 @@ Status Simulation::advance(double dt) {
   });
   events_.insert(events_.end(), located_.begin(), located_.end());
   located_.clear();
-  if (status_ == Status::Ok) check_energy(reached);
+  if (status_ == Status::Ok) check_energy();
   stats_.wall_seconds = wall + std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return status_;
 }
 
-void Simulation::check_energy(double t) {
+void Simulation::check_energy() {
+  // Each island's energy at the end of its last step: islands run on their own clocks, and each is worked out once a
+  // step (a lone ball rolls for several frames in one).
   double e = energy_synced_;
-  for (const auto& island : islands_) e += island->energy(t) - island->energy_ref();
+  for (const auto& island : islands_) e += island->energy() - island->energy_ref();
   if (e - energy_start_ > energy_scale_) {
     std::ostringstream msg;
     msg << "unstable: the total energy grew from " << energy_start_ << " J to " << e << " J by t = " << state_.time
