@@ -216,7 +216,7 @@ double collider_contact_time(const Model& model, const State& state, const doubl
 
 double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon,
                                 ContactCache& cache, StepContacts* step) {
-  if (step) step->separated.clear(), step->pushing.clear();
+  if (step) step->separated.clear(), step->pushing.clear(), step->near.clear(), step->near_known = false;
   // Relative acceleration bound outside contacts: gravity plus cloth friction, generously twice |g|. A pair pushed
   // harder by third balls may start touching inside a step; the simulation then cuts the step at the onset.
   const double a_free = 2.0 * glm::length(model.options.gravity);
@@ -247,15 +247,20 @@ double time_to_possible_contact(const Model& model, const State& state, const do
     const Vec3 d0 = position(x, i) - position(x, j), v = velocity(x, i) - velocity(x, j);
     const double ri = model.balls[i].radius, rj = model.balls[j].radius, dist = glm::length(d0);
     if (dist <= ri + rj) {  // already touching: the contact force is resolved by error control
-      if (step && may_release(*cache.ball_ball, ri + rj - dist, -glm::dot(v, d0) / dist))
+      if (!step) return;
+      step->near.emplace_back(i, j);
+      if (may_release(*cache.ball_ball, ri + rj - dist, -glm::dot(v, d0) / dist))
         step->pushing.emplace_back(std::min(i, j), std::max(i, j));
       return;
     }
     // Relative motion: balls moving together, as a broken rack does, do not hold each other's steps back.
     const double t = pair_contact_time(d0, v, ri + rj - margin, a, h);
     best = std::min(best, t);
-    if (step && dist - ri - rj >= kTouch && t <= horizon) step->separated.emplace_back(std::min(i, j), std::max(i, j));
+    if (!step) return;
+    if (dist - ri - rj >= kTouch && t <= horizon) step->separated.emplace_back(std::min(i, j), std::max(i, j));
+    else step->near.emplace_back(i, j);
   });
+  if (step) step->near_known = true;
   sort();
   return best;
 }

@@ -26,6 +26,11 @@ using ContactKey = std::pair<int, int>;
 struct StepContacts {
   std::vector<ContactKey> separated;  // separated by kTouch or more at the start: left out of the step
   std::vector<ContactKey> pushing;    // pushing at the start, but near the clamp: not clamped in the step
+  // With near_known: every other pair of balls that the step's cap (time_to_possible_contact) found close enough to
+  // touch within the step, as (left, right) in its sweep. No other pair can touch in the step, so the right-hand side
+  // checks these instead of sweeping again on each of its six calls a step.
+  std::vector<ContactKey> near;
+  bool near_known = false;
 };
 
 struct Contact {

@@ -85,13 +85,15 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
     });
   }
   // Ball against ball: n points from j to i; A's contact point is at -R_i n, B's at +R_j n.
-  overlapping_pairs(model, state, x, cache, 0.0, with_inactive);
+  const bool near_known = cache.step.near_known && !with_inactive;
+  if (!near_known) overlapping_pairs(model, state, x, cache, 0.0, with_inactive);
   const ContactMaterial& bb = *cache.ball_ball;
-  for (const auto& [i, j] : cache.pairs) {
+  for (const auto& [i, j] : near_known ? cache.step.near : cache.pairs) {
     const int a = std::min(i, j), b = std::max(i, j);
     if ((state.sleeping(i) && state.sleeping(j) && !with_inactive) || listed(cache.step.separated, a, b)) continue;
     const double ri = model.balls[i].radius, rj = model.balls[j].radius;
     const Vec3 d = position(x, i) - position(x, j);
+    if (near_known && (glm::dot(d, d) >= (ri + rj) * (ri + rj) || !state.in_play[i] || !state.in_play[j])) continue;
     const double dist = glm::length(d);
     const Vec3 nrm = dist > 0 ? d / dist : kUp;
     const Vec3 wi = spin(x, i), wj = spin(x, j);

@@ -30,6 +30,9 @@ class Dynamics {
   // in, so that the caller's lists keep their storage and hold the last step's afterwards.
   void swap_step(StepContacts& step) { std::swap(cache_.step, step); }
   const StepContacts& step() const { return cache_.step; }
+  // The balls' flags changed since the step's lists were made (one woke, one left play): the right-hand side sweeps
+  // for touching pairs again until the next step's lists come.
+  void sweep_again() { cache_.step.near_known = false; }
 
  private:
   void apply_rods(const StateVector& x, StateVector& dxdt) const;

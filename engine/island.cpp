@@ -85,6 +85,7 @@ double Island::energy() {
 }
 
 void Island::restart() {
+  dynamics_.sweep_again();
   span_.f1.resize(span_.x1.size());
   dynamics_(span_.x1, span_.f1, span_.t1);
   span_.x0 = span_.x1;

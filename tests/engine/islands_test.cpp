@@ -110,6 +110,43 @@ TEST(Islands, BreakMissesNoContactBetweenIslands) {
   EXPECT_LT(deepest, 2e-3);
 }
 
+// A step's right-hand side looks only at the pairs its cap listed (StepContacts::near, contacts.hpp). That holds only
+// if no other pair touches within the step: over the break's first 0.3 s (the rack, then balls spreading past each
+// other), every pair that overlaps anywhere on a step's interpolant is listed as near or as left out of the step, by
+// the cap run again at the step's start over the step's length.
+TEST(Islands, StepListsHoldEveryPairThatTouchesInTheStep) {
+  auto sim = simulate(load_scene(preset("break.json")));
+  long steps = 0, touching = 0;
+  sim->set_observer([&](const Island& island) {
+    const StepSpan& span = island.span();
+    const State& flags = island.flags_at(span.t0);
+    StepContacts lists;
+    ContactCache cache(island.model());
+    time_to_possible_contact(island.model(), flags, span.x0.data(), span.t1 - span.t0, cache, &lists);
+    if (!lists.near_known) return;  // the step did not use the lists either
+    ++steps;
+    StateVector x;
+    for (int k = 0; k <= 8; ++k) {
+      span.interpolate(span.t0 + (span.t1 - span.t0) * k / 8, x);
+      for (int i = 0; i < flags.ball_count(); ++i)
+        for (int j = i + 1; j < flags.ball_count(); ++j) {
+          if (!flags.in_play[i] || !flags.in_play[j] || (flags.sleeping(i) && flags.sleeping(j))) continue;
+          if (glm::length(position(x, i) - position(x, j)) >= 2 * kR) continue;
+          ++touching;
+          auto has = [&](const std::vector<ContactKey>& keys, ContactKey key) {
+            return std::find(keys.begin(), keys.end(), key) != keys.end();
+          };
+          EXPECT_TRUE(has(lists.near, {i, j}) || has(lists.near, {j, i}) || has(lists.separated, {i, j}))
+              << "balls " << island.model().balls[i].id << " and " << island.model().balls[j].id << " touch at t = "
+              << span.t0 + (span.t1 - span.t0) * k / 8 << " s, in no list of the step from " << span.t0 << " s";
+        }
+    }
+  });
+  advance_to(*sim, 0.3);
+  std::printf("[ islands  ] %ld steps with pair lists, %ld touching pairs checked\n", steps, touching);
+  EXPECT_GT(touching, 1000);
+}
+
 // Two shots on opposite sides of the table, each a cue ball into an object ball: with islands each pair steps on
 // its own, and every ball ends where the single system of all four ends, to the tolerance's level.
 TEST(Islands, SplitShotEndsWhereTheSingleSystemEnds) {
