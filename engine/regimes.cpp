@@ -224,6 +224,12 @@ bool Regimes::update(State& state, StateVector& x, double dt) {
     touching_[j].push_back(i);
   }
   const bool slept = update_sleep(state, x, dt);
+  // Each awake ball's bed, once for both regimes: a ball that enters rolling below moves by its snap, but it touches
+  // nothing else within contact_margin, so no other ball's answer changes.
+  bed_.assign(n, Support{});
+  const bool regimes = (model_.options.rolling_regime || model_.options.sliding_regime) && is_adaptive(model_.integrator.method);
+  for (int i = 0; i < n && regimes; ++i)
+    if (state.active(i)) bed_[i].collider = only_on_bed(x, i, bed_[i].normal, bed_[i].height);
   const bool rolled = update_rolling(state, x);
   const bool slid = update_sliding(state, x);
   return slept || rolled || slid;
@@ -232,13 +238,11 @@ bool Regimes::update(State& state, StateVector& x, double dt) {
 bool Regimes::update_rolling(State& state, StateVector& x) {
   bool changed = false;
   for (int i = 0; i < state.ball_count(); ++i) {
-    Vec3 n;
-    double height;
     // Only adaptive methods: they end a step where a contact begins, so a rolling ball never meets a force its
     // closed form ignores for longer than that; a fixed step would let it ignore an impact for a whole step.
-    const int bed = model_.options.rolling_regime && is_adaptive(model_.integrator.method) && state.active(i)
-                        ? only_on_bed(x, i, n, height)
-                        : -1;
+    const int bed = model_.options.rolling_regime ? bed_[i].collider : -1;
+    const Vec3& n = bed_[i].normal;
+    const double height = bed_[i].height;
     const bool eligible = bed >= 0;
     if (state.rolling(i) && !eligible) {
       state.rolling_on[i] = -1;
@@ -273,12 +277,10 @@ bool Regimes::update_sliding(State& state, StateVector& x) {
   const double g = glm::length(model_.options.gravity);
   for (int i = 0; i < state.ball_count(); ++i) {
     if (state.rolling(i)) continue;  // rolling supersedes sliding (update_rolling cleared the flag)
-    Vec3 n;
-    double height;
     // Adaptive methods only, as for rolling: a step ends where a contact begins.
-    const int bed = model_.options.sliding_regime && is_adaptive(model_.integrator.method) && state.active(i)
-                        ? only_on_bed(x, i, n, height)
-                        : -1;
+    const int bed = model_.options.sliding_regime ? bed_[i].collider : -1;
+    const Vec3& n = bed_[i].normal;
+    const double height = bed_[i].height;
     if (state.sliding(i)) {
       if (bed != state.sliding_on[i]) {
         state.sliding_on[i] = -1;  // the full model takes over at the sink, with no normal motion: its equilibrium

@@ -57,6 +57,12 @@ class Regimes {
   std::vector<uint8_t> resting_, seen_;  // update_sleep's work lists, kept to spare an allocation per step
   std::vector<int> stack_, group_;
   std::vector<double> sink_;  // m: each ball's static sink into each plane-like collider (ball-major, cache_.plane_like)
+  struct Support {
+    int collider = -1;  // only_on_bed's answer, with its normal and height
+    Vec3 normal{0.0};
+    double height = 0;
+  };
+  std::vector<Support> bed_;  // each ball's, worked out once an update
 };
 
 // Where a ball can be while it touches nothing but its bed: within accel t^2 / 2 + jump t + slack of p + v t for the
