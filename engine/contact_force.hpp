@@ -77,3 +77,5 @@ inline Vec3 contact_torque(const ContactForce& f, const Vec3& n, double r) {
 }
 
 }  // namespace shotlab
+
+#include "contact_force_impl.hpp"

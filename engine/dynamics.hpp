@@ -1,7 +1,7 @@
 // THE right-hand side of the ODE (MODEL.md eq. 3.1-3.2): given the state, the time derivative of every ball's
 // position, velocity and angular velocity. Force sources, each in one place:
 //   gravity ............ here (accumulate_gravity)
-//   contacts ........... contact_force.cpp (one law for ball-ball, cloth, cushions, any collider),
+//   contacts ........... contact_force_impl.hpp (one law for ball-ball, cloth, cushions, any collider),
 //                        found by contacts.hpp
 //   rods ............... here (apply_rods): constraint forces, computed last because they cancel the others
 //   rolling regime ..... regimes.cpp (rolling_derivative): closed-form rolling on the bed, replacing the above for

@@ -52,7 +52,7 @@ struct Options {
   Vec3 gravity{0.0, -9.81, 0.0};  // m/s^2
   double friction_sharpness = 1000.0;  // k of fricstep(k s), s/m: friction reaches full strength at 1/k m/s of slip
   double friction_rate_limit = 2e5;    // 1/s: the fastest a smoothed friction term may relax a slip; under heavy
-                                       // load the band widens instead (contact_force.cpp). 0: no limit
+                                       // load the band widens instead (contact_force.hpp). 0: no limit
   double rest_speed = 1e-3;            // m/s: below this a ball (and R|w|) counts as stopped / rolling without slip
   double contact_margin = 1e-6;        // m: a step may bring a still separated pair this far into contact
   double sleep_time = 0.2;             // s a group of touching balls must rest before it sleeps; 0: never

@@ -1,4 +1,4 @@
-// The friction rate limit (Options::friction_rate_limit, contact_force.cpp): under heavy load the smoothing band
+// The friction rate limit (Options::friction_rate_limit, contact_force.hpp): under heavy load the smoothing band
 // widens so that a stuck contact does not force 0.1 us steps. It must leave the outcome of hard contacts, where
 // friction sticks and slips within milliseconds, as it was: compared here with the same shots run without a limit.
 #include <cstdio>
