@@ -65,6 +65,12 @@ Motion classify(const Model& model, const ContactCache& cache, const State& stat
   return no_slip ? Motion::Rolling : Motion::Sliding;
 }
 
+const double* EventDetector::balls_at(const StepSpan& span, double t, const Key& key) {
+  span.interpolate_ball(t, scratch_, key.first);
+  if (key.second >= 0) span.interpolate_ball(t, scratch_, key.second);
+  return scratch_.data();
+}
+
 void EventDetector::collect(const State& state, const double* x, std::vector<Key>& keys) {
   const int n = state.ball_count();
   // The simulation asks first_contact_change and then scan about the same accepted state: collect it once.
@@ -123,8 +129,7 @@ double EventDetector::first(const StepSpan& span, const std::vector<ContactKey>&
   for (const Key& k : keys) {
     if (!(this->*changed)(k, span.x1.data())) continue;
     at = std::min(at, bisect(span.t0, span.t1, [&](double s) {
-                    span.interpolate(s, scratch_);
-                    return (this->*changed)(k, scratch_.data());
+                    return (this->*changed)(k, balls_at(span, s, k));
                   }, resolution));
   }
   return at;
@@ -168,8 +173,7 @@ EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span,
   auto locate = [&](const Key& k, const StateVector& apart, bool begins, double& at) {
     if (depth(k, apart.data()) > -kTouch) return;
     at = std::min(at, bisect(span.t0, span.t1, [&](double s) {
-                    span.interpolate(s, scratch_);
-                    return (depth(k, scratch_.data()) > kTouch) == begins;
+                    return (depth(k, balls_at(span, s, k)) > kTouch) == begins;
                   }));
   };
   for (const Key& k : begun_) locate(k, span.x0, true, first.begin);
@@ -179,10 +183,7 @@ EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span,
 
 void EventDetector::scan(const StepSpan& span, const State& state, const StepContacts& kept, std::vector<Event>& events,
                          std::vector<Exit>& exits) {
-  auto at = [&](double t) -> const double* {
-    span.interpolate(t, scratch_);
-    return scratch_.data();
-  };
+  auto ball_at = [&](double t, int i) { return balls_at(span, t, Key{i, -1}); };
   const size_t first_new = events.size();
 
   // Balls leaving play: the centre falls a radius below the bed (y = 0), through a pocket or off the table.
@@ -190,8 +191,8 @@ void EventDetector::scan(const StepSpan& span, const State& state, const StepCon
     if (!state.active(i)) continue;
     const double r = model_.balls[i].radius;
     if (span.x1[9 * i + 1] >= -r) continue;
-    const double t = bisect(span.t0, span.t1, [&](double s) { return at(s)[9 * i + 1] < -r; });
-    const Vec3 p = position(at(t), i);
+    const double t = bisect(span.t0, span.t1, [&](double s) { return ball_at(s, i)[9 * i + 1] < -r; });
+    const Vec3 p = position(ball_at(t, i), i);
     std::string kind = "off_table", where;
     for (const Pocket& pk : model_.pockets) {
       const Vec3 d = p - pk.center;
@@ -205,11 +206,12 @@ void EventDetector::scan(const StepSpan& span, const State& state, const StepCon
   // Contacts that began or ended: set difference of sorted key lists, each change located on its own depth.
   changes(state, span.x1.data());
   std::vector<Key>& now = now_;
+  auto touching_at = [&](const Key& k, double s) { return depth(k, balls_at(span, s, k)) > kTouch; };
   for (const Key& k : begun_)
-    events.push_back({bisect(span.t0, span.t1, [&](double s) { return depth(k, at(s)) > kTouch; }), "contact_begin",
+    events.push_back({bisect(span.t0, span.t1, [&](double s) { return touching_at(k, s); }), "contact_begin",
                       {model_.balls[k.first].id, body_name(k.second)}});
   for (const Key& k : ended_)
-    events.push_back({bisect(span.t0, span.t1, [&](double s) { return depth(k, at(s)) <= kTouch; }), "contact_end",
+    events.push_back({bisect(span.t0, span.t1, [&](double s) { return !touching_at(k, s); }), "contact_end",
                       {model_.balls[k.first].id, body_name(k.second)}});
   // A step that ends where a contact left out of it touches (first_touch) ends at the contact's onset, at zero
   // depth: the next step may carry the whole contact (a glancing one lasts 50 us), so it begins here.
@@ -227,7 +229,7 @@ void EventDetector::scan(const StepSpan& span, const State& state, const StepCon
     const Motion m1 = classify(model_, cache_, state, span.x1.data(), i);
     if (m1 == motion_[i]) continue;
     const Motion m0 = motion_[i];
-    const double t = bisect(span.t0, span.t1, [&](double s) { return classify(model_, cache_, state, at(s), i) != m0; });
+    const double t = bisect(span.t0, span.t1, [&](double s) { return classify(model_, cache_, state, ball_at(s, i), i) != m0; });
     events.push_back({t, transition_kind(m0, m1), {model_.balls[i].id}});
     motion_[i] = m1;
   }

@@ -76,6 +76,9 @@ class EventDetector {
   double first(const StepSpan& span, const std::vector<ContactKey>& keys, double resolution,
                bool (EventDetector::*changed)(const Key&, const double*) const);
   std::string body_name(int other) const;
+  // The key's balls (one, or two for a ball pair) at time t of the span, in scratch_; the other balls' numbers there
+  // are stale. What every bisection's test looks at.
+  const double* balls_at(const StepSpan& span, double t, const Key& key);
 
   const Model& model_;
   ContactCache cache_;

@@ -3,6 +3,7 @@
 // parabolic sliding, linear deceleration, linear spin decay), which a cubic reproduces exactly; inside contacts the
 // steps are short. Error O(h^4) in general.
 #pragma once
+#include <algorithm>
 #include "state.hpp"
 
 namespace shotlab {
@@ -13,16 +14,27 @@ struct StepSpan {
 
   // State at t in [t0, t1], written to out (resized).
   void interpolate(double t, StateVector& out) const {
-    const double h = t1 - t0;
     out.resize(x0.size());
+    interpolate(t, out, 0, out.size());
+  }
+  // Only ball i's numbers (9 from 9 i) at t, written into out (sized for the whole state; the rest left as it is): a
+  // bisection on one contact of a 16-ball island needs two balls, not all of them.
+  void interpolate_ball(double t, StateVector& out, int i) const {
+    out.resize(x0.size());
+    interpolate(t, out, 9 * static_cast<size_t>(i), 9 * static_cast<size_t>(i) + 9);
+  }
+
+ private:
+  void interpolate(double t, StateVector& out, size_t begin, size_t end) const {
+    const double h = t1 - t0;
     if (h <= 0) {
-      out = x1;
+      std::copy(x1.begin() + begin, x1.begin() + end, out.begin() + begin);
       return;
     }
     const double s = (t - t0) / h, s2 = s * s, s3 = s2 * s;
     // Hermite basis: h00 = 2s^3 - 3s^2 + 1, h10 = s^3 - 2s^2 + s, h01 = -2s^3 + 3s^2, h11 = s^3 - s^2.
     const double h00 = 2 * s3 - 3 * s2 + 1, h10 = (s3 - 2 * s2 + s) * h, h01 = -2 * s3 + 3 * s2, h11 = (s3 - s2) * h;
-    for (size_t k = 0; k < out.size(); ++k) out[k] = h00 * x0[k] + h10 * f0[k] + h01 * x1[k] + h11 * f1[k];
+    for (size_t k = begin; k < end; ++k) out[k] = h00 * x0[k] + h10 * f0[k] + h01 * x1[k] + h11 * f1[k];
   }
 };
 
