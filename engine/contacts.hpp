@@ -79,6 +79,7 @@ struct ContactCache {
   // Broad phase: awake balls sorted by the left end of their x extent on every call; sleepers sorted once per change
   // of who sleeps (they do not move), so that a thousand resting balls cost a binary search, not a sweep.
   std::vector<int> awake;
+  std::vector<int> strip_start, strip_order, strip_fill;  // sweep_strips' buckets (contacts_impl.hpp)
   std::vector<int> sleepers;
   std::vector<double> sleeper_left;  // x - R of each sleeper, ascending
   std::vector<uint8_t> sleep_key;    // in_play and asleep flags the sleeper list was built for
@@ -87,7 +88,8 @@ struct ContactCache {
 };
 
 // Calls fn(i, j) for every pair of balls in play, at least one of them awake, whose x extents come within `reach`
-// (m) of each other; with `sleeping_pairs`, also pairs of two sleepers. The candidates of sweep-and-prune along x:
+// (m) of each other (for 64 awake balls or more: whose x and z extents both do); with `sleeping_pairs`, also pairs of
+// two sleepers. The candidates of sweep-and-prune along x, in strips along z from 64 awake balls on (sweep_strips):
 // O(awake log awake + candidates) when the caller passes the list of awake balls in play (`awake`), plus a pass over
 // the balls' flags without it.
 template <class Fn>
