@@ -32,7 +32,7 @@ void Shot::observe(const Island& island) {
       touching = in_play[i] && in_play[j] &&
                  glm::length(position(span.x1, i) - position(span.x1, j)) < balls[i].radius + balls[j].radius;
   if (!touching) return;
-  const State probe{span.t1, span.x1, in_play, {}, {}};
+  const State probe{span.t1, span.x1, in_play, {}, {}, {}, {}};
   double force = 0;
   for (const Contact& c : contacts(island.model(), probe))
     if (c.other_ball >= 0) force = std::max(force, c.force.normal);
