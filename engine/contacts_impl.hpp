@@ -20,7 +20,7 @@ void sleepers_near(const Model& model, const double* x, const ContactCache& cach
 // z extents come within `reach` lie in the same strip or in neighbouring ones (a strip is at least 2 max_radius +
 // reach high). A ball then meets the balls around it, not the whole strip across the field that its x extent cuts:
 // on balls spread over an area the sweep along x alone finds about 0.3 sqrt(n) candidates a ball. False when a
-// position is not finite (the plain sweep then takes over).
+// position or the field's extent is not finite (the plain sweep then takes over).
 template <class Fn>
 bool sweep_strips(const Model& model, const double* x, ContactCache& cache, double reach, Fn&& fn) {
   const std::vector<int>& awake = cache.awake;
@@ -31,11 +31,12 @@ bool sweep_strips(const Model& model, const double* x, ContactCache& cache, doub
     if (!std::isfinite(x[9 * i + 2]) || !std::isfinite(x[9 * i])) return false;
     lo = std::min(lo, x[9 * i + 2]), hi = std::max(hi, x[9 * i + 2]);
   }
+  if (!std::isfinite(hi - lo)) return false;
   // No more strips than balls, however far apart they are.
   const double height = std::max(2 * cache.max_radius + reach, (hi - lo) / static_cast<double>(awake.size()));
   auto strip = [&](int i) { return static_cast<size_t>((x[9 * i + 2] - lo) / height); };
   const size_t strips = static_cast<size_t>((hi - lo) / height) + 1;
-  std::vector<int>&start = cache.strip_start, &order = cache.strip_order, &fill = cache.strip_fill;
+  std::vector<int> &start = cache.strip_start, &order = cache.strip_order, &fill = cache.strip_fill;
   start.assign(strips + 1, 0);
   for (int i : awake) ++start[strip(i) + 1];
   for (size_t k = 0; k < strips; ++k) start[k + 1] += start[k];
