@@ -225,7 +225,9 @@ bool Regimes::update(State& state, StateVector& x, double dt) {
   }
   const bool slept = update_sleep(state, x, dt);
   // Each awake ball's bed, once for both regimes: a ball that enters rolling below moves by its snap, but it touches
-  // nothing else within contact_margin, so no other ball's answer changes.
+  // nothing else within contact_margin, so no other ball's answer changes. Only adaptive methods: they end a step
+  // where a contact begins, so a ball in a regime never meets a force its closed form ignores for longer than that;
+  // a fixed step would let it ignore an impact for a whole step.
   bed_.assign(n, Support{});
   const bool regimes = (model_.options.rolling_regime || model_.options.sliding_regime) && is_adaptive(model_.integrator.method);
   for (int i = 0; i < n && regimes; ++i)
@@ -238,8 +240,6 @@ bool Regimes::update(State& state, StateVector& x, double dt) {
 bool Regimes::update_rolling(State& state, StateVector& x) {
   bool changed = false;
   for (int i = 0; i < state.ball_count(); ++i) {
-    // Only adaptive methods: they end a step where a contact begins, so a rolling ball never meets a force its
-    // closed form ignores for longer than that; a fixed step would let it ignore an impact for a whole step.
     const int bed = model_.options.rolling_regime ? bed_[i].collider : -1;
     const Vec3& n = bed_[i].normal;
     const double height = bed_[i].height;
@@ -277,7 +277,6 @@ bool Regimes::update_sliding(State& state, StateVector& x) {
   const double g = glm::length(model_.options.gravity);
   for (int i = 0; i < state.ball_count(); ++i) {
     if (state.rolling(i)) continue;  // rolling supersedes sliding (update_rolling cleared the flag)
-    // Adaptive methods only, as for rolling: a step ends where a contact begins.
     const int bed = model_.options.sliding_regime ? bed_[i].collider : -1;
     const Vec3& n = bed_[i].normal;
     const double height = bed_[i].height;
