@@ -82,8 +82,9 @@ Errors errors(const BenchCase& c, const RunResult& run, const RunResult& ref) {
   // Velocity errors relative to the fastest ball at the start; the cradle starts at rest, so it falls back on the
   // fastest ball of the reference's end state.
   double scale = ref.speed_scale;
-  for (size_t i = 0; scale == 0 && i < ref.radius.size(); ++i)
-    scale = std::max(scale, glm::length(velocity(ref.x, static_cast<int>(i))));
+  if (scale == 0)
+    for (size_t i = 0; i < ref.radius.size(); ++i)
+      scale = std::max(scale, glm::length(velocity(ref.x, static_cast<int>(i))));
   for (size_t k = 0; k < run.radius.size(); ++k) {
     const int i = static_cast<int>(k);
     e.position = std::max(e.position, glm::length(position(run.x, i) - position(ref.x, i)) / run.radius[k]);

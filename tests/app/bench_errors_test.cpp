@@ -1,0 +1,57 @@
+// The bench's error measure (app/bench_run.cpp): the figures in docs/bench rest on it, so its scales are pinned here
+// with hand-made end states, not with runs of the engine.
+#include <gtest/gtest.h>
+
+#include "app/bench_run.hpp"
+
+namespace shotlab {
+namespace {
+
+// Two balls of radius 0.03 m at the origin and 1 m along x, at rest; velocities set per test.
+RunResult two_balls() {
+  RunResult r;
+  r.radius = {0.03, 0.03};
+  r.x.assign(2 * kBallDofs, 0.0);
+  set_position(r.x, 1, Vec3{1.0, 0.0, 0.0});
+  r.x0 = r.x;
+  return r;
+}
+
+TEST(BenchErrors, VelocityErrorIsRelativeToTheFastestInitialSpeed) {
+  RunResult ref = two_balls();
+  ref.speed_scale = 2.0;  // m/s
+  set_velocity(ref.x, 0, Vec3{0.5, 0.0, 0.0});
+  RunResult run = ref;
+  set_velocity(run.x, 0, Vec3{0.5, 1e-3, 0.0});
+  set_position(run.x, 1, Vec3{1.0, 0.0, 3e-6});
+  const Errors e = errors(BenchCase{}, run, ref);
+  EXPECT_NEAR(e.velocity, 1e-3 / 2.0, 1e-15);
+  EXPECT_NEAR(e.position, 3e-6 / 0.03, 1e-15);
+}
+
+// A scene that starts at rest (the cradle) measures velocities against the fastest ball at the reference's end,
+// whichever ball that is: here the second, ten times faster than the first.
+TEST(BenchErrors, SceneStartingAtRestUsesTheFastestFinalSpeed) {
+  RunResult ref = two_balls();
+  set_velocity(ref.x, 0, Vec3{0.1, 0.0, 0.0});
+  set_velocity(ref.x, 1, Vec3{0.0, 0.0, -1.0});
+  RunResult run = ref;
+  set_velocity(run.x, 0, Vec3{0.1 + 1e-4, 0.0, 0.0});
+  EXPECT_NEAR(errors(BenchCase{}, run, ref).velocity, 1e-4 / 1.0, 1e-15);
+}
+
+// Undamped head-on hits are measured against the exact swap of the initial velocities, not against the reference.
+TEST(BenchErrors, SwapCasesCompareWithTheExactSwap) {
+  RunResult ref = two_balls();
+  set_velocity(ref.x0, 0, Vec3{2.0, 0.0, 0.0});
+  ref.speed_scale = 2.0;
+  RunResult run = ref;
+  set_velocity(run.x, 1, Vec3{2.0 - 4e-6, 0.0, 0.0});
+  set_velocity(ref.x, 1, Vec3{1.0, 0.0, 0.0});  // a wrong reference must not matter
+  BenchCase swap;
+  swap.swap_exact = true;
+  EXPECT_NEAR(errors(swap, run, ref).velocity, 4e-6 / 2.0, 1e-15);
+}
+
+}  // namespace
+}  // namespace shotlab
