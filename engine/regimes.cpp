@@ -10,11 +10,18 @@ namespace {
 // Balls this close count as touching for waking and grouping sleepers: frozen balls touch at zero depth, give or
 // take round-off.
 constexpr double kTouchSlack = 1e-9;
-// A ball enters the rolling regime once its slip is under this fraction of rest_speed. The smoothed friction has
-// by then done almost all of its work (it decays the slip exponentially, at about 1e4 1/s for k = 1000 s/m, so the
-// last factor 100 costs a millisecond of a few stiff steps), and the snap's difference from the full model stays
-// at the nanometre level instead of 0.1 um.
+// A ball enters the rolling regime once its slip is under entry_slip: 1 % of rest_speed, and no more than 10 times
+// the absolute tolerance. The smoothed friction has by then done almost all of its work: it decays the slip u
+// exponentially, at 1/tau = 3.5 mu g k, about 7e3 1/s for k = 1000 s/m, so the last factor 100 costs a millisecond
+// of a few stiff steps. The snap removes the rest at once and leaves a lasting difference from the full model in
+// proportion to u (a stun shot at 2 m/s keeps 1.4 % of u in its speed, tests/engine/regimes_test.cpp). The tolerance
+// bound holds that under the integration error at tight tolerances, where the 1 % bound alone stopped the fast
+// path's error at a floor (bench S3, S4 and S6: 7e-9, 6e-8 and 1.5e-7 R at every tolerance below 1e-8).
 constexpr double kEntrySlip = 0.01;
+constexpr double kEntrySlipPerTolerance = 10.0;
+double entry_slip(const Model& model) {  // m/s
+  return std::min(kEntrySlip * model.options.rest_speed, kEntrySlipPerTolerance * model.integrator.abs_tol);
+}
 // Speeds (m/s) this small are round-off, not motion: below every tolerance an integrator is run at.
 constexpr double kDeadTail = 1e-12;
 // m/s: a rolling ball this slow stops (settle_rolling).
@@ -101,11 +108,11 @@ std::optional<FreePath> free_path(const Model& model, const State& state, const 
   if (!state.in_play[i]) return std::nullopt;
   if (state.sleeping(i)) return FreePath{position(x, i), Vec3{0.0}, 0.0, 0.0, 0.0, std::numeric_limits<double>::infinity()};
   if (!state.rolling(i) && !state.sliding(i)) return std::nullopt;
-  // The velocity jumps a path may take, summed: the rolling entry removes a slip under kEntrySlip rest_speed, 2/7 of it
+  // The velocity jumps a path may take, summed: the rolling entry removes a slip under entry_slip, 2/7 of it
   // from the velocity (update_rolling); the stop cut (settle_rolling); falling asleep zeroes a velocity under
   // rest_speed (update_sleep).
   const double rest = model.options.rest_speed;
-  const double jump = 2.0 / 7.0 * kEntrySlip * rest + kStopSpeed + (model.options.sleep_time > 0 ? rest : 0.0);
+  const double jump = 2.0 / 7.0 * entry_slip(model) + kStopSpeed + (model.options.sleep_time > 0 ? rest : 0.0);
   // Up to free_for the ball may come contact_margin into a collider (collider_contact_time), which pushes it back by
   // at most that much.
   return FreePath{position(x, i), velocity(x, i), free_acceleration(model, state, cache, i), jump,
@@ -249,10 +256,10 @@ bool Regimes::update_rolling(State& state, StateVector& x) {
       changed = true;
     } else if (state.rolling(i)) {
       changed = settle_rolling(x, i, n) || changed;
-    } else if (!state.rolling(i) && eligible && slip_below(x, i, n, kEntrySlip * model_.options.rest_speed) &&
+    } else if (!state.rolling(i) && eligible && slip_below(x, i, n, entry_slip(model_)) &&
                std::abs(glm::dot(velocity(x, i), n)) < model_.options.rest_speed) {
       // Snap onto the constraint: height at the sink depth, no normal velocity, and the remaining slip u (under
-      // 1 % of rest_speed by the entry condition) removed the way cloth friction removes it: by a tangential impulse J at
+      // entry_slip by the entry condition) removed the way cloth friction removes it: by a tangential impulse J at
       // the contact point r = -R n. Then du = J/m + R n x ((r x J)/I) = J/m (1 + m R^2/I) = 3.5 J/m, so
       // J = -m u / 3.5: the velocity takes 2/7 of the correction, the spin the rest, as in a real stun-to-roll.
       const double r = model_.balls[i].radius, mass = model_.balls[i].mass;
@@ -314,7 +321,7 @@ bool Regimes::update_sliding(State& state, StateVector& x) {
 // entry threshold (it does not act on the rolling path at all), the speed below 1e-7 m/s (the distance still to
 // roll, v / (150 1/s), is under 1 nm).
 bool Regimes::settle_rolling(StateVector& x, int i, const Vec3& n) const {
-  const double stop_turning = kEntrySlip * model_.options.rest_speed, r = model_.balls[i].radius;
+  const double stop_turning = entry_slip(model_), r = model_.balls[i].radius;
   const Vec3 v = velocity(x, i), w = spin(x, i);
   const double speed = glm::length(v), wn = glm::dot(w, n);
   // Tails already at round-off (1e-12 m/s and below) are left alone: cutting them changes nothing but would restart

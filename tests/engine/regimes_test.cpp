@@ -84,6 +84,34 @@ TEST(Regimes, SlidingBallEndsWhereTheFullModelEnds) {
   EXPECT_LT(steps * 5, steps_full * 4);
 }
 
+// The rolling entry snaps away the slip that is left (under 1 % of rest_speed and under 10 abs_tol), which leaves a
+// lasting difference from the full model in proportion to it. That must stay below the integration error at every
+// tolerance: a stun shot at 2 m/s, sliding into rolling at 0.29 s and rolling on to 0.6 s, ends as close to the
+// full model at 1e-13 on the fast path as on the full model, at 1e-8 and at 1e-11. With the 1 % bound alone (a slip
+// of 1e-5 m/s snapped away) the fast path's error was 6.8e-8 at 1e-8 and 1.4e-7 at 1e-11, measured.
+TEST(Regimes, RollingEntryErrorFallsWithTheTolerance) {
+  const nlohmann::json doc = cloth_scene({{{"id", "cue"}, {"position", {0, kR, 0}}, {"velocity", {2.0, 0, 0}}}});
+  auto end = [&](bool fast, double tol) {
+    nlohmann::json d = doc;
+    if (!fast) d["model"] = {{"rolling_regime", false}, {"sliding_regime", false}, {"sleep_time", 0}};
+    d["integrator"]["abs_tol"] = d["integrator"]["rel_tol"] = tol;
+    auto sim = simulate(scene(d));
+    advance_to(*sim, 0.6);
+    EXPECT_EQ(sim->state().rolling(0), fast);
+    return sim->state().x;
+  };
+  const StateVector ref = end(false, 1e-13);
+  for (double tol : {1e-8, 1e-11}) {
+    auto err = [&](const StateVector& x) {
+      return std::max(glm::length(position(x, 0) - position(ref, 0)), glm::length(velocity(x, 0) - velocity(ref, 0)));
+    };
+    const double fast = err(end(true, tol)), full = err(end(false, tol));
+    std::printf("[ entry    ] tolerance %.0e: error against the full model at 1e-13: fast path %.2e, full model %.2e "
+                "(m and m/s)\n", tol, fast, full);
+    EXPECT_LT(fast, 3 * full + 1e-3 * tol);
+  }
+}
+
 // Steps of a ball in a closed-form regime end where a friction term reaches the edge of its smoothing band (1/k =
 // 1 mm/s of slip, speed or contact-patch speed at k = 1000 s/m). By MODEL.md's closed forms on the cloth (mu = 0.2,
 // mu_r = 0.01, mu_sp = 0.0117): slip falls at 7/2 mu g = 6.867 m/s^2, a rolling ball's speed at mu_r g =
