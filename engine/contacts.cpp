@@ -173,6 +173,12 @@ namespace {
 // A contact deeper than kTouch (m) closing at `rate` (m/s) that pushes, but with less than half its elastic force: it is
 // separating and may stop pushing within a step. Contacts further from the clamp stay off StepContacts::pushing, which
 // costs a check of every listed contact on every step (a resting ball's bed contact, a rack's every pair).
+void note_onset(StepContacts& step, const ContactMaterial& m, double speed, double inv_mass) {
+  step.onset = true;
+  const double strength = m.stiffness * std::pow(speed, m.exponent) * inv_mass;
+  if (strength > step.onset_strength) step.onset_strength = strength, step.onset_exponent = m.exponent, step.onset_speed = speed;
+}
+
 bool may_release(const ContactMaterial& m, double depth, double rate) {
   if (depth <= kTouch || rate >= 0) return false;  // damping pulls only while the bodies separate
   const double fn = normal_force(m, depth, rate);
@@ -206,6 +212,8 @@ double collider_contact_time(const Model& model, const State& state, const doubl
       if (step && pen.depth <= -kTouch && t <= horizon) step->separated.emplace_back(i, -1 - c);
     }
     if (!step) return;
+    if (std::abs(pen.depth) < kTouch && glm::dot(v, pen.normal) < 0)
+      note_onset(*step, *cache.collider_material[c], -glm::dot(v, pen.normal), cache.inv_mass[i]);
     if (may_release(*cache.collider_material[c], pen.depth, -glm::dot(v, pen.normal))) step->pushing.emplace_back(i, -1 - c);
   });
   // A ball in the rolling or sliding regime ignores its support's geometry: it must not move far over a pocket's edge.
@@ -216,7 +224,8 @@ double collider_contact_time(const Model& model, const State& state, const doubl
 
 double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon,
                                 ContactCache& cache, StepContacts* step) {
-  if (step) step->separated.clear(), step->pushing.clear(), step->near.clear(), step->near_known = false;
+  if (step) step->separated.clear(), step->pushing.clear(), step->near.clear(), step->near_known = false, step->onset = false,
+                     step->onset_strength = 0;
   // Relative acceleration bound outside contacts: gravity plus cloth friction, generously twice |g|. A pair pushed
   // harder by third balls may start touching inside a step; the simulation then cuts the step at the onset.
   const double a_free = 2.0 * glm::length(model.options.gravity);
@@ -249,6 +258,8 @@ double time_to_possible_contact(const Model& model, const State& state, const do
     if (dist <= ri + rj) {  // already touching: the contact force is resolved by error control
       if (!step) return;
       step->near.emplace_back(i, j);
+      if (ri + rj - dist < kTouch && glm::dot(v, d0) < 0)  // just began
+        note_onset(*step, *cache.ball_ball, -glm::dot(v, d0) / dist, std::max(cache.inv_mass[i], cache.inv_mass[j]));
       if (may_release(*cache.ball_ball, ri + rj - dist, -glm::dot(v, d0) / dist))
         step->pushing.emplace_back(std::min(i, j), std::max(i, j));
       return;
@@ -259,6 +270,8 @@ double time_to_possible_contact(const Model& model, const State& state, const do
     if (!step) return;
     if (dist - ri - rj >= kTouch && t <= horizon) step->separated.emplace_back(std::min(i, j), std::max(i, j));
     else step->near.emplace_back(i, j);
+    if (dist - ri - rj < kTouch && glm::dot(v, d0) < 0)  // about to begin
+      note_onset(*step, *cache.ball_ball, -glm::dot(v, d0) / dist, std::max(cache.inv_mass[i], cache.inv_mass[j]));
   });
   if (step) step->near_known = true;
   sort();

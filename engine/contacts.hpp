@@ -31,6 +31,13 @@ struct StepContacts {
   // checks these instead of sweeping again on each of its six calls a step.
   std::vector<ContactKey> near;
   bool near_known = false;
+  // A contact begins at the step's start: within kTouch of zero depth and closing. Its force grows as depth^e (Hertz:
+  // e = 1.5) from there, which the step's error estimate understates (stepper.hpp, onset_underestimate).
+  bool onset = false;
+  // Of the contacts that begin: the largest C v^e / m (C, e: the material's stiffness and exponent, v the closing
+  // speed, m the lighter ball's mass), the coefficient of the velocity change C v^e t^(e+1) / ((e+1) m) at the onset
+  // that no polynomial follows, and that contact's e and v.
+  double onset_strength = 0, onset_exponent = 1.5, onset_speed = 0;
 };
 
 struct Contact {

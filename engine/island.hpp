@@ -48,8 +48,10 @@ class Island {
  public:
   // The balls `balls` (indices into `world`, ascending) as they are in `world_state`, from its time on. `first_step`
   // (s) is the adaptive methods' first trial step; `energy_bound` (J) bounds what any of its balls can ever gain
-  // (partition.hpp: an island touches nothing else, so its energy cannot grow).
-  Island(const Model& world, const State& world_state, std::vector<int> balls, double first_step, double energy_bound);
+  // (partition.hpp: an island touches nothing else, so its energy cannot grow). `onset_factor`: the world's
+  // onset_factor (stepper.hpp), worked out once for all islands.
+  Island(const Model& world, const State& world_state, std::vector<int> balls, double first_step, double energy_bound,
+         double onset_factor);
   Island(const Island&) = delete;
   Island& operator=(const Island&) = delete;
 
@@ -105,6 +107,7 @@ class Island {
   // step failed), or in closed form to t1.
   bool integrate(double dt, double limit, double& t);
   void closed_form_step(double t1);
+  double onset_step();  // s: the first trial from an onset (StepContacts::onset)
   void restart();  // after the system changed (a ball left play): fresh derivative, stepper history, snapshot
   void stop(Status why, std::string message);
   std::string describe_balls(const StateVector& x) const;
@@ -114,6 +117,7 @@ class Island {
   State integ_;  // integrator state at span_.t1 (its in_play is what the right-hand side sees)
   State start_;  // the regime flags at span_.t0 (its x unused)
   Dynamics dynamics_;
+  double onset_growth_;  // onset_factor^(1/5): how much longer the step after an onset may be (integrate)
   std::unique_ptr<Stepper> stepper_;
   EventDetector detector_;
   Regimes regimes_;
@@ -123,6 +127,7 @@ class Island {
   StepSpan trial_;          // the step's trial (buffers reused from step to step)
   StepSpan span_;
   double dt_next_;
+  double onset_exponent_ = 0, onset_coefficient_ = 0;  // onset_error_coefficient of the last onset's exponent
   double deadline_ = 0;
   double energy_bound_;
   long call_steps_ = 0;

@@ -12,7 +12,11 @@
 namespace shotlab {
 
 Simulation::Simulation(Model model, State initial)
-    : model_(std::move(model)), integ_(std::move(initial)), cache_(model_), partition_(model_) {
+    : model_(std::move(model)),
+      onset_factor_(onset_factor(model_)),
+      integ_(std::move(initial)),
+      cache_(model_),
+      partition_(model_) {
   // Balls that start at rest (in their static sink on the bed, nothing moving against them) sleep from the start
   // instead of after sleep_time of integrating a contact that cannot move. The update also sizes the regime flags.
   Regimes(model_).update(integ_, integ_.x, model_.options.sleep_time);
@@ -135,7 +139,7 @@ void Simulation::regroup(double t, std::vector<Island*> group, std::vector<int> 
           for (int i : island->balls())
             if (std::binary_search(balls.begin(), balls.end(), i)) first = std::min(first, island->next_step());
       if (!std::isfinite(first)) first = model_.integrator.initial_step;
-      next.push_back(std::make_unique<Island>(model_, integ_, std::move(balls), first, p.energy[n]));
+      next.push_back(std::make_unique<Island>(model_, integ_, std::move(balls), first, p.energy[n], onset_factor_));
       // While it holds them, its balls are no sleepers to the partitioner (their flags here are as they joined).
       for (int i : next.back()->balls()) integ_.asleep[i] = 0;
     }

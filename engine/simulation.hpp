@@ -62,6 +62,7 @@ class Simulation {
   void stop(Status why, std::string message);
 
   Model model_;
+  double onset_factor_;  // of the stepper (stepper.hpp), for every island
   State integ_;  // balls in no island as they are; the others as their island last left or joined them
   State state_;  // the state at the caller's clock, interpolated
   ContactCache cache_;  // motion states of the whole scene

@@ -18,7 +18,7 @@ class RosenbrockStepper final : public Stepper {
 
  public:
   RosenbrockStepper(double atol, double rtol) : atol_(atol), rtol_(rtol), controller_(std::make_unique<Controller>(atol, rtol)) {}
-  bool try_step(Dynamics& f, StateVector& x, StateVector& dxdt, double& t, double& dt) override {
+  bool try_step(Dynamics& f, StateVector& x, StateVector& dxdt, double& t, double& dt, bool) override {
     Vector xu(x.size());
     std::copy(x.begin(), x.end(), xu.begin());
     auto system = [&](const Vector& in, Vector& out, double time) {
