@@ -170,15 +170,20 @@ double pair_contact_time(const Vec3& d0, const Vec3& v, double reach, double a, 
 
 namespace {
 
-// A contact deeper than kTouch (m) closing at `rate` (m/s) that pushes, but with less than half its elastic force: it is
-// separating and may stop pushing within a step. Contacts further from the clamp stay off StepContacts::pushing, which
-// costs a check of every listed contact on every step (a resting ball's bed contact, a rack's every pair).
+// A contact of material m begins at the step's start, closing at `speed` (m/s); inv_mass: 1/kg of the lighter body.
+// The step keeps the strongest onset (StepContacts::onset_strength).
 void note_onset(StepContacts& step, const ContactMaterial& m, double speed, double inv_mass) {
   step.onset = true;
   const double strength = m.stiffness * std::pow(speed, m.exponent) * inv_mass;
-  if (strength > step.onset_strength) step.onset_strength = strength, step.onset_exponent = m.exponent, step.onset_speed = speed;
+  if (strength <= step.onset_strength) return;
+  step.onset_strength = strength;
+  step.onset_exponent = m.exponent;
+  step.onset_speed = speed;
 }
 
+// A contact deeper than kTouch (m) closing at `rate` (m/s) that pushes, but with less than half its elastic force: it is
+// separating and may stop pushing within a step. Contacts further from the clamp stay off StepContacts::pushing, which
+// costs a check of every listed contact on every step (a resting ball's bed contact, a rack's every pair).
 bool may_release(const ContactMaterial& m, double depth, double rate) {
   if (depth <= kTouch || rate >= 0) return false;  // damping pulls only while the bodies separate
   const double fn = normal_force(m, depth, rate);
@@ -224,8 +229,8 @@ double collider_contact_time(const Model& model, const State& state, const doubl
 
 double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon,
                                 ContactCache& cache, StepContacts* step) {
-  if (step) step->separated.clear(), step->pushing.clear(), step->near.clear(), step->near_known = false, step->onset = false,
-                     step->onset_strength = 0;
+  if (step) *step = StepContacts{std::move(step->separated), std::move(step->pushing), std::move(step->near)};
+  if (step) step->separated.clear(), step->pushing.clear(), step->near.clear();
   // Relative acceleration bound outside contacts: gravity plus cloth friction, generously twice |g|. A pair pushed
   // harder by third balls may start touching inside a step; the simulation then cuts the step at the onset.
   const double a_free = 2.0 * glm::length(model.options.gravity);
