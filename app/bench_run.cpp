@@ -85,6 +85,7 @@ Errors errors(const BenchCase& c, const RunResult& run, const RunResult& ref) {
   if (scale == 0)
     for (size_t i = 0; i < ref.radius.size(); ++i)
       scale = std::max(scale, glm::length(velocity(ref.x, static_cast<int>(i))));
+  if (scale == 0) scale = 1.0;  // m/s: nothing ever moved; the velocities are compared as they are
   for (size_t k = 0; k < run.radius.size(); ++k) {
     const int i = static_cast<int>(k);
     e.position = std::max(e.position, glm::length(position(run.x, i) - position(ref.x, i)) / run.radius[k]);

@@ -261,16 +261,15 @@ void Island::closed_form_step(double t1) {
 }
 
 // s: the step from an onset (StepContacts::onset) over which the part of the error the onset's force alone causes
-// comes to the tolerance of a velocity at the closing speed: that error is coefficient k h^(e+1) (stepper.hpp,
-// onset_error_coefficient) with k = onset_strength.
-double Island::onset_step() {
+// comes to `tolerance` (m/s): that error is coefficient k h^(e+1) (stepper.hpp, onset_error_coefficient) with
+// k = onset_strength.
+double Island::onset_step(double tolerance) {
   const StepContacts& s = dynamics_.step();
   if (s.onset_exponent != onset_exponent_) {
     onset_exponent_ = s.onset_exponent;
     onset_coefficient_ = onset_error_coefficient(model_.integrator.method, onset_exponent_);
   }
   if (onset_coefficient_ <= 0 || s.onset_strength <= 0) return std::numeric_limits<double>::infinity();
-  const double tolerance = model_.integrator.abs_tol + model_.integrator.rel_tol * s.onset_speed;
   return std::pow(tolerance / (onset_coefficient_ * s.onset_strength), 1.0 / (onset_exponent_ + 1.0));
 }
 
@@ -288,16 +287,17 @@ bool Island::integrate(double dt, double limit, double& t) {
   // A contact that begins at the step's start (StepContacts::onset) makes an error the estimate understates. The
   // step starts at the length where that error is 0.9 of the tolerance: the strict controller would shrink a longer
   // trial to about there anyway, one rejection (six right-hand sides) at a time, and a step that ends at an onset hands
-  // over its own length, which has nothing to do with the contact's (the break: 1 151 rejections without this, 990
-  // with it). The step is held to the strict tolerance where that error can matter, over a tenth of the tolerance:
-  // not for the pairs of a resting rack that begin to close at micrometres per second, where the strict tolerance
-  // would only tighten the rack's every step (S6 at 1e-7: 5e-7 R -> 9e-8 R, but the break's rack 10 % slower, the
-  // same as asking for a tighter tolerance).
+  // over its own length, which has nothing to do with the contact's. That trial takes the tolerance of a velocity at
+  // the closing speed; the controller checks it. The step is held to the strict tolerance where that error can
+  // matter, over a tenth of the absolute tolerance (the body struck may have been at rest, where the relative share
+  // is nothing); not for the pairs of a resting rack that begin to close at micrometres per second, where the strict
+  // tolerance would only tighten the rack's every step (S6 at 1e-7: 5e-7 R -> 9e-8 R, but the break's rack 10 %
+  // slower, the same as asking for a tighter tolerance).
   bool from_onset = false;
   if (dynamics_.step().onset) {
-    const double one = onset_step(), e = onset_exponent_;
-    dt = std::min(dt, one * std::pow(0.9, 1.0 / (e + 1.0)));
-    from_onset = dt > one * std::pow(0.1, 1.0 / (e + 1.0));
+    const IntegratorOptions& o = model_.integrator;
+    dt = std::min(dt, onset_step(0.9 * (o.abs_tol + o.rel_tol * dynamics_.step().onset_speed)));
+    from_onset = dt > onset_step(0.1 * o.abs_tol);
   }
   for (;;) {
     x = trial.x0;
@@ -357,9 +357,10 @@ bool Island::integrate(double dt, double limit, double& t) {
   // where the estimate holds again, so it may be as long as the plain tolerance allows: these fifth-order controllers
   // size a step as (tolerance / error)^(1/5), so onset_factor^(1/5) longer than the strict one suggests (S1 at 8 m/s:
   // 32 steps through the contact without this, 30 with it).
-  if (from_onset && onset_growth_ > 1 && !(retries > 0 && at_onset)) dt_next_ = dt * onset_growth_;
-  else if (stats_.rejected_steps > rejected_before || (retries > 0 && at_onset && onset_growth_ == 1.0))
-    dt_next_ = std::min(dt, tried);
+  const bool rejected = stats_.rejected_steps > rejected_before, sized = onset_growth_ > 1;  // sized: has onset_step
+  if (from_onset && sized && !(retries > 0 && at_onset))
+    dt_next_ = (rejected ? std::min(dt, tried) : dt) * onset_growth_;
+  else if (rejected || (retries > 0 && at_onset && !sized)) dt_next_ = std::min(dt, tried);
   else if (retries > 0) dt_next_ = std::max(dt, passed);
   else dt_next_ = capped ? std::max(dt, wanted) : dt;
   return true;

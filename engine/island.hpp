@@ -107,7 +107,7 @@ class Island {
   // step failed), or in closed form to t1.
   bool integrate(double dt, double limit, double& t);
   void closed_form_step(double t1);
-  double onset_step();  // s: where an onset's own error reaches the tolerance (StepContacts::onset)
+  double onset_step(double tolerance);  // s: where an onset's own error reaches `tolerance` (StepContacts::onset)
   void restart();  // after the system changed (a ball left play): fresh derivative, stepper history, snapshot
   void stop(Status why, std::string message);
   std::string describe_balls(const StateVector& x) const;
