@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds and runs every test: engine, stability suite and GUI test (ctest; the GUI test starts its own Xvfb), a quick
-# work-precision bench, then the engine and stability tests once more under AddressSanitizer and UBSan.
+# work-precision bench, then the engine, stability and app tests once more under AddressSanitizer and UBSan.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
@@ -8,5 +8,5 @@ scripts/build.sh
 ./build/app/shotlab bench --quick --out-dir build/bench-quick
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHOTLAB_SANITIZE=ON -DSHOTLAB_GUI=OFF \
       -DSHOTLAB_TESTS=ON > /dev/null
-cmake --build build-asan -j"$(nproc)" --target engine_tests stability_tests shotlab
-(cd build-asan && ctest --output-on-failure -j2 -L 'engine|stability')
+cmake --build build-asan -j"$(nproc)" --target engine_tests stability_tests app_tests shotlab
+(cd build-asan && ctest --output-on-failure -j2 -L 'engine|stability|app')
