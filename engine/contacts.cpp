@@ -5,6 +5,8 @@
 #include <limits>
 #include <numeric>
 
+#include "events.hpp"
+
 namespace shotlab {
 
 namespace {
@@ -171,9 +173,9 @@ double pair_contact_time(const Vec3& d0, const Vec3& v, double reach, double a, 
 namespace {
 
 // Whether a contact at `depth` (m) closing at `speed` (m/s) begins at the step's start: it is within kTouch of zero
-// depth, or just past it by as far as the contact got in the time a located onset may lie past its root (1e-10 s:
-// the event resolution of EventDetector::first_contact_change, which locates onsets where the depth passes kTouch).
-bool begins(double depth, double speed) { return speed > 0 && std::abs(depth) < kTouch + speed * 1e-10; }
+// depth, or just past it by as far as the contact got in the time a located onset may lie past its root
+// (EventDetector::first_contact_change locates onsets where the depth passes kTouch, to kTimeResolution).
+bool begins(double depth, double speed) { return speed > 0 && std::abs(depth) < kTouch + speed * kTimeResolution; }
 
 // A contact of material m begins at the step's start, closing at `speed` (m/s); inv_mass: 1/kg of the lighter body.
 // The step keeps the strongest onset (StepContacts::onset_strength). The strength leaves out damping: linear damping

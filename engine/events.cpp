@@ -10,8 +10,6 @@ namespace {
 // A ball counts as supported while its gap to a collider is under 10 um: it stays "on the table" through the
 // micrometre bounces of a settling contact instead of flickering between airborne and landed.
 constexpr double kSupportGap = 1e-5;
-// Bisection stops when the bracket is this short (s) for a reported event: its time is good to 0.1 ns.
-constexpr double kTimeResolution = 1e-10;
 
 // First time in (lo, hi] at which changed(t) holds, given !changed(lo) and changed(hi), to `resolution` seconds (or
 // until the bracket's ends are adjacent doubles, when the resolution is below their spacing).

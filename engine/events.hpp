@@ -34,6 +34,10 @@ struct Exit {
   double time;
 };
 
+// Bisection stops when the bracket is this short (s) for a reported event and for the contact changes that cut a
+// step (first_contact_change): their times are good to 0.1 ns.
+constexpr double kTimeResolution = 1e-10;
+
 // How closely (s) the onset of a contact left out of a step is located (first_touch). The step ends there and
 // the next one starts with the contact's force, so this is time spent on the wrong law: a damped contact's force
 // jumps to c v at zero depth, and 0.1 ns late (an event's resolution) misses an impulse of c v 1e-10 N s, which floored
