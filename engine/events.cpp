@@ -122,19 +122,39 @@ bool EventDetector::released(const Key& key, const double* x) const {
 }
 
 double EventDetector::first(const StepSpan& span, const std::vector<ContactKey>& keys, double resolution,
-                            bool (EventDetector::*changed)(const Key&, const double*) const) {
+                            bool (EventDetector::*changed)(const Key&, const double*) const, Key* which) {
   double at = std::numeric_limits<double>::infinity();
   for (const Key& k : keys) {
     if (!(this->*changed)(k, span.x1.data())) continue;
-    at = std::min(at, bisect(span.t0, span.t1, [&](double s) {
-                    return (this->*changed)(k, balls_at(span, s, k));
-                  }, resolution));
+    const double t = bisect(span.t0, span.t1, [&](double s) { return (this->*changed)(k, balls_at(span, s, k)); },
+                            resolution);
+    if (t < at && which) *which = k;
+    at = std::min(at, t);
   }
   return at;
 }
 
-double EventDetector::first_touch(const StepSpan& span, const std::vector<ContactKey>& separated) {
-  return first(span, separated, kOnsetResolution, &EventDetector::touches);
+double EventDetector::first_touch(const StepSpan& span, const std::vector<ContactKey>& separated, ContactKey* which) {
+  return first(span, separated, kOnsetResolution, &EventDetector::touches, which);
+}
+
+double EventDetector::time_to_touch(const StepSpan& span, const ContactKey& key) const {
+  const double* x = span.x1.data();
+  const auto [i, other] = key;
+  double gap, closing;
+  if (other >= 0) {
+    const Vec3 d = position(x, i) - position(x, other);
+    const double dist = glm::length(d);
+    gap = dist - model_.balls[i].radius - model_.balls[other].radius;
+    closing = -glm::dot(velocity(x, i) - velocity(x, other), d) / dist;
+  } else {
+    const auto pen = penetration(model_.colliders[-1 - other].shape, position(x, i), model_.balls[i].radius);
+    if (!pen) return std::numeric_limits<double>::infinity();
+    gap = -pen->depth;
+    closing = -glm::dot(velocity(x, i), pen->normal);
+  }
+  if (gap < 0) return 0.0;
+  return closing > 0 ? gap / closing : std::numeric_limits<double>::infinity();
 }
 
 // A release to 0.1 ns, past the point: the force is continuous through zero there, so a pulling force held for

@@ -62,8 +62,11 @@ class EventDetector {
   };
   Changes first_contact_change(const StepSpan& span, const State& state);
   // Earliest time in the span at which one of the `separated` contacts touches (depth > 0), located to
-  // kOnsetResolution; +inf when none.
-  double first_touch(const StepSpan& span, const std::vector<ContactKey>& separated);
+  // kOnsetResolution; +inf when none. `which`, when given, gets that contact.
+  double first_touch(const StepSpan& span, const std::vector<ContactKey>& separated, ContactKey* which = nullptr);
+  // s: how long the contact `key`, separated at the end of `span`, takes to touch at its closing speed there; 0 when
+  // it touches already, +inf when it is not closing.
+  double time_to_touch(const StepSpan& span, const ContactKey& key) const;
   // Earliest time in the span at which one of the `pushing` contacts stops pushing: its unclamped normal force
   // reaches zero, or it ends; +inf when none.
   double first_release(const StepSpan& span, const std::vector<ContactKey>& pushing);
@@ -78,7 +81,7 @@ class EventDetector {
   bool released(const Key& key, const double* x) const;  // not touching, or its unclamped normal force <= 0
   // The earliest time in the span at which changed(key) holds for one of the keys, to `resolution`.
   double first(const StepSpan& span, const std::vector<ContactKey>& keys, double resolution,
-               bool (EventDetector::*changed)(const Key&, const double*) const);
+               bool (EventDetector::*changed)(const Key&, const double*) const, Key* which = nullptr);
   std::string body_name(int other) const;
   // The key's balls (one, or two for a ball pair) at time t of the span, in scratch_; the other balls' numbers there
   // are stale. What every bisection's test looks at.
