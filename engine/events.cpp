@@ -139,6 +139,7 @@ double EventDetector::first_touch(const StepSpan& span, const std::vector<Contac
 }
 
 double EventDetector::time_to_touch(const StepSpan& span, const ContactKey& key) const {
+  constexpr double inf = std::numeric_limits<double>::infinity();
   const double* x = span.x1.data();
   const auto [i, other] = key;
   double gap, closing;
@@ -146,15 +147,16 @@ double EventDetector::time_to_touch(const StepSpan& span, const ContactKey& key)
     const Vec3 d = position(x, i) - position(x, other);
     const double dist = glm::length(d);
     gap = dist - model_.balls[i].radius - model_.balls[other].radius;
+    if (gap < 0) return 0.0;
     closing = -glm::dot(velocity(x, i) - velocity(x, other), d) / dist;
   } else {
     const auto pen = penetration(model_.colliders[-1 - other].shape, position(x, i), model_.balls[i].radius);
-    if (!pen) return std::numeric_limits<double>::infinity();
+    if (!pen) return inf;
     gap = -pen->depth;
+    if (gap < 0) return 0.0;
     closing = -glm::dot(velocity(x, i), pen->normal);
   }
-  if (gap < 0) return 0.0;
-  return closing > 0 ? gap / closing : std::numeric_limits<double>::infinity();
+  return gap < kTouch && closing > 0 ? gap / closing : inf;
 }
 
 // A release to 0.1 ns, past the point: the force is continuous through zero there, so a pulling force held for

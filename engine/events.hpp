@@ -64,8 +64,9 @@ class EventDetector {
   // Earliest time in the span at which one of the `separated` contacts touches (depth > 0), located to
   // kOnsetResolution; +inf when none. `which`, when given, gets that contact.
   double first_touch(const StepSpan& span, const std::vector<ContactKey>& separated, ContactKey* which = nullptr);
-  // s: how long the contact `key`, separated at the end of `span`, takes to touch at its closing speed there; 0 when
-  // it touches already, +inf when it is not closing.
+  // s: how long the contact `key`, separated at the end of `span` by less than kTouch, takes to touch at its closing
+  // speed there; 0 when it touches already; +inf when it is not closing, is kTouch or more apart (the next step leaves
+  // it out and finds its onset) or cannot touch the collider at all.
   double time_to_touch(const StepSpan& span, const ContactKey& key) const;
   // Earliest time in the span at which one of the `pushing` contacts stops pushing: its unclamped normal force
   // reaches zero, or it ends; +inf when none.
@@ -79,7 +80,8 @@ class EventDetector {
   double depth(const Key& key, const double* x) const;
   bool touches(const Key& key, const double* x) const;   // depth > 0
   bool released(const Key& key, const double* x) const;  // not touching, or its unclamped normal force <= 0
-  // The earliest time in the span at which changed(key) holds for one of the keys, to `resolution`.
+  // The earliest time in the span at which changed(key) holds for one of the keys, to `resolution`; `which`, when
+  // given, gets that key.
   double first(const StepSpan& span, const std::vector<ContactKey>& keys, double resolution,
                bool (EventDetector::*changed)(const Key&, const double*) const, Key* which = nullptr);
   std::string body_name(int other) const;

@@ -25,7 +25,8 @@ Stats& Stats::operator+=(const Stats& o) {
 
 namespace {
 
-// Redone attempts of one step (each ending at a contact change found in the one before) before it is taken as is.
+// Redone attempts of one step (each ending at a contact change found in the one before, or going on to where the
+// contact it was cut for touches) before it is redone once more with the plain law.
 constexpr int kMaxRedos = 8;
 
 // The world's model with only the given balls (and the rods that hold them, renumbered).
@@ -327,10 +328,13 @@ bool Island::integrate(double dt, double limit, double& t) {
         // interpolant, which may fall short of the redone step's own: ended there, the next step would start a few
         // picometres apart, its first stage without the contact's force (with linear damping, c v for all the rest
         // of the step), which the error estimate hardly sees (S5's cradle: three such onsets, each 21x the
-        // tolerance, made up nearly all of its error). Such a step goes on by the time the gap takes to close.
-        const double rest = aimed ? detector_.time_to_touch(trial, *aimed) : 0.0;
-        if (rest <= 0 || !std::isfinite(rest) || retries == kMaxRedos) break;
-        dt = t - span_.t1 + rest + kOnsetResolution;
+        // tolerance, made up nearly all of its error). Such a step goes on by the time the gap takes to close at its
+        // closing speed, to half the onset resolution past the touch (within the test above once located again), but
+        // never past the first trial the error control passed, which kept to every cap and to `limit`.
+        if (!aimed || retries == kMaxRedos) break;
+        const double longer = tried + detector_.time_to_touch(trial, *aimed) + 0.5 * kOnsetResolution;
+        if (!(longer > tried + 0.5 * kOnsetResolution && longer <= passed)) break;
+        dt = longer;
         ++retries;
         ++stats_.redone_steps;
         continue;
@@ -358,6 +362,7 @@ bool Island::integrate(double dt, double limit, double& t) {
       return false;
     }
     ++stats_.rejected_steps;
+    aimed.reset();  // a shorter trial than the cut: the next step finds the onset
   }
   if (retries == 0 && tried == limit - span_.t1) t = limit;
   stats_.last_step = tried;
