@@ -51,7 +51,7 @@ bool measure(const std::string& root, const BenchCase& c, const MethodSetting& s
   for (int k = 1; within && k < repeats; ++k) walls.push_back(run_case(root, c, s).stats.wall_seconds);
   row.wall = median(walls);
   row.repeats = static_cast<int>(walls.size());
-  if (ref) row.err = errors(c, row.run, *ref);
+  if (ref) row.err = errors(c, row.run, *ref, is_adaptive(s.method) ? s.value : 0.0);
   std::ostringstream line;
   line << "  " << c.id << " " << line_name(s) << " " << setting_text(s) << ": ";
   if (ref) line << "error " << std::scientific << std::setprecision(2) << row.err.worst() << std::defaultfloat << ", ";

@@ -5,6 +5,7 @@
 #include <ctime>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <thread>
 
 namespace shotlab {
@@ -28,7 +29,7 @@ std::string cpu_model() {
 bool write_csv(const std::string& path, const BenchReport& r) {
   std::ofstream o(path);
   o << "case,scene,method,path,adaptive,setting,status,pos_err,vel_err,err,missed,energy_drift,momentum_err,"
-       "wall_s,repeats,steps,rejected,rhs,contacts,steps_per_contact,sim_time_s\n";
+       "wall_s,repeats,steps,rejected,rhs,contacts,steps_per_contact,sim_time_s,tol_ratio_pv,tol_ratio_spin\n";
   for (const BenchRow& w : r.rows) {
     const bool measured = !w.c->until_rest;
     o << w.c->id << "," << w.c->scene << "," << method_name(w.setting.method) << ","
@@ -38,7 +39,8 @@ bool write_csv(const std::string& path, const BenchReport& r) {
       << (measured ? std::to_string(w.err.missed) : "") << "," << sci(w.err.energy) << "," << sci(w.err.momentum)
       << "," << fmt("%.6g", w.wall) << "," << w.repeats << "," << w.run.stats.steps << ","
       << w.run.stats.rejected_steps << "," << w.run.stats.rhs_evaluations << "," << w.run.contacts << ","
-      << fmt("%.1f", w.run.steps_per_contact) << "," << fmt("%.6g", w.run.end_time) << "\n";
+      << fmt("%.1f", w.run.steps_per_contact) << "," << fmt("%.6g", w.run.end_time) << ","
+      << (measured ? sci(w.err.tolerance_pv) : "") << "," << (measured ? sci(w.err.tolerance_spin) : "") << "\n";
   }
   return static_cast<bool>(o);
 }
@@ -147,6 +149,37 @@ void fast_plain_ratios(std::ostream& o, const BenchReport& r) {
   }
 }
 
+// Issue 5 asks that a run agree with the reference within the tolerance it requested. The tolerance is the stepper's:
+// per step, component by component, abs_tol + rel_tol |x| in SI units. Measured the same way at the end of the run
+// (Errors::tolerance_pv), a ratio of at most 1 says it does; the spins are shown apart (rad/s against the same
+// numbers). The scale-free error of the other tables (pos / R, vel / v0) is not that measure: a velocity error dv
+// becomes a position error dv T after T seconds, T v0 / R ball radii per unit of vel / v0.
+void tolerance_table(std::ostream& o, const BenchReport& r) {
+  const double tols[] = {1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11};
+  o << "\n## Within the requested tolerance\n\nThe end state against the reference in the stepper's own terms: the "
+       "largest |x_i - x_ref,i| / (tol + tol |x_ref,i|) over the position and velocity components (m, m/s); at most 1 "
+       "means within the tolerance requested (abs_tol = rel_tol = tol). In brackets the same over the spin components "
+       "(rad/s). Cash-Karp 54; -: not run.\n\n| case | path |";
+  for (double t : tols) o << " " << fmt("%.0e", t) << " |";
+  o << "\n|---|---|";
+  for (size_t k = 0; k < std::size(tols); ++k) o << "---|";
+  o << "\n";
+  const BenchCase* last = nullptr;
+  for (const BenchRow& w : r.rows) {
+    if (w.c == last || w.c->until_rest) continue;
+    last = w.c;
+    for (bool plain : {false, true}) {
+      o << "| " << w.c->id << " | " << (plain ? "plain" : "fast") << " |";
+      for (double t : tols) {
+        const BenchRow* row = find_row(r, w.c, Method::CashKarp54, t, plain);
+        o << " " << (row ? fmt("%.2f", row->err.tolerance_pv) + " (" + fmt("%.2g", row->err.tolerance_spin) + ")" : "-")
+          << " |";
+      }
+      o << "\n";
+    }
+  }
+}
+
 bool write_markdown(const std::string& path, const BenchReport& r) {
   std::ofstream o(path);
   const std::time_t now = std::time(nullptr);
@@ -178,6 +211,7 @@ bool write_markdown(const std::string& path, const BenchReport& r) {
   if (!any) o << "None: every run had every contact of its reference.\n";
   fast_vs_plain(o, r);
   fast_plain_ratios(o, r);
+  tolerance_table(o, r);
   for (const char* id : {"S2-0.999", "S3", "S4", "S6"}) full_table(o, r, id);
   o << "\n## S7, S8: full breaks to rest (timed only)\n\n| case | method | tolerance | simulated s | wall s | "
        "real-time factor | steps | rejected | rhs | contacts | steps per contact |\n"

@@ -32,10 +32,15 @@ struct Errors {
   int missed = 0;        // contacts of the reference that did not happen
   double energy = -1;    // |E1 - E0| / E0 when the case is conservative, else -1 (not applicable)
   double momentum = -1;  // |P1 - P0| / |P0| when the case is in free space, else -1
+  // The end state in the stepper's own terms, for a run at tolerance tol (abs_tol = rel_tol = tol; -1 for fixed
+  // steps): the largest |x_i - x_ref,i| / (tol + tol |x_ref,i|) over the position and velocity components (m, m/s),
+  // and over the spin components (rad/s). At most 1: within the requested tolerance as the stepper defines it.
+  double tolerance_pv = -1, tolerance_spin = -1;
   double worst() const { return std::max(position, velocity); }
 };
 
 // Errors of `run` against `ref`; for swap_exact cases the velocities are compared with the exact swap instead.
-Errors errors(const BenchCase& c, const RunResult& run, const RunResult& ref);
+// `tolerance` > 0: the run's tolerance, for tolerance_pv and tolerance_spin.
+Errors errors(const BenchCase& c, const RunResult& run, const RunResult& ref, double tolerance = 0);
 
 }  // namespace shotlab

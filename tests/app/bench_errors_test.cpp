@@ -53,5 +53,22 @@ TEST(BenchErrors, SwapCasesCompareWithTheExactSwap) {
   EXPECT_NEAR(errors(swap, run, ref).velocity, 4e-6 / 2.0, 1e-15);
 }
 
+// The end state in the stepper's terms: each component's error against tol + tol |x_ref| (here 1e-7 + 1e-7 x 1 m for
+// ball 1's x, 1e-7 + 1e-7 x 0.5 m/s for ball 0's speed), positions and velocities apart from spins; fixed-step runs
+// (no tolerance) get none.
+TEST(BenchErrors, ToleranceRatioWeighsEachComponentAsTheStepperDoes) {
+  RunResult ref = two_balls();
+  ref.speed_scale = 1.0;
+  set_velocity(ref.x, 0, Vec3{0.5, 0.0, 0.0});
+  RunResult run = ref;
+  set_position(run.x, 1, Vec3{1.0 + 1e-7, 0.0, 0.0});    // 1e-7 / 2e-7: half the tolerance
+  set_velocity(run.x, 0, Vec3{0.5 + 3e-7, 0.0, 0.0});    // 3e-7 / 1.5e-7: twice
+  set_spin(run.x, 1, Vec3{0.0, 5e-7, 0.0});              // 5e-7 / 1e-7 on a spin at rest
+  const Errors e = errors(BenchCase{}, run, ref, 1e-7);
+  EXPECT_NEAR(e.tolerance_pv, 2.0, 1e-9);
+  EXPECT_NEAR(e.tolerance_spin, 5.0, 1e-9);
+  EXPECT_EQ(errors(BenchCase{}, run, ref).tolerance_pv, -1.0);
+}
+
 }  // namespace
 }  // namespace shotlab
