@@ -67,6 +67,8 @@ bool sweep_strips(const Model& model, const double* x, ContactCache& cache, doub
 template <class Fn>
 void sweep_pairs(const Model& model, const State& state, const double* x, ContactCache& cache, double reach,
                  bool sleeping_pairs, Fn&& fn, const std::vector<int>* awake) {
+  // Most islands are a lone ball, and every step runs several broad phases.
+  if (state.ball_count() < 2) return;
   refresh_sleepers(model, state, x, cache);
   auto left = [&](int i) { return x[9 * i] - model.balls[i].radius; };
   auto sweep = [&](const std::vector<int>& order) {
