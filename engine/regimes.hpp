@@ -50,6 +50,9 @@ class Regimes {
   // ball i touches exactly one flat bed and nothing else within contact_margin; -1 otherwise.
   int only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const;
   double sink(int i, int plane) const;  // m: ball i's static sink into plane-like collider `plane`
+  // m/s: how much normal motion (with the height's offset as a speed) a ball may still have when it enters the
+  // sliding regime on a bed of material m, into which it sinks by `sink` m.
+  double settle_speed(const BallSpec& ball, const ContactMaterial& m, double sink) const;
 
   const Model& model_;
   ContactCache cache_;
