@@ -26,9 +26,10 @@ double entry_slip(const Model& model) {  // m/s
 constexpr double kDeadTail = 1e-12;
 // m/s: a rolling ball this slow stops (settle_rolling).
 constexpr double kStopSpeed = 1e-7;
-// The share of the absolute tolerance that one snap onto the sliding regime may move a ball (settle_speed). The plain
-// path's own position error at the end of the bench scenes is 0.1-0.2 abs_tol (S6 at 1e-7: 1.3e-8 m), and a break
-// has a few dozen snaps: at abs_tol itself S6's fast path ended 4x further off than the plain path, at 3 % as close.
+// The share of the absolute tolerance that one snap onto the sliding regime may move a ball where its corrections do
+// not hold (Regimes::settles). The plain path's own position error at the end of the bench scenes is 0.1-0.2 abs_tol
+// (S6 at 1e-7: 1.3e-8 m), and a break has a few dozen snaps: at abs_tol itself, without the position's correction,
+// S6's fast path ended 4x further off than the plain path; at 3 % as close.
 constexpr double kSnapShare = 0.03;
 
 // m: how deep ball b sinks into a bed of material m under its own weight (C d^e = m g).
@@ -214,22 +215,36 @@ int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& heig
   return support;
 }
 
-// The snap onto the bed (update_sliding) adds the friction impulse of the normal motion left, -m v_n times the
-// friction per newton, at once instead of over the decay of the bed's vertical mode, at its slowest rate sigma. The
-// velocity is off by at most mu v_n in between, the position by mu v_n / sigma for good (mu: the friction and rolling
-// resistance per newton). The entry keeps that under kSnapShare of the absolute tolerance: v_n under
-// kSnapShare abs_tol sigma / mu, 1e-5 m/s at abs_tol 1e-7 on the cloth (sigma = c / 2m = 720 1/s, mu = 0.21), where
-// the decay from a hop's 1e-2 m/s takes three fifths of the time it took down to abs_tol. Never above rest_speed, the
-// normal speed the rolling entry allows.
-double Regimes::settle_speed(const BallSpec& ball, const ContactMaterial& m, double sink) const {
-  const double g = glm::length(model_.options.gravity), mu = m.friction + m.rolling_resistance;
-  const double rest = model_.options.rest_speed;
-  if (mu <= 0) return rest;
+// The snap (update_sliding) adds the rest of the hop's friction at once, as if the friction per newton f stayed what it
+// is now. That is exact while the bed's sliding friction stays saturated (outside its band: constant in size and
+// direction, as a sliding ball's slip falls along a fixed line, and rolling resistance does not act) and not at all
+// inside the band, where the slip relaxes within 0.1 ms and the hop's force no longer matters: there the snap is off
+// by up to mu v_n in velocity until the slip has relaxed, and by about mu v_n / sigma in position for good (mu: the
+// friction and rolling resistance per newton, sigma: the slowest decay rate of the bed's vertical mode). So the hop
+// that is left when the slip reaches its band's edge must be under kSnapShare abs_tol sigma / mu (1e-5 m/s at abs_tol
+// 1e-7 on the cloth: sigma = c / 2m = 720 1/s, mu = 0.21), and the hop now under rest_speed, the normal speed the
+// rolling entry allows. A ball that slides on after a hop of 1e-2 m/s then settles 3 ms later instead of 16 ms.
+bool Regimes::settles(const StateVector& x, int i, int bed, const Vec3& n, double vn, double offset) const {
+  const BallSpec& b = model_.balls[i];
+  const ContactMaterial& m = *cache_.collider_material[bed];
+  const double g = glm::length(model_.options.gravity), sink = this->sink(i, bed);
   // The linearised bed contact: stiffness e m g / sink, damping c (linear law) or C sink^e c = m g c (Hunt-Crossley).
   const double omega2 = m.exponent * g / sink;
-  const double sigma = m.damping_law == DampingLaw::Linear ? m.damping / (2 * ball.mass) : 0.5 * g * m.damping;
+  const double hop = std::hypot(vn, std::sqrt(omega2) * offset);  // m/s, the offset as the speed of that amplitude
+  if (hop >= model_.options.rest_speed) return false;
+  const double mu = m.friction + m.rolling_resistance;
+  if (mu <= 0) return true;  // nothing tangential depends on the normal force
+  const double sigma = m.damping_law == DampingLaw::Linear ? m.damping / (2 * b.mass) : 0.5 * g * m.damping;
   const double slowest = sigma * sigma > omega2 ? sigma - std::sqrt(sigma * sigma - omega2) : sigma;  // overdamped
-  return std::min(rest, kSnapShare * model_.integrator.abs_tol * slowest / mu);
+  // The slip's time to its band's edge 1/k, falling at the regime's rate mu m g (1/m + R^2/I) (time_to_band_edge).
+  const double weight = b.mass * g, mobility = cache_.inv_mass[i] + cache_.inv_inertia_r2[i];
+  Vec3 u = velocity(x, i) + b.radius * glm::cross(n, spin(x, i));
+  u -= glm::dot(u, n) * n;
+  const Smoothing smooth{model_.options.friction_sharpness, model_.options.friction_rate_limit};
+  const double edge = m.friction > 0 ? 1.0 / sharpness_for(smooth, m.friction * weight, mobility) : 0.0;
+  const double saturated_for =
+      m.friction > 0 && glm::length(u) > edge ? (glm::length(u) - edge) / (m.friction * weight * mobility) : 0.0;
+  return hop * std::exp(-slowest * saturated_for) < kSnapShare * model_.integrator.abs_tol * slowest / mu;
 }
 
 double Regimes::sink(int i, int plane) const {
@@ -317,25 +332,26 @@ bool Regimes::update_sliding(State& state, StateVector& x) {
       continue;
     }
     if (bed < 0) continue;
-    // Settled: the normal speed and the height's offset from the sink (as the speed of a bed oscillation of that
-    // amplitude, at the linearised contact's frequency omega = sqrt(e g / sink): stiffness e m g / sink) together
-    // under settle_speed. The snap removes that motion, and the friction its leftover normal force would still have
-    // added is added at once: while the ball touches only the bed, m dv_n/dt = N - m g, so over the rest of the decay
-    // the normal force brings m (0 - v_n) more than the weight, and each friction term (linear in N at the bed's load)
-    // that much more impulse. The regime applies N = m g from here on, so the snap adds its accelerations times
-    // -v_n / g. What it cannot get right is when that impulse comes: over the decay, not at once (settle_speed).
+    // Settled: the normal speed and the height's offset from the sink small enough (settles). The snap removes that
+    // motion and adds what the normal force still to come would have done through the friction. While the ball
+    // touches only the bed, m dv_n/dt = N - m g, so over the rest of the hop N brings m (0 - v_n) more impulse than
+    // the weight, and every friction term, linear in N at the bed's load, that much more too: the regime (N = m g
+    // from here on) adds its accelerations times -v_n / g. That impulse comes over the hop, not at once: its first
+    // moment, the integral of t (N - m g) dt = -m (integral of v_n dt) = m offset, moves the ball by the regime's
+    // acceleration times -offset / g for good. Both hold for any N(t), a bounce off the bed included.
     const Vec3 p = position(x, i), v = velocity(x, i);
-    const double sink = this->sink(i, bed);
     const double vn = glm::dot(v, n), offset = glm::dot(p, n) - height;
-    const ContactMaterial& m = *cache_.collider_material[bed];
-    if (std::hypot(vn, std::sqrt(m.exponent * g / sink) * offset) >= settle_speed(model_.balls[i], m, sink)) continue;
+    if (!settles(x, i, bed, n, vn, offset)) continue;
     set_position(x, i, p - offset * n);
     set_velocity(x, i, v - vn * n);
     state.sliding_on[i] = bed;
     double dxdt[kBallDofs];
     sliding_derivative(model_, state, cache_, x.data(), i, dxdt);
-    const double lag = -vn / g;  // s: the weight's time to bring the normal impulse still to come
-    for (int c = 3; c < kBallDofs; ++c) x[kBallDofs * i + c] += lag * dxdt[c];
+    for (int c = 0; c < 3; ++c) {
+      x[kBallDofs * i + c] -= offset / g * dxdt[3 + c];
+      x[kBallDofs * i + 3 + c] -= vn / g * dxdt[3 + c];
+      x[kBallDofs * i + 6 + c] -= vn / g * dxdt[6 + c];
+    }
     changed = true;
   }
   return changed;

@@ -50,9 +50,9 @@ class Regimes {
   // ball i touches exactly one flat bed and nothing else within contact_margin; -1 otherwise.
   int only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const;
   double sink(int i, int plane) const;  // m: ball i's static sink into plane-like collider `plane`
-  // m/s: how much normal motion (with the height's offset as a speed) a ball may still have when it enters the
-  // sliding regime on a bed of material m, into which it sinks by `sink` m.
-  double settle_speed(const BallSpec& ball, const ContactMaterial& m, double sink) const;
+  // Whether ball i, alone on the flat bed `bed` (unit normal n) with normal speed vn (m/s) and its centre `offset` m
+  // above its static sink, has settled enough to enter the sliding regime (update_sliding).
+  bool settles(const StateVector& x, int i, int bed, const Vec3& n, double vn, double offset) const;
 
   const Model& model_;
   ContactCache cache_;
