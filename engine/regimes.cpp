@@ -47,6 +47,15 @@ bool flat_bed(const Collider& c, const Vec3& normal, const Vec3& gravity, Vec3& 
   const double g = glm::length(gravity);
   return g > 0 && glm::dot(normal, -gravity / g) > 1.0 - 1e-12;
 }
+// What the rest of a hop does through the bed's friction (update_sliding derives it), added to ball i as it enters a
+// regime whose accelerations are dxdt: times -v_n / g on the velocity and spin, times -offset / g on the position.
+void add_hop_rest(StateVector& x, int i, double vn, double offset, double g, const double* dxdt) {
+  for (int c = 0; c < 3; ++c) {
+    x[kBallDofs * i + c] -= offset / g * dxdt[3 + c];
+    x[kBallDofs * i + 3 + c] -= vn / g * dxdt[3 + c];
+    x[kBallDofs * i + 6 + c] -= vn / g * dxdt[6 + c];
+  }
+}
 }  // namespace
 
 Regimes::Regimes(const Model& model) : model_(model), cache_(model) {
@@ -298,9 +307,12 @@ bool Regimes::update_rolling(State& state, StateVector& x) {
       // Snap onto the constraint: height at the sink depth, no normal velocity, and the remaining slip u (under
       // entry_slip by the entry condition) removed the way cloth friction removes it: by a tangential impulse J at
       // the contact point r = -R n. Then du = J/m + R n x ((r x J)/I) = J/m (1 + m R^2/I) = 3.5 J/m, so
-      // J = -m u / 3.5: the velocity takes 2/7 of the correction, the spin the rest, as in a real stun-to-roll.
+      // J = -m u / 3.5: the velocity takes 2/7 of the correction, the spin the rest, as in a real stun-to-roll. What
+      // is left of a hop goes into the rolling resistance and spin friction as at the sliding entry (update_sliding):
+      // the regime's equations are linear in the normal force too.
       const double r = model_.balls[i].radius, mass = model_.balls[i].mass;
       const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
+      const double vn = glm::dot(v, n), offset = glm::dot(p, n) - height;
       const Vec3 vt = v - glm::dot(v, n) * n;
       Vec3 u = vt + r * glm::cross(n, w);
       u -= glm::dot(u, n) * n;
@@ -310,6 +322,9 @@ bool Regimes::update_rolling(State& state, StateVector& x) {
       set_spin(x, i, w + glm::cross(-r * n, j) / model_.balls[i].inertia());
       state.rolling_on[i] = bed;
       state.sliding_on[i] = -1;
+      double dxdt[kBallDofs];
+      rolling_derivative(model_, state, cache_, x.data(), i, dxdt);
+      add_hop_rest(x, i, vn, offset, glm::length(model_.options.gravity), dxdt);
       changed = true;
     }
   }
@@ -347,11 +362,7 @@ bool Regimes::update_sliding(State& state, StateVector& x) {
     state.sliding_on[i] = bed;
     double dxdt[kBallDofs];
     sliding_derivative(model_, state, cache_, x.data(), i, dxdt);
-    for (int c = 0; c < 3; ++c) {
-      x[kBallDofs * i + c] -= offset / g * dxdt[3 + c];
-      x[kBallDofs * i + 3 + c] -= vn / g * dxdt[3 + c];
-      x[kBallDofs * i + 6 + c] -= vn / g * dxdt[6 + c];
-    }
+    add_hop_rest(x, i, vn, offset, g, dxdt);
     changed = true;
   }
   return changed;
