@@ -145,7 +145,9 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
   const ContactMaterial& bb = *cache.ball_ball;
   for (const auto& [i, j] : near_known ? cache.step.near : cache.pairs) {
     const int a = std::min(i, j), b = std::max(i, j);
-    if ((state.sleeping(i) && state.sleeping(j) && !with_inactive) || listed(cache.step.separated, a, b)) continue;
+    // The step's near pairs and its separated ones are apart by construction (time_to_possible_contact).
+    if ((state.sleeping(i) && state.sleeping(j) && !with_inactive) || (!near_known && listed(cache.step.separated, a, b)))
+      continue;
     const double ri = model.balls[i].radius, rj = model.balls[j].radius;
     const Vec3 d = position(x, i) - position(x, j);
     if (near_known && (glm::dot(d, d) >= (ri + rj) * (ri + rj) || !state.in_play[i] || !state.in_play[j])) continue;
