@@ -202,6 +202,11 @@ bool Regimes::at_rest(const State& state, const StateVector& x, int i) const {
 int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const {
   const double margin = model_.options.contact_margin, r = model_.balls[i].radius;
   const Vec3 p = position(x, i);
+  // Other balls and rods first: they are cheap to check and rule out most balls of a rack.
+  for (int j : touching_[i])
+    if (glm::length(p - position(x, j)) - r - model_.balls[j].radius < margin) return -1;
+  for (const Rod& rod : model_.rods)
+    if (rod.ball == i) return -1;
   int support = -1;
   bool other = false;  // something other than one flat bed is within the margin
   near_colliders(model_, cache_, p, r, margin, [&](int c, const Penetration& pen) {
@@ -216,12 +221,7 @@ int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& heig
     support = c;
     height = glm::dot(point, normal) + r - sink(i, c);
   });
-  if (support < 0 || other) return -1;
-  for (int j : touching_[i])
-    if (glm::length(p - position(x, j)) - r - model_.balls[j].radius < margin) return -1;
-  for (const Rod& rod : model_.rods)
-    if (rod.ball == i) return -1;
-  return support;
+  return support < 0 || other ? -1 : support;
 }
 
 // The snap (update_sliding) adds the rest of the hop's friction at once, as if the friction per newton f stayed what it
