@@ -47,6 +47,12 @@ bool flat_bed(const Collider& c, const Vec3& normal, const Vec3& gravity, Vec3& 
   const double g = glm::length(gravity);
   return g > 0 && glm::dot(normal, -gravity / g) > 1.0 - 1e-12;
 }
+// s: how long a quantity q (a slip, speed or contact-patch speed, m/s) that a friction term of the given strength (N)
+// relaxes at strength times mobility (1/kg: m/s^2, contact_force.hpp) takes to fall to its smoothing band's edge
+// 1/k; not positive once inside the band.
+double time_to_edge(const Smoothing& s, double q, double strength, double mobility) {
+  return (q - 1.0 / sharpness_for(s, strength, mobility)) / (strength * mobility);
+}
 // What the rest of a hop does through the bed's friction (update_sliding derives it), added to ball i as it enters a
 // regime whose accelerations are dxdt: times -v_n / g on the velocity and spin, times -offset / g on the position.
 void add_hop_rest(StateVector& x, int i, double vn, double offset, double g, const double* dxdt) {
@@ -157,7 +163,7 @@ double time_to_band_edge(const Model& model, const State& state, const ContactCa
   // mobility, contact_force.hpp) reaches its band's edge 1/k after (q - 1/k) / rate. Where fricstep is 0 (q = 0 and
   // `zero_holds`: nothing else moves q) or 1 (beyond the edge), the term is constant.
   auto edge = [&](double q, double strength, double mobility, bool zero_holds) {
-    const double t = (q - 1.0 / sharpness_for(smooth, strength, mobility)) / (strength * mobility);
+    const double t = time_to_edge(smooth, q, strength, mobility);
     if (t > kTooClose) best = std::min(best, t);
     else if (q != 0 || !zero_holds) outside = false;
   };
@@ -245,14 +251,14 @@ bool Regimes::settles(const StateVector& x, int i, int bed, const Vec3& n, doubl
   if (mu <= 0) return true;  // nothing tangential depends on the normal force
   const double sigma = m.damping_law == DampingLaw::Linear ? m.damping / (2 * b.mass) : 0.5 * g * m.damping;
   const double slowest = sigma * sigma > omega2 ? sigma - std::sqrt(sigma * sigma - omega2) : sigma;  // overdamped
-  // The slip's time to its band's edge 1/k, falling at the regime's rate mu m g (1/m + R^2/I) (time_to_band_edge).
-  const double weight = b.mass * g, mobility = cache_.inv_mass[i] + cache_.inv_inertia_r2[i];
+  // The slip's time to its band's edge, falling at the regime's rate mu m g (1/m + R^2/I) (time_to_band_edge).
   Vec3 u = velocity(x, i) + b.radius * glm::cross(n, spin(x, i));
   u -= glm::dot(u, n) * n;
   const Smoothing smooth{model_.options.friction_sharpness, model_.options.friction_rate_limit};
-  const double edge = m.friction > 0 ? 1.0 / sharpness_for(smooth, m.friction * weight, mobility) : 0.0;
   const double saturated_for =
-      m.friction > 0 && glm::length(u) > edge ? (glm::length(u) - edge) / (m.friction * weight * mobility) : 0.0;
+      m.friction > 0 ? std::max(0.0, time_to_edge(smooth, glm::length(u), m.friction * (b.mass * g),
+                                                  cache_.inv_mass[i] + cache_.inv_inertia_r2[i]))
+                     : 0.0;
   return hop * std::exp(-slowest * saturated_for) < kSnapShare * model_.integrator.abs_tol * slowest / mu;
 }
 
