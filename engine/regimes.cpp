@@ -152,7 +152,7 @@ double path_meeting_time(const FreePath& a, const FreePath& b, double reach, dou
 }
 
 double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
-                         bool* constant) {
+                         bool* constant, std::vector<BandTail>* tails) {
   // A kink this close is not worth a step of its own: the step crosses it within round-off of its start.
   constexpr double kTooClose = 1e-12;
   const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
@@ -162,11 +162,14 @@ double time_to_band_edge(const Model& model, const State& state, const ContactCa
   // A quantity q falling at `rate` (each friction term of strength F relaxes the motion it opposes at F times its
   // mobility, contact_force.hpp) reaches its band's edge 1/k after (q - 1/k) / rate. Where fricstep is 0 (q = 0 and
   // `zero_holds`: nothing else moves q) or 1 (beyond the edge), the term is constant.
+  // Returns whether q is inside the band (and not at a held zero).
   auto edge = [&](double q, double strength, double mobility, bool zero_holds) {
     const double t = time_to_edge(smooth, q, strength, mobility);
     if (t > kTooClose) best = std::min(best, t);
-    else if (q != 0 || !zero_holds) outside = false;
+    else if (q != 0 || !zero_holds) return true;
+    return false;
   };
+  if (tails) tails->clear();
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.active(i)) continue;  // asleep or out of play: frozen
     const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : -1;
@@ -178,13 +181,32 @@ double time_to_band_edge(const Model& model, const State& state, const ContactCa
     const Vec3& n = cache.plane_normal[bed];
     const double weight = model.balls[i].mass * g, r = model.balls[i].radius;
     const Vec3 v = velocity(x, i), w = spin(x, i);
-    if (m.spin_friction > 0) edge(r * std::abs(glm::dot(w, n)), m.spin_friction * weight, cache.inv_inertia_r2[i], true);
+    // Inside its band the spin about the normal, and a rolling ball's speed, follow their tails' closed forms where
+    // the caller takes tails (band_tail.hpp). A speed tail lasts until the stop cut (settle_rolling).
+    const double spin_strength = m.spin_friction * weight, wn = glm::dot(w, n);
+    if (m.spin_friction > 0 && edge(r * std::abs(wn), spin_strength, cache.inv_inertia_r2[i], true)) {
+      if (tails)
+        tails->push_back({BandTail::Kind::Spin, i, n, Vec3{0.0}, Vec3{0.0}, r,
+                          {r * wn, sharpness_for(smooth, spin_strength, cache.inv_inertia_r2[i]),
+                           spin_strength * cache.inv_inertia_r2[i]}});
+      else
+        outside = false;
+    }
     if (state.rolling(i)) {  // the speed, against rolling resistance
-      if (m.rolling_resistance > 0) edge(glm::length(v), m.rolling_resistance * weight, cache.inv_mass[i], true);
+      const double strength = m.rolling_resistance * weight, speed = glm::length(v);
+      if (m.rolling_resistance > 0 && edge(speed, strength, cache.inv_mass[i], true)) {
+        if (tails && speed > kStopSpeed) {
+          const BandDecay decay{speed, sharpness_for(smooth, strength, cache.inv_mass[i]), strength * cache.inv_mass[i]};
+          tails->push_back({BandTail::Kind::Speed, i, n, v / speed, position(x, i), r, decay});
+          best = std::min(best, decay.time_to(0.5 * kStopSpeed));
+        } else {
+          outside = false;
+        }
+      }
     } else if (m.friction > 0) {  // the slip, against sliding friction (rolling resistance acts only inside its band)
       Vec3 u = v + r * glm::cross(n, w);
       u -= glm::dot(u, n) * n;
-      edge(glm::length(u), m.friction * weight, cache.inv_mass[i] + cache.inv_inertia_r2[i], false);
+      if (edge(glm::length(u), m.friction * weight, cache.inv_mass[i] + cache.inv_inertia_r2[i], false)) outside = false;
     } else if (m.rolling_resistance > 0) {
       outside = false;  // frictionless sliding: rolling resistance acts on the centre's speed all along
     }
@@ -374,26 +396,19 @@ bool Regimes::update_sliding(State& state, StateVector& x) {
   return changed;
 }
 
-// A rolling ball's speed and its spin about the normal decay to zero the way the slip does at the rolling entry:
-// linearly down to the fricstep band, then exponentially, at 1.5 k mu_r g ~ 150 1/s for the speed and
-// 1.5 k mu_sp g r^2/I ~ 400 1/s for the spin. Integrating those tails to the tolerance holds every ball in the
-// system to accuracy-limited steps of a few milliseconds. The tails are cut: the spin about the normal below the
-// entry threshold (it does not act on the rolling path at all), the speed below 1e-7 m/s (the distance still to
-// roll, v / (150 1/s), is under 1 nm).
+// A rolling ball's speed decays to zero the way the slip does at the rolling entry: linearly down to the fricstep
+// band, then exponentially, at 1.5 k mu_r g ~ 150 1/s. Inside the band it follows its closed form (band_tail.hpp),
+// which never quite reaches zero: below 1e-7 m/s the ball stops (the distance still to roll, v / (150 1/s), is under
+// 1 nm). Its spin about the normal goes on decaying in closed form on its own.
 bool Regimes::settle_rolling(StateVector& x, int i, const Vec3& n) const {
-  const double stop_turning = entry_slip(model_), r = model_.balls[i].radius;
   const Vec3 v = velocity(x, i), w = spin(x, i);
-  const double speed = glm::length(v), wn = glm::dot(w, n);
-  // Tails already at round-off (1e-12 m/s and below) are left alone: cutting them changes nothing but would restart
+  const double speed = glm::length(v);
+  // A speed already at round-off (1e-12 m/s and below) is left alone: cutting it changes nothing but would restart
   // the integrator after every step.
-  const bool stops = speed > kDeadTail && speed < kStopSpeed,
-             turns_off = r * std::abs(wn) > kDeadTail && r * std::abs(wn) < stop_turning;
-  if (stops) {
-    set_velocity(x, i, Vec3{0.0});
-    set_spin(x, i, wn * n);  // no rolling spin at zero speed (v + R n x w = 0)
-  }
-  if (turns_off) set_spin(x, i, spin(x, i) - wn * n);
-  return stops || turns_off;
+  if (!(speed > kDeadTail && speed < kStopSpeed)) return false;
+  set_velocity(x, i, Vec3{0.0});
+  set_spin(x, i, glm::dot(w, n) * n);  // no rolling spin at zero speed (v + R n x w = 0)
+  return true;
 }
 
 bool Regimes::update_sleep(State& state, StateVector& x, double dt) {

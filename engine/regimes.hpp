@@ -15,8 +15,9 @@
 //    sleep_time is frozen exactly (no equations, no contacts), so resting balls cost nothing and cannot drift. A
 //    sleeping ball is an obstacle to awake ones and wakes, with every sleeping ball touching it, as soon as an
 //    awake ball that is not at rest touches it.
-// A rolling ball's last 1e-7 m/s of speed and 1e-5 m/s of spin about the normal (as a surface speed) are cut to zero
-// instead of integrated: those exponential tails of the smoothed friction would hold every step to milliseconds.
+// Inside their smoothing bands a regime ball's spin about the normal and a rolling ball's speed decay exponentially,
+// which would hold every step to milliseconds; they follow their closed forms instead (band_tail.hpp), and a rolling
+// ball's last 1e-7 m/s of speed is cut to zero.
 // A ball leaves the rolling regime when anything other than the bed comes within contact_margin, when its support
 // is no longer the flat bed (a pocket rim), or when it stops rolling. Contact onsets end the integrator's step
 // (simulation.cpp), so regime changes happen at the instant of contact.
@@ -26,6 +27,7 @@
 
 #include "contacts.hpp"
 #include "model.hpp"
+#include "band_tail.hpp"
 #include "state.hpp"
 
 namespace shotlab {
@@ -45,7 +47,7 @@ class Regimes {
   bool update_sleep(State& state, StateVector& x, double dt);
   bool update_rolling(State& state, StateVector& x);
   bool update_sliding(State& state, StateVector& x);
-  bool settle_rolling(StateVector& x, int i, const Vec3& n) const;  // cuts the decay tails of a rolling ball
+  bool settle_rolling(StateVector& x, int i, const Vec3& n) const;  // stops a rolling ball at the end of its tail
   // The bed collider (its unit normal and the centre height of a ball resting on it in `normal`, `height`) when
   // ball i touches exactly one flat bed and nothing else within contact_margin; -1 otherwise.
   int only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const;
@@ -98,10 +100,12 @@ double path_meeting_time(const FreePath& a, const FreePath& b, double reach, dou
 // kink: an embedded error estimate misjudges a step across one, and the step is rejected over and over as the kink
 // comes closer.
 // With `constant`, also says whether the right-hand side is constant until then: every ball in play asleep, or in the
-// rolling or sliding regime with each of its friction terms outside its band (or, rolling, at exactly zero). The
-// island may then step in closed form (island.cpp).
+// rolling or sliding regime with each of its friction terms outside its band (or at a zero that holds: no speed, no
+// spin about the normal). The island may then step in closed form (island.cpp). With `tails`, a spin about the
+// normal or a rolling speed inside its band does not count against that: it is listed there instead, to be followed
+// in closed form (band_tail.hpp), and a speed tail's end at the stop cut counts as an edge.
 double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
-                         bool* constant = nullptr);
+                         bool* constant = nullptr, std::vector<BandTail>* tails = nullptr);
 
 // Right-hand sides of a ball in the rolling and the sliding regime (the dynamics above), written into dxdt. `cache`
 // supplies the bed's material without a lookup by name (this runs in every right-hand side).

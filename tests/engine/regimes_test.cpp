@@ -189,6 +189,14 @@ TEST(Regimes, StepsEndAtTheSmoothingBandsEdge) {
   set_velocity(s.x, 1, Vec3(1e-3, 0, 0));
   EXPECT_EQ(time_to_band_edge(p.model, s, cache, s.x.data(), &constant), std::numeric_limits<double>::infinity());
   EXPECT_FALSE(constant);  // its speed and spin now decay inside their bands: no closed form
+  std::vector<BandTail> tails;  // unless the caller follows those decays as tails (band_tail.hpp)
+  const double to_stop = time_to_band_edge(p.model, s, cache, s.x.data(), &constant, &tails);
+  EXPECT_TRUE(constant);
+  ASSERT_EQ(tails.size(), 2u);
+  EXPECT_EQ(tails[0].kind, BandTail::Kind::Spin);
+  EXPECT_EQ(tails[1].kind, BandTail::Kind::Speed);
+  // The speed tail ends at the stop cut: from the edge (y0 = 1) to 5e-8 m/s, ln((2e4^2 - 1/3) / (2/3)) / (3 mu_r g k).
+  EXPECT_NEAR(to_stop, std::log((4e8 - 1.0 / 3) / (2.0 / 3)) / (3 * 0.0981 * 1000), 1e-3);
   set_velocity(s.x, 1, Vec3(0.0));  // stopped rolling, the spin still decaying
   time_to_band_edge(p.model, s, cache, s.x.data(), &constant);
   EXPECT_FALSE(constant);
