@@ -53,6 +53,14 @@ void ColumnXZ::exclude(const Vec3& lo, const Vec3& hi) {
 }
 
 ContactCache::ContactCache(const Model& model) : ball_ball(&model.material(kBallBall)) {
+  // Every island builds several of these (a new island every few collisions): one allocation per table, not one per
+  // doubling of it.
+  const size_t colliders = model.colliders.size(), balls = model.balls.size();
+  collider_material.reserve(colliders);
+  collider_bounds.reserve(colliders);
+  plane_normal.reserve(colliders);
+  inv_mass.reserve(balls);
+  inv_inertia_r2.reserve(balls);
   for (const Collider& c : model.colliders) {
     collider_material.push_back(&model.material(c.material));
     collider_bounds.push_back(bounds(c.shape));
