@@ -116,6 +116,8 @@ void Simulation::regroup(double t, std::vector<Island*> group, std::vector<int> 
   // its balls goes on running (its step size and stepper history); the others end here, their energy booked at t.
   std::vector<std::unique_ptr<Island>> next;
   std::vector<std::unique_ptr<Island>> ending;
+  next.reserve(islands_.size() + p.islands.size());  // a regroup comes every few steps: no doubling on the way
+  ending.reserve(group.size());
   for (auto& island : islands_) {
     if (!in_group(island.get())) {
       next.push_back(std::move(island));
