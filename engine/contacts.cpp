@@ -59,6 +59,7 @@ ContactCache::ContactCache(const Model& model) : ball_ball(&model.material(kBall
   collider_material.reserve(colliders);
   collider_bounds.reserve(colliders);
   plane_normal.reserve(colliders);
+  others.reserve(colliders);
   inv_mass.reserve(balls);
   inv_inertia_r2.reserve(balls);
   for (const Collider& c : model.colliders) {
@@ -75,6 +76,7 @@ ContactCache::ContactCache(const Model& model) : ball_ball(&model.material(kBall
       plane_like.push_back(static_cast<int>(c));
       continue;
     }
+    others.push_back(static_cast<int>(c));
     const Bounds& b = collider_bounds[c];
     if (!any) clear = {b.lo.x, b.hi.x, b.lo.z, b.hi.z}, any = true;
     clear.lo_x = std::min(clear.lo_x, b.lo.x), clear.hi_x = std::max(clear.hi_x, b.hi.x);
@@ -82,8 +84,13 @@ ContactCache::ContactCache(const Model& model) : ball_ball(&model.material(kBall
   }
   for (size_t c = 0; c < model.colliders.size() && any; ++c)
     if (plane_normal[c] == Vec3{0.0}) clear.exclude(collider_bounds[c].lo, collider_bounds[c].hi);
+  // A bounded plane's floor is worked out over its own extent (inset by a nanometre: level_floor wants the corners
+  // strictly inside), so that a ball near a cushion, outside the clear column, finds the bed the fast way too.
+  constexpr double kInset = 1e-9;  // m
   for (int c : plane_like) {
-    floor.push_back(clear);
+    const Bounds& b = collider_bounds[c];
+    const bool bounded = std::holds_alternative<BoundedPlane>(model.colliders[c].shape);
+    floor.push_back(bounded ? ColumnXZ{b.lo.x + kInset, b.hi.x - kInset, b.lo.z + kInset, b.hi.z - kInset} : clear);
     floor_y.push_back(level_floor(model.colliders[c].shape, floor.back()));
     if (std::isnan(floor_y.back())) floor.back() = ColumnXZ{};
   }

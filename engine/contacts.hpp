@@ -72,11 +72,13 @@ struct ContactCache {
   // A vertical column that no collider other than the plane-like ones reaches: a ball inside it is probed against
   // the plane-like colliders alone (on a table, the bed; the cushions and jaws line the edges).
   std::vector<int> plane_like;
+  std::vector<int> others;  // the other colliders, in the order of the model
   ColumnXZ clear;
-  // For each plane-like collider (in the order of plane_like), the part of the clear column over which it is a level
-  // floor (normal exactly up) with no edge and no hole, at height floor_y (m; NaN and an empty column where it is
-  // none). A ball whose centre is over it is probed with one subtraction: the bed under a rack of 16 balls, in every
-  // right-hand side, no longer visits the shape, its extent and its six pockets.
+  // For each plane-like collider (in the order of plane_like), a column over which it is a level floor (normal exactly
+  // up) with no edge and no hole, at height floor_y (m; NaN and an empty column where it is none): a bounded plane's
+  // own extent cleared of its holes, an unbounded one's part of the clear column. A ball whose centre is over it is
+  // probed with one subtraction: the bed under a rack of 16 balls, in every right-hand side, and under a ball against
+  // a cushion, no longer visits the shape, its extent and its six pockets.
   std::vector<ColumnXZ> floor;
   std::vector<double> floor_y;
   const ContactMaterial* ball_ball;

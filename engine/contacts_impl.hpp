@@ -102,19 +102,18 @@ void near_colliders(const Model& model, const ContactCache& cache, const Vec3& p
     if (const auto pen = penetration(model.colliders[c].shape, p, r, within)) fn(static_cast<int>(c), *pen);
   };
   const double reach = r + within;
-  if (cache.clear.holds(p, reach)) {
-    for (size_t k = 0; k < cache.plane_like.size(); ++k) {
-      const int c = cache.plane_like[k];
-      if (!cache.floor[k].holds(p, 0.0)) {
-        probe(c);
-      } else if (cache.collider_bounds[c].may_touch(p, reach)) {
-        const double height = p.y - cache.floor_y[k];  // a centre below the floor touches nothing (one-sided)
-        if (height >= 0) fn(c, Penetration{r - height, kUp});
-      }
+  for (size_t k = 0; k < cache.plane_like.size(); ++k) {
+    const int c = cache.plane_like[k];
+    if (!cache.floor[k].holds(p, 0.0)) {
+      probe(c);
+    } else if (cache.collider_bounds[c].may_touch(p, reach)) {
+      const double height = p.y - cache.floor_y[k];  // a centre below the floor touches nothing (one-sided)
+      if (height >= 0) fn(c, Penetration{r - height, kUp});
     }
-    return;
   }
-  for (size_t c = 0; c < model.colliders.size(); ++c) probe(c);
+  // Inside the clear column nothing else can be in reach.
+  if (cache.clear.holds(p, reach)) return;
+  for (int c : cache.others) probe(c);
 }
 
 template <class Fn>
