@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
 
 #include "events.hpp"
 
@@ -16,7 +18,9 @@ constexpr double kTouchSlack = 1e-9;
 // of a few stiff steps. The snap removes the rest at once and leaves a lasting difference from the full model in
 // proportion to u (a stun shot at 2 m/s keeps 1.4 % of u in its speed, tests/engine/regimes_test.cpp). The tolerance
 // bound holds that under the integration error at tight tolerances, where the 1 % bound alone stopped the fast
-// path's error at a floor (bench S3, S4 and S6: 7e-9, 6e-8 and 1.5e-7 R at every tolerance below 1e-8).
+// path's error at a floor (bench S3, S4 and S6: 7e-9, 6e-8 and 1.5e-7 R at every tolerance below 1e-8). A ball in the
+// sliding regime gets there without the stiff steps: its slip tail is followed in closed form (band_tail.hpp) down to
+// kDeadTail before it enters, which leaves nothing to snap.
 constexpr double kEntrySlip = 0.01;
 constexpr double kEntrySlipPerTolerance = 10.0;
 double entry_slip(const Model& model) {  // m/s
@@ -53,6 +57,33 @@ bool flat_bed(const Collider& c, const Vec3& normal, const Vec3& gravity, Vec3& 
 double time_to_edge(const Smoothing& s, double q, double strength, double mobility) {
   return (q - 1.0 / sharpness_for(s, strength, mobility)) / (strength * mobility);
 }
+// A sliding ball's slip u inside its band (|u| = q0 > 0, unit direction u^) as a Slip tail (band_tail.hpp), and how long
+// its step may run: to where the slip is round-off (kDeadTail), so that the rolling entry comes at the step's end with
+// nothing left to snap (the closed form costs the same however far it is followed). None where
+// that closed form would not hold to well under the tolerance: the rolling regime off (nothing ends the tail), the
+// slip already at the entry, rolling resistance inside its own band before the end, or v turning so far (by
+// s q0 |u^ x d| / |v| at most) that what the closed form leaves out, a_r T times the turn squared in the velocity and
+// a_r T^2 / 2 times the turn in the position, comes over kSnapShare abs_tol.
+std::optional<std::pair<BandTail, double>> slip_tail(const Model& model, const ContactCache& cache, const Smoothing& smooth,
+                                                     const ContactMaterial& m, int i, const Vec3& n, const Vec3& p,
+                                                     const Vec3& v, const Vec3& u) {
+  const double q0 = glm::length(u), entry = entry_slip(model);
+  if (!model.options.rolling_regime || q0 <= entry) return std::nullopt;
+  const double weight = model.balls[i].mass * glm::length(model.options.gravity);
+  const double mobility = cache.inv_mass[i] + cache.inv_inertia_r2[i], share = cache.inv_mass[i] / mobility;
+  const BandDecay decay{q0, sharpness_for(smooth, m.friction * weight, mobility), m.friction * weight * mobility};
+  const double until = decay.time_to(kDeadTail);
+  const double a_r = m.rolling_resistance * weight * cache.inv_mass[i], speed = glm::length(v) - share * q0;
+  const Vec3 dir = u / q0;
+  if (a_r > 0) {
+    const double band = 1.0 / sharpness_for(smooth, m.rolling_resistance * weight, cache.inv_mass[i]);
+    if (!(speed - a_r * until > band)) return std::nullopt;
+    const double turn = share * q0 * glm::length(glm::cross(dir, v / glm::length(v))) / speed;
+    if (a_r * until * std::max(turn * turn, 0.5 * until * turn) > kSnapShare * model.integrator.abs_tol) return std::nullopt;
+  }
+  return std::pair{BandTail{BandTail::Kind::Slip, i, n, dir, p, model.balls[i].radius, decay, v, a_r, share}, until};
+}
+
 // What the rest of a hop does through the bed's friction (update_sliding derives it), added to ball i as it enters a
 // regime whose accelerations are dxdt: times -v_n / g on the velocity and spin, times -offset / g on the position.
 void add_hop_rest(StateVector& x, int i, double vn, double offset, double g, const double* dxdt) {
@@ -206,7 +237,11 @@ double time_to_band_edge(const Model& model, const State& state, const ContactCa
     } else if (m.friction > 0) {  // the slip, against sliding friction (rolling resistance acts only inside its band)
       Vec3 u = v + r * glm::cross(n, w);
       u -= glm::dot(u, n) * n;
-      if (edge(glm::length(u), m.friction * weight, cache.inv_mass[i] + cache.inv_inertia_r2[i], false)) outside = false;
+      if (edge(glm::length(u), m.friction * weight, cache.inv_mass[i] + cache.inv_inertia_r2[i], false)) {
+        const auto tail = tails ? slip_tail(model, cache, smooth, m, i, n, position(x, i), v, u) : std::nullopt;
+        if (tail) tails->push_back(tail->first), best = std::min(best, tail->second);
+        else outside = false;
+      }
     } else if (m.rolling_resistance > 0) {
       outside = false;  // frictionless sliding: rolling resistance acts on the centre's speed all along
     }
