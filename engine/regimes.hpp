@@ -102,8 +102,9 @@ double path_meeting_time(const FreePath& a, const FreePath& b, double reach, dou
 // With `constant`, also says whether the right-hand side is constant until then: every ball in play asleep, or in the
 // rolling or sliding regime with each of its friction terms outside its band (or at a zero that holds: no speed, no
 // spin about the normal). The island may then step in closed form (island.cpp). With `tails`, a spin about the
-// normal or a rolling speed inside its band does not count against that: it is listed there instead, to be followed
-// in closed form (band_tail.hpp), and a speed tail's end at the stop cut counts as an edge.
+// normal, a rolling speed or (where its closed form holds) a sliding ball's slip inside its band does not count
+// against that: it is listed there instead, to be followed in closed form (band_tail.hpp), and a tail's end (the
+// stop cut, the rolling entry) counts as an edge.
 double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
                          bool* constant = nullptr, std::vector<BandTail>* tails = nullptr);
 
