@@ -1,14 +1,33 @@
 // The contact force law (MODEL.md ch. 4): Hertz normal force with damping, Coulomb friction at the contact point,
 // rolling resistance and spin friction. Used for every contact: ball-ball, ball-cloth, ball-cushion, any collider.
 #pragma once
+#include <cstdint>
+
 #include "material.hpp"
 #include "vec.hpp"
 
 namespace shotlab {
 
-// Kinematics of one contact seen from ball A; the other body B is a ball or a static collider.
-struct ContactKinematics {
-  Vec3 normal;      // unit, from B towards A's centre
+// A contact normal known to point straight up, (0, 1, 0): the bed under a ball, a contact of every ball on the table
+// in every right-hand side. On it the law's vector algebra reduces to components (the functions below): the same
+// numbers, bar the sign of a zero, for a tenth less of a break's time.
+struct UpNormal {
+  operator Vec3() const { return kUp; }
+};
+inline double normal_component(const Vec3& a, const Vec3& n) { return glm::dot(a, n); }
+inline double normal_component(const Vec3& a, UpNormal) { return a.y; }
+inline Vec3 tangential_part(const Vec3& a, const Vec3& n) { return a - glm::dot(a, n) * n; }
+inline Vec3 tangential_part(const Vec3& a, UpNormal) { return {a.x, 0.0, a.z}; }
+inline Vec3 along_normal(double s, const Vec3& n) { return s * n; }
+inline Vec3 along_normal(double s, UpNormal) { return {0.0, s, 0.0}; }
+inline Vec3 normal_cross(const Vec3& n, const Vec3& a) { return glm::cross(n, a); }
+inline Vec3 normal_cross(UpNormal, const Vec3& a) { return {a.z, 0.0, -a.x}; }
+
+// Kinematics of one contact seen from ball A; the other body B is a ball or a static collider. Normal: Vec3, or
+// UpNormal for the bed.
+template <class Normal>
+struct Kinematics {
+  Normal normal;    // unit, from B towards A's centre
   double depth;     // penetration, m (> 0)
   Vec3 v_rel;       // velocity of A's centre minus B's, m/s
   Vec3 slip;        // velocity of A's surface point at the contact minus B's, m/s
@@ -21,6 +40,19 @@ struct ContactKinematics {
   double velocity_mobility;
   double spin_mobility;
 };
+using ContactKinematics = Kinematics<Vec3>;
+
+// Where a contact's friction terms act (ContactForce::bands). Each term is Coulomb friction of constant strength
+// while the motion it opposes is beyond its smoothing band (|k q| >= 1) and a stiff linear damper inside it; at the
+// band's edge its force has a kink, and so has a term inside its band where the rate limit starts to set its width.
+enum FrictionBand : uint8_t {
+  kSlipInBand = 1,   // sliding friction, against the slip at the contact point
+  kRollInBand = 2,   // rolling resistance, against the relative velocity of the centres
+  kSpinInBand = 4,   // spin friction, against the relative spin about the normal
+  kSlipLimited = 8,  // ... inside the band and widened by the rate limit (Smoothing::rate_limit)
+  kRollLimited = 16,
+  kSpinLimited = 32,
+};
 
 struct ContactForce {
   double normal = 0;       // |F_n|, N (clamped at >= 0)
@@ -28,7 +60,25 @@ struct ContactForce {
   Vec3 friction{0.0};      // the sliding-friction part of `force`, acting at the contact point, N
   Vec3 rolling{0.0};       // the rolling-resistance part of `force`, N
   double spin_torque = 0;  // torque on A about the normal, N m (B gets the opposite)
+  uint8_t bands = 0;       // FrictionBand bits of the terms that act
 };
+
+// What says which law a contact's friction follows: the FrictionBand bits, and the direction of each term (floats:
+// only their signs against each other's count). Kept for every contact at a step's ends (Dynamics::recorded).
+struct FrictionLaw {
+  FrictionLaw() = default;
+  explicit FrictionLaw(const ContactForce& f)
+      : friction(f.friction), rolling(f.rolling), spin_torque(static_cast<float>(f.spin_torque)), bands(f.bands) {}
+  glm::vec3 friction{0.0f}, rolling{0.0f};
+  float spin_torque = 0;
+  uint8_t bands = 0;
+};
+
+// Whether one contact's friction changed its law between two evaluations a and b that both push (normal > 0): a term
+// entered or left its band, or had its width set by the rate limit or no longer, or turned its saturated force
+// around (the motion it opposes went through the whole band in between). Such a kink inside an integrator step is
+// what its error estimate misjudges: the island ends the step there (EventDetector::first_law_change).
+bool friction_switched(const FrictionLaw& a, const FrictionLaw& b);
 
 // Friction smoothing: the sharpness k of fricstep (s/m) and the largest rate (1/s) at which a smoothed friction term
 // may relax the motion it opposes (Options::friction_rate_limit; 0: no limit).
@@ -58,12 +108,14 @@ double elastic_energy(const ContactMaterial& mat, double depth);
 // With clamp = false the normal force is not clamped at zero and the tangential terms act at it, even a negative one:
 // the smooth continuation of the law that a step takes up to where the force reaches zero (island.cpp), so that the
 // clamp's kink does not fall inside a step.
-ContactForce contact_force(const ContactMaterial& mat, const ContactKinematics& k, const Smoothing& smoothing,
+template <class Normal>
+ContactForce contact_force(const ContactMaterial& mat, const Kinematics<Normal>& k, const Smoothing& smoothing,
                            bool clamp = true);
 // The tangential terms alone (friction, rolling resistance, spin friction) of a contact carrying the normal force
 // out.normal > 0, added to `out`: contact_force's second half, and the whole bed force of a ball in the sliding
 // regime (regimes.hpp), whose normal force is its weight.
-void add_friction(const ContactMaterial& mat, const ContactKinematics& k, const Smoothing& smoothing, ContactForce& out);
+template <class Normal>
+void add_friction(const ContactMaterial& mat, const Kinematics<Normal>& k, const Smoothing& smoothing, ContactForce& out);
 
 // The torque a contact force puts on a ball of radius r whose outward contact normal (centre to contact point) is
 // -normal:  friction acts at r_c = -r n; rolling resistance comes with the torque (2/5) r n x F_roll, which keeps

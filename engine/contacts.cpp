@@ -84,6 +84,8 @@ ContactCache::ContactCache(const Model& model) : ball_ball(&model.material(kBall
   }
   for (size_t c = 0; c < model.colliders.size() && any; ++c)
     if (plane_normal[c] == Vec3{0.0}) clear.exclude(collider_bounds[c].lo, collider_bounds[c].hi);
+  floor_of.assign(model.colliders.size(), -1);
+  for (size_t k = 0; k < plane_like.size(); ++k) floor_of[plane_like[k]] = static_cast<int>(k);
   // A bounded plane's floor is worked out over its own extent (inset by a nanometre: level_floor wants the corners
   // strictly inside), so that a ball near a cushion, outside the clear column, finds the bed the fast way too.
   constexpr double kInset = 1e-9;  // m

@@ -1,6 +1,8 @@
 // Contact detection: which bodies touch, and the force each contact carries. The right-hand side, the diagnostics
 // and the event detector all see contacts through for_each_contact, so there is one definition of "touching".
 #pragma once
+#include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -38,6 +40,15 @@ struct StepContacts {
   // speed, m the lighter ball's mass), the coefficient of the velocity change C v^e t^(e+1) / ((e+1) m) at the onset
   // that no polynomial follows, and that contact's e and v.
   double onset_strength = 0, onset_exponent = 1.5, onset_speed = 0;
+};
+
+// One touching contact as an evaluation of the right-hand side saw it (Dynamics::recorded), seen from key.first: what
+// the event detector compares at a step's two ends (EventDetector::first_law_change).
+struct ContactRecord {
+  ContactKey key;
+  double depth;   // m
+  double normal;  // N, the normal force (negative where the step keeps the contact's law unclamped)
+  FrictionLaw friction;
 };
 
 struct Contact {
@@ -81,6 +92,7 @@ struct ContactCache {
   // a cushion, no longer visits the shape, its extent and its six pockets.
   std::vector<ColumnXZ> floor;
   std::vector<double> floor_y;
+  std::vector<int> floor_of;  // each collider's index in plane_like (and floor), or -1
   const ContactMaterial* ball_ball;
   // Each ball's mobilities (contact_force.hpp), constant for the model: 1/m (1/kg) and r^2/I (1/kg).
   std::vector<double> inv_mass, inv_inertia_r2;
@@ -116,16 +128,59 @@ void sleepers_near(const Model& model, const double* x, const ContactCache& cach
 template <class Fn>
 void near_colliders(const Model& model, const ContactCache& cache, const Vec3& p, double r, double within, Fn&& fn);
 
+// The penetration of a ball (centre p, radius r) into the k-th plane-like collider where its centre is over that
+// collider's level floor (ContactCache::floor): one subtraction, none when the centre is below the floor (a plane is
+// one-sided); nullopt when it is not over the floor.
+inline std::optional<std::optional<Penetration>> floor_penetration(const ContactCache& cache, size_t k, const Vec3& p,
+                                                                   double r) {
+  if (!cache.floor[k].holds(p, 0.0)) return std::nullopt;
+  const double height = p.y - cache.floor_y[k];
+  return height >= 0 ? std::optional<Penetration>(Penetration{r - height, kUp}) : std::nullopt;
+}
+
+// The penetration of a ball (centre p, radius r) into collider c (colliders.hpp, penetration), the way near_colliders
+// finds it: over a level floor by one subtraction instead of the shape's test of its extent and its holes.
+inline std::optional<Penetration> collider_penetration(const Model& model, const ContactCache& cache, int c, const Vec3& p,
+                                                       double r, double within = std::numeric_limits<double>::infinity()) {
+  if (cache.floor_of[c] >= 0)
+    if (const auto on_floor = floor_penetration(cache, static_cast<size_t>(cache.floor_of[c]), p, r)) return *on_floor;
+  return penetration(model.colliders[c].shape, p, r, within);
+}
+
 // Ball pairs (at least one awake, or any with `sleeping_pairs`) whose spheres overlap or come closer than `slack` m.
 void overlapping_pairs(const Model& model, const State& state, const double* x, ContactCache& cache,
                        double slack = 0.0, bool sleeping_pairs = false);
 
 // The kinematics of ball i (radius r, velocity v, spin w) against a static collider whose normal (towards the ball's
 // centre) is `normal`, penetrated by `depth`.
-inline ContactKinematics collider_kinematics(const ContactCache& cache, int i, double r, const Vec3& v, const Vec3& w,
-                                             const Vec3& normal, double depth) {
-  return {normal, depth, v, v + r * glm::cross(normal, w), glm::dot(w, normal), r,
+template <class Normal>
+Kinematics<Normal> collider_kinematics(const ContactCache& cache, int i, double r, const Vec3& v, const Vec3& w,
+                                       Normal normal, double depth) {
+  return {normal, depth, v, v + r * normal_cross(normal, w), normal_component(w, normal), r,
           cache.inv_mass[i] + cache.inv_inertia_r2[i], cache.inv_mass[i], cache.inv_inertia_r2[i]};
+}
+
+// The force of the contact of ball i (radius r, velocity v, spin w) with collider c, whose material is `mat`, at
+// penetration `pen`: through the law's component form where the normal is straight up (the bed).
+inline ContactForce collider_force(const ContactMaterial& mat, const ContactCache& cache, int i, double r, const Vec3& v,
+                                   const Vec3& w, const Penetration& pen, const Smoothing& smoothing, bool clamp = true) {
+  return pen.normal == kUp ? contact_force(mat, collider_kinematics(cache, i, r, v, w, UpNormal{}, pen.depth), smoothing, clamp)
+                           : contact_force(mat, collider_kinematics(cache, i, r, v, w, pen.normal, pen.depth), smoothing, clamp);
+}
+
+// The kinematics of balls i and j (centres d = |p_i - p_j| apart, d > 0 unless they coincide) from i's side: the normal
+// from j to i, A's contact point at -R_i n and B's at +R_j n.
+inline ContactKinematics pair_kinematics(const Model& model, const ContactCache& cache, const double* x, int i, int j) {
+  const double ri = model.balls[i].radius, rj = model.balls[j].radius;
+  const Vec3 d = position(x, i) - position(x, j);
+  const double dist = glm::length(d);
+  const Vec3 nrm = dist > 0 ? d / dist : kUp;
+  const Vec3 wi = spin(x, i), wj = spin(x, j);
+  const Vec3 vrel = velocity(x, i) - velocity(x, j);
+  const Vec3 slip = vrel + ri * glm::cross(nrm, wi) + rj * glm::cross(nrm, wj);
+  return {nrm, ri + rj - dist, vrel, slip, glm::dot(wi - wj, nrm), ri,
+          cache.inv_mass[i] + cache.inv_inertia_r2[i] + cache.inv_mass[j] + cache.inv_inertia_r2[j],
+          cache.inv_mass[i] + cache.inv_mass[j], cache.inv_inertia_r2[i] + cache.inv_inertia_r2[j]};
 }
 
 // Calls fn(const Contact&) for every touching ball-collider and ball-ball pair of balls in play. `x` is the state

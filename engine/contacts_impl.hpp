@@ -104,12 +104,9 @@ void near_colliders(const Model& model, const ContactCache& cache, const Vec3& p
   const double reach = r + within;
   for (size_t k = 0; k < cache.plane_like.size(); ++k) {
     const int c = cache.plane_like[k];
-    if (!cache.floor[k].holds(p, 0.0)) {
-      probe(c);
-    } else if (cache.collider_bounds[c].may_touch(p, reach)) {
-      const double height = p.y - cache.floor_y[k];  // a centre below the floor touches nothing (one-sided)
-      if (height >= 0) fn(c, Penetration{r - height, kUp});
-    }
+    const auto on_floor = floor_penetration(cache, k, p, r);
+    if (!on_floor) probe(c);
+    else if (*on_floor && cache.collider_bounds[c].may_touch(p, reach)) fn(c, **on_floor);
   }
   // Inside the clear column nothing else can be in reach.
   if (cache.clear.holds(p, reach)) return;
@@ -121,8 +118,6 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
                       bool with_inactive) {
   const Smoothing k{model.options.friction_sharpness, model.options.friction_rate_limit};
   const int n = state.ball_count();
-  const std::vector<double>& inv_mass = cache.inv_mass;  // mobilities of each ball (contact_force.hpp)
-  const std::vector<double>& inv_inertia_r2 = cache.inv_inertia_r2;
   auto listed = [](const std::vector<ContactKey>& keys, int a, int b) {
     return !keys.empty() && std::binary_search(keys.begin(), keys.end(), ContactKey{a, b});
   };
@@ -133,8 +128,8 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
     const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
     near_colliders(model, cache, p, r, 0.0, [&](int c, const Penetration& pen) {
       if (pen.depth <= 0 || listed(cache.step.separated, i, -1 - c)) return;
-      const ContactKinematics kin = collider_kinematics(cache, i, r, v, w, pen.normal, pen.depth);
-      const ContactForce f = contact_force(*cache.collider_material[c], kin, k, !listed(cache.step.pushing, i, -1 - c));
+      const ContactForce f = collider_force(*cache.collider_material[c], cache, i, r, v, w, pen, k,
+                                            !listed(cache.step.pushing, i, -1 - c));
       fn(Contact{i, -1, c, pen.depth, pen.normal, p - r * pen.normal, f});
     });
   }
@@ -148,17 +143,13 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
     if ((state.sleeping(i) && state.sleeping(j) && !with_inactive) || (!near_known && listed(cache.step.separated, a, b)))
       continue;
     const double ri = model.balls[i].radius, rj = model.balls[j].radius;
-    const Vec3 d = position(x, i) - position(x, j);
-    if (near_known && (glm::dot(d, d) >= (ri + rj) * (ri + rj) || !state.in_play[i] || !state.in_play[j])) continue;
-    const double dist = glm::length(d);
-    const Vec3 nrm = dist > 0 ? d / dist : kUp;
-    const Vec3 wi = spin(x, i), wj = spin(x, j);
-    const Vec3 vrel = velocity(x, i) - velocity(x, j);
-    const Vec3 slip = vrel + ri * glm::cross(nrm, wi) + rj * glm::cross(nrm, wj);
-    const ContactKinematics kin{nrm, ri + rj - dist, vrel, slip, glm::dot(wi - wj, nrm), ri,
-                                inv_mass[i] + inv_inertia_r2[i] + inv_mass[j] + inv_inertia_r2[j],
-                                inv_mass[i] + inv_mass[j], inv_inertia_r2[i] + inv_inertia_r2[j]};
-    fn(Contact{i, j, -1, kin.depth, nrm, position(x, i) - ri * nrm, contact_force(bb, kin, k, !listed(cache.step.pushing, a, b))});
+    if (near_known) {
+      const Vec3 d = position(x, i) - position(x, j);
+      if (glm::dot(d, d) >= (ri + rj) * (ri + rj) || !state.in_play[i] || !state.in_play[j]) continue;
+    }
+    const ContactKinematics kin = pair_kinematics(model, cache, x, i, j);
+    fn(Contact{i, j, -1, kin.depth, kin.normal, position(x, i) - ri * kin.normal,
+               contact_force(bb, kin, k, !listed(cache.step.pushing, a, b))});
   }
 }
 

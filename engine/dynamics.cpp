@@ -7,16 +7,22 @@ namespace shotlab {
 Dynamics::Dynamics(const Model& model, const State& state)
     : model_(model), state_(state), cache_(model), force_(model.balls.size()), torque_(model.balls.size()) {}
 
-void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/) {
-  ++evaluations_;
-  const int n = state_.ball_count();
-  dxdt.assign(x.size(), 0.0);
-  for (int i = 0; i < n; ++i) {
-    force_[i] = state_.active(i) ? model_.balls[i].mass * model_.options.gravity : Vec3{0.0};
-    torque_[i] = Vec3{0.0};
-  }
+template <bool Record>
+void Dynamics::add_contacts(const StateVector& x) {
   for_each_contact(model_, state_, x.data(), cache_, [&](const Contact& c) {
     const ContactForce& f = c.force;
+    if constexpr (Record) {
+      // A contact between two balls is recorded from the lower-numbered one: the other sees the friction and rolling
+      // forces turned around and the same spin torque about its own normal (-n).
+      ContactRecord& r = recorded_.emplace_back(ContactRecord{{c.ball, -1 - c.collider}, c.depth, f.normal, FrictionLaw(f)});
+      if (c.other_ball > c.ball) {
+        r.key.second = c.other_ball;
+      } else if (c.other_ball >= 0) {
+        r.key = {c.other_ball, c.ball};
+        r.friction.friction = -r.friction.friction;
+        r.friction.rolling = -r.friction.rolling;
+      }
+    }
     const double r = model_.balls[c.ball].radius;
     const Vec3 lever = tangential_torque(f, c.normal, r);
     force_[c.ball] += f.force;
@@ -30,6 +36,23 @@ void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/)
       torque_[c.other_ball] += (rb == r ? lever : tangential_torque(f, c.normal, rb)) - f.spin_torque * c.normal;
     }
   });
+}
+
+void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/) {
+  ++evaluations_;
+  const int n = state_.ball_count();
+  dxdt.assign(x.size(), 0.0);
+  for (int i = 0; i < n; ++i) {
+    force_[i] = state_.active(i) ? model_.balls[i].mass * model_.options.gravity : Vec3{0.0};
+    torque_[i] = Vec3{0.0};
+  }
+  // Two instances of the contact pass, so that the stages that do not record pay nothing for it.
+  if (recording_) {
+    recorded_.clear();
+    add_contacts<true>(x);
+  } else {
+    add_contacts<false>(x);
+  }
   for (int i = 0; i < n; ++i) {
     if (!state_.active(i)) continue;  // pocketed or asleep: frozen, zero derivative
     const BallSpec& b = model_.balls[i];

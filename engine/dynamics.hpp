@@ -33,8 +33,16 @@ class Dynamics {
   // The balls' flags changed since the step's lists were made (one woke, one left play): the right-hand side sweeps
   // for touching pairs again until the next step's lists come.
   void sweep_again() { cache_.step.near_known = false; }
+  // What each contact's friction did in the last evaluation made while recording (on unless a stepper turned it off
+  // for the inner stages of its step, stepper.hpp): the island compares it at a step's two ends to find where a
+  // friction term switched its law or a contact let go (EventDetector::first_law_change). In the order evaluated.
+  void set_recording(bool on) { recording_ = on; }
+  const std::vector<ContactRecord>& recorded() const { return recorded_; }
 
  private:
+  // Every contact's force and torque into force_ and torque_; with Record, also into recorded_.
+  template <bool Record>
+  void add_contacts(const StateVector& x);
   void apply_rods(const StateVector& x, StateVector& dxdt) const;
 
   const Model& model_;
@@ -42,6 +50,8 @@ class Dynamics {
   ContactCache cache_;
   std::vector<Vec3> force_, torque_;
   long evaluations_ = 0;
+  bool recording_ = true;
+  std::vector<ContactRecord> recorded_;
 };
 
 }  // namespace shotlab

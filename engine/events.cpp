@@ -64,7 +64,7 @@ Motion classify(const Model& model, const ContactCache& cache, const State& stat
   return no_slip ? Motion::Rolling : Motion::Sliding;
 }
 
-const double* EventDetector::balls_at(const StepSpan& span, double t, const Key& key) {
+const double* EventDetector::balls_at(const StepSpan& span, double t, const Key& key) const {
   span.interpolate_ball(t, scratch_, key.first);
   if (key.second >= 0) span.interpolate_ball(t, scratch_, key.second);
   return scratch_.data();
@@ -103,11 +103,87 @@ double EventDetector::depth(const Key& key, const double* x) const {
   const auto [i, other] = key;
   const double ri = model_.balls[i].radius;
   if (other >= 0) return ri + model_.balls[other].radius - glm::length(position(x, i) - position(x, other));
-  const auto pen = penetration(model_.colliders[-1 - other].shape, position(x, i), ri, kTouch);
+  const auto pen = collider_penetration(model_, cache_, -1 - other, position(x, i), ri, kTouch);
   return pen ? pen->depth : -1.0;
 }
 
+ContactForce EventDetector::force_at(const Key& key, const double* x) const {
+  const auto [i, other] = key;
+  const Smoothing smoothing{model_.options.friction_sharpness, model_.options.friction_rate_limit};
+  if (other >= 0) {
+    const ContactKinematics kin = pair_kinematics(model_, cache_, x, i, other);
+    return kin.depth > 0 ? contact_force(*cache_.ball_ball, kin, smoothing) : ContactForce{};
+  }
+  const double r = model_.balls[i].radius;
+  const auto pen = collider_penetration(model_, cache_, -1 - other, position(x, i), r, 0.0);
+  if (!pen || pen->depth <= 0) return {};
+  return collider_force(*cache_.collider_material[-1 - other], cache_, i, r, velocity(x, i), spin(x, i), *pen, smoothing);
+}
+
 bool EventDetector::touches(const Key& key, const double* x) const { return depth(key, x) > 0; }
+
+EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, const std::vector<ContactRecord>& start,
+                                                          const std::vector<ContactRecord>& end) const {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  LawChanges first{inf, inf};
+  // Only the earliest change ends the step: a contact that has not changed by then is not located.
+  auto by = [&] { return std::min({first.release, first.friction, span.t1}); };
+  const double resolution = switch_resolution(span.t1 - span.t0);
+  // Contacts within kTouch of zero depth carry nothing worth a cut (frozen balls touch at zero depth, and round-off
+  // makes their forces of 1e-17 N come and go), as for contact changes.
+  for (size_t a = 0, b = 0; a < start.size(); ++a) {
+    const ContactRecord& s0 = start[a];
+    while (b < end.size() && end[b].key < s0.key) ++b;
+    if (s0.normal <= 0 || s0.depth <= kTouch) continue;
+    const ContactRecord* e = b < end.size() && end[b].key == s0.key ? &end[b] : nullptr;
+    const Key& k = s0.key;
+    if (!e || e->normal <= 0) {
+      // Located to 0.1 ns, past the point: the force is continuous through zero there, so a pulling force held for
+      // 0.1 ns costs an impulse of order (dF/dt) 1e-20 N s, and the step that follows sees the contact released.
+      auto released_at = [&](double t) { return released(k, balls_at(span, t, k)); };
+      if (by() < span.t1 && !released_at(by())) continue;
+      first.release = bisect(span.t0, by(), released_at);
+    } else if (e->depth > kTouch && friction_switched(s0.friction, e->friction) &&
+               moves(k, s0.friction, e->friction, span.t1 - span.t0)) {
+      // Where the law first differs from the start's; where the contact stops pushing on the way, it has none. A
+      // switch within `resolution` of the start is where the last step was cut: the law after it is the one to keep
+      // (and one within it of the end is where this trial was cut).
+      FrictionLaw law = s0.friction;
+      auto switched_at = [&](double t) {
+        const ContactForce f = force_at(k, balls_at(span, t, k));
+        return f.normal > 0 && friction_switched(law, FrictionLaw(f));
+      };
+      double from = span.t0;
+      for (int pass = 0; pass < 2; ++pass) {
+        const double until = by();
+        if (until < span.t1 && !switched_at(until)) break;
+        const double at = bisect(from, until, switched_at, resolution);
+        if (at >= span.t1 - resolution) break;
+        if (at > span.t0 + resolution) {
+          first.friction = at;
+          break;
+        }
+        from = at;
+        law = FrictionLaw(force_at(k, balls_at(span, at, k)));
+      }
+    }
+  }
+  return first;
+}
+
+// A friction term whose force changes by dF (N) over a step of h seconds can move the velocities by at most about
+// dF * mobility * h (the slip mobility, 3.5/m a ball, bounds what any term does to any component in m/s, the spin's
+// surface speed included), so a switch whose terms change by so little that this is under 1 % of the absolute tolerance
+// is no kink worth a cut: a rolling resistance crossing its band while the ball slides, where its weight is nothing,
+// or a resting contact's terms stirred by round-off.
+bool EventDetector::moves(const Key& k, const FrictionLaw& a, const FrictionLaw& b, double h) const {
+  constexpr double kShare = 0.01;
+  double mobility = cache_.inv_mass[k.first] + cache_.inv_inertia_r2[k.first];
+  if (k.second >= 0) mobility += cache_.inv_mass[k.second] + cache_.inv_inertia_r2[k.second];
+  const double df = glm::length(b.friction - a.friction) + glm::length(b.rolling - a.rolling) +
+                    std::abs(b.spin_torque - a.spin_torque) / model_.balls[k.first].radius;
+  return df * mobility * h >= kShare * model_.integrator.abs_tol;
+}
 
 bool EventDetector::released(const Key& key, const double* x) const {
   const auto [i, other] = key;
@@ -117,7 +193,7 @@ bool EventDetector::released(const Key& key, const double* x) const {
     const double dist = glm::length(d), depth = ri + model_.balls[other].radius - dist;
     return depth <= 0 || normal_force(*cache_.ball_ball, depth, -glm::dot(velocity(x, i) - velocity(x, other), d) / dist) <= 0;
   }
-  const auto pen = penetration(model_.colliders[-1 - other].shape, position(x, i), ri, 0.0);
+  const auto pen = collider_penetration(model_, cache_, -1 - other, position(x, i), ri, 0.0);
   return !pen || pen->depth <= 0 ||
          normal_force(*cache_.collider_material[-1 - other], pen->depth, -glm::dot(velocity(x, i), pen->normal)) <= 0;
 }
@@ -151,20 +227,13 @@ double EventDetector::time_to_touch(const StepSpan& span, const ContactKey& key)
     if (gap < 0) return 0.0;
     closing = -glm::dot(velocity(x, i) - velocity(x, other), d) / dist;
   } else {
-    const auto pen = penetration(model_.colliders[-1 - other].shape, position(x, i), model_.balls[i].radius);
+    const auto pen = collider_penetration(model_, cache_, -1 - other, position(x, i), model_.balls[i].radius);
     if (!pen) return inf;
     gap = -pen->depth;
     if (gap < 0) return 0.0;
     closing = -glm::dot(velocity(x, i), pen->normal);
   }
   return gap < kTouch && closing > 0 ? gap / closing : inf;
-}
-
-// A release to 0.1 ns, past the point: the force is continuous through zero there, so a pulling force held for
-// 0.1 ns costs an impulse of order (dF/dt) 1e-20 N s; and the step that follows must see the contact released,
-// which the island's own test of the sign (StepContacts) does only at some distance from the root.
-double EventDetector::first_release(const StepSpan& span, const std::vector<ContactKey>& pushing) {
-  return first(span, pushing, kTimeResolution, &EventDetector::released);
 }
 
 std::string EventDetector::body_name(int other) const {

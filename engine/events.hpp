@@ -2,6 +2,7 @@
 // what held at its start (contacts, motion state, in play) and locates each change by bisection on the step's
 // dense output, so an event's time does not depend on where the step happened to end.
 #pragma once
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +39,12 @@ struct Exit {
 // step (first_contact_change): their times are good to 0.1 ns.
 constexpr double kTimeResolution = 1e-10;
 
+// How closely a friction switch is located (first_law_change), as a share of the step: the step is cut just past it,
+// and a kink left within this share of a step's end costs nothing. A switch found that close to a trial's end is where
+// the trial was cut to end.
+constexpr double kSwitchResolution = 1e-4;
+inline double switch_resolution(double step) { return std::max(kTimeResolution, kSwitchResolution * step); }
+
 // How closely (s) the onset of a contact left out of a step is located (first_touch). The step ends there and
 // the next one starts with the contact's force, so this is time spent on the wrong law: a damped contact's force
 // jumps to c v at zero depth, and 0.1 ns late (an event's resolution) misses an impulse of c v 1e-10 N s, which floored
@@ -68,9 +75,16 @@ class EventDetector {
   // speed there; 0 when it touches already; +inf when it is not closing, is kTouch or more apart (the next step leaves
   // it out and finds its onset) or cannot touch the collider at all.
   double time_to_touch(const StepSpan& span, const ContactKey& key) const;
-  // Earliest time in the span at which one of the `pushing` contacts stops pushing: its unclamped normal force
-  // reaches zero, or it ends; +inf when none.
-  double first_release(const StepSpan& span, const std::vector<ContactKey>& pushing);
+  // Earliest times in the span at which a contact that pushed at its start stops pushing (its normal force reaches
+  // zero, where the clamp cuts in, or it ends) and at which one that pushes at both ends switches its friction's law
+  // (friction_switched: a term enters or leaves its smoothing band, or is turned around through it); +inf when none.
+  // Found by comparing the right-hand side's records at the span's two ends (Dynamics::recorded, both sorted by key),
+  // located on the span.
+  struct LawChanges {
+    double release, friction;
+  };
+  LawChanges first_law_change(const StepSpan& span, const std::vector<ContactRecord>& start,
+                              const std::vector<ContactRecord>& end) const;
 
  private:
   using Key = ContactKey;
@@ -78,7 +92,11 @@ class EventDetector {
   // The contacts at x (now_), and which of them began (begun_) or ended (ended_) since the snapshot.
   void changes(const State& state, const double* x);
   double depth(const Key& key, const double* x) const;
+  // The contact's force at x by the plain law, seen from key.first (none where it does not touch).
+  ContactForce force_at(const Key& key, const double* x) const;
   bool touches(const Key& key, const double* x) const;   // depth > 0
+  // Whether a friction switch of contact `key` between laws a and b, over a step of h seconds, can matter (events.cpp).
+  bool moves(const Key& key, const FrictionLaw& a, const FrictionLaw& b, double h) const;
   bool released(const Key& key, const double* x) const;  // not touching, or its unclamped normal force <= 0
   // The earliest time in the span at which changed(key) holds for one of the keys, to `resolution`; `which`, when
   // given, gets that key.
@@ -87,7 +105,7 @@ class EventDetector {
   std::string body_name(int other) const;
   // The key's balls (one, or two for a ball pair) at time t of the span, in scratch_; the other balls' numbers there
   // are stale. What every bisection's test looks at.
-  const double* balls_at(const StepSpan& span, double t, const Key& key);
+  const double* balls_at(const StepSpan& span, double t, const Key& key) const;
 
   const Model& model_;
   ContactCache cache_;
@@ -96,7 +114,7 @@ class EventDetector {
   State memo_;                 // the flags and state of the last collect (its time unused) ...
   std::vector<Key> memo_keys_;  // ... and what it found
   std::vector<Motion> motion_;
-  StateVector scratch_;
+  mutable StateVector scratch_;
 };
 
 }  // namespace shotlab

@@ -46,6 +46,12 @@ Model sub_model(const Model& world, const std::vector<int>& balls) {
   return m;
 }
 
+std::vector<double> radii(const Model& model) {
+  std::vector<double> out;
+  for (const BallSpec& b : model.balls) out.push_back(b.radius);
+  return out;
+}
+
 State sub_state(const State& world, const std::vector<int>& balls) {
   const size_t n = balls.size();
   State s{world.time,          StateVector(kBallDofs * n), std::vector<uint8_t>(n), std::vector<uint8_t>(n),
@@ -63,7 +69,7 @@ Island::Island(const Model& world, const State& world_state, std::vector<int> ba
       integ_(sub_state(world_state, balls_)),
       dynamics_(model_, integ_),
       onset_growth_(std::pow(onset_factor, 0.2)),
-      stepper_(make_stepper(model_.integrator, onset_factor)),
+      stepper_(make_stepper(model_.integrator, onset_factor, radii(model_))),
       detector_(model_),
       regimes_(model_),
       cap_cache_(model_),
@@ -87,6 +93,7 @@ double Island::energy() {
 }
 
 void Island::restart() {
+  end_record_is_start_ = false;
   dynamics_.sweep_again();
   span_.f1.resize(span_.x1.size());
   dynamics_(span_.x1, span_.f1, span_.t1);
@@ -124,6 +131,8 @@ bool Island::rewind(double t) {
   integ_.time = span_.t1;
   stepper_->reset();
   detector_.reset(integ_);
+  dynamics_(span_.x1, scratch_, span_.t1);  // for its contact record there (integrate), the step's f0 kept as it was
+  end_record_is_start_ = false;
   const auto undone = std::find_if(events_.begin(), events_.end(), [&](const Event& e) { return e.time > span_.t0; });
   events_.erase(undone, events_.end());
   while (span_.t1 < t)
@@ -163,7 +172,10 @@ bool Island::step(double limit) {
   const bool changed = !std::includes(now.separated.begin(), now.separated.end(), last.separated.begin(), last.separated.end()) ||
                        !std::includes(now.pushing.begin(), now.pushing.end(), last.pushing.begin(), last.pushing.end());
   f_start_ = span_.f1;
-  if (changed) dynamics_(span_.x1, f_start_, span_.t1);
+  if (changed) {
+    dynamics_(span_.x1, f_start_, span_.t1);
+    end_record_is_start_ = false;
+  }
   // The synchronisation time ends the step exactly (round-off in t1 + (limit - t1) is snapped below).
   const bool to_limit = dt >= limit - span_.t1;
   if (to_limit) dt = limit - span_.t1;
@@ -254,6 +266,7 @@ bool Island::step(double limit) {
 // own closed form instead (band_tail.hpp), in the interpolant too. The step size suggestion is left alone: a closed
 // form estimates no error to base one on.
 void Island::closed_form_step(double t1) {
+  end_record_is_start_ = false;
   StateVector &x = trial_.x1, &f = trial_.f1;
   const StateVector& f0 = trial_.f0;
   const double h = t1 - trial_.t0;
@@ -293,6 +306,16 @@ bool Island::integrate(double dt, double limit, double& t) {
   bool at_onset = false;  // the step was cut where a contact begins
   std::optional<ContactKey> aimed;  // the contact left out of the step where it was cut to end (first_touch)
   const long rejected_before = stats_.rejected_steps;
+  // The contacts at the step's start, as the last evaluation there recorded them (the step's end before, or the start
+  // again where the contact lists changed), to compare each trial's end with.
+  auto by_key = [](const ContactRecord& a, const ContactRecord& b) { return a.key < b.key; };
+  if (end_record_is_start_) {
+    start_record_.swap(end_record_);
+  } else {
+    start_record_ = dynamics_.recorded();
+    std::sort(start_record_.begin(), start_record_.end(), by_key);
+  }
+  end_record_is_start_ = false;
   // A contact that begins at the step's start (StepContacts::onset) makes an error the estimate understates. The
   // step starts at the length where that error is 0.9 of the tolerance: the strict controller would shrink a longer
   // trial to about there anyway, one rejection (six right-hand sides) at a time, and a step that ends at an onset hands
@@ -315,10 +338,13 @@ bool Island::integrate(double dt, double limit, double& t) {
     tried = dt;
     if (stepper_->try_step(dynamics_, x, f, t, dt, from_onset)) {
       // A contact that begins or ends inside the step puts a kink (linear damping: a jump) in the force, where every
-      // embedded error estimate misjudges a high-order step (MODEL.md, "Numerical facts"). Redo the step so that it
-      // ends at the change, located on this step's dense output; the next step then starts at the kink. An onset or a
-      // release of a contact whose law the step kept (StepContacts) ends the step however early it comes; other onsets
-      // and ends in the first 1 % of a step are left alone, where a redone step's successor finds them.
+      // embedded error estimate misjudges a high-order step (MODEL.md, "Numerical facts"), and so does a friction term
+      // that enters or leaves its smoothing band (friction_switched): a slip driven through the band by a hard contact
+      // crosses it in a fraction of the step, a sign switch the estimate may not see at all (in a breaking rack such
+      // steps were 8-13 times the tolerance). Redo the step so that it ends at the change, located on this step's
+      // dense output; the next step then starts at the kink. An onset or a release of a contact whose law the step
+      // kept (StepContacts) ends the step however early it comes; other changes in the first 1 % of a step are left
+      // alone, where a redone step's successor finds them.
       if (!adaptive) break;
       if (retries == 0) passed = tried;
       trial.t1 = t;
@@ -329,7 +355,13 @@ bool Island::integrate(double dt, double limit, double& t) {
       ContactKey touching;
       const double touch = detector_.first_touch(trial, kept.separated, &touching);
       const double onset = std::min(change.begin > early ? change.begin : inf, touch);
-      const double cut = std::min({onset, change.end > early ? change.end : inf, detector_.first_release(trial, kept.pushing)});
+      // Releases and friction switches, however early: a contact whose law the step kept unclamped would pull all
+      // through the step, and a friction switch just after the start is a slip driven through its band in a moment,
+      // where the step's first stage would see the friction before it turned.
+      end_record_ = dynamics_.recorded();
+      std::sort(end_record_.begin(), end_record_.end(), by_key);
+      const auto law = detector_.first_law_change(trial, start_record_, end_record_);
+      const double cut = std::min({onset, change.end > early ? change.end : inf, law.release, law.friction});
       if (cut >= t - kOnsetResolution) {
         // A step redone to end where a contact left out of it touches was aimed at a root of the last trial's
         // interpolant, which may fall short of the redone step's own: ended there, the next step would start a few
@@ -373,6 +405,7 @@ bool Island::integrate(double dt, double limit, double& t) {
   }
   if (retries == 0 && tried == limit - span_.t1) t = limit;
   stats_.last_step = tried;
+  end_record_is_start_ = adaptive;  // the accepted trial's end, sorted: the next step's start unless restarted
   // After a rejection, do not grow the step at once: odeint's controller would grow it up to 5x and, on a
   // stability-limited problem (the stiff friction switch), be rejected again. A step cut short where a contact begins,
   // ends or releases passed the error control at its first length, so the next one may try that again (in a breaking

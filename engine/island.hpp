@@ -124,6 +124,9 @@ class Island {
   ContactCache cap_cache_;  // broad phase of the step cap
   StepContacts plan_;       // the step's contact lists as the cap finds them (then the last step's, swapped out)
   StateVector f_start_;     // f at the step's start
+  std::vector<ContactRecord> start_record_, end_record_;  // the contacts there and at a trial's end (Dynamics::recorded),
+                                                         // sorted by key
+  bool end_record_is_start_ = false;  // end_record_ is the record at the step's start (the last step's accepted end)
   StepSpan trial_;          // the step's trial (buffers reused from step to step)
   StepSpan span_;
   double dt_next_;

@@ -8,14 +8,40 @@
 
 namespace shotlab {
 namespace odeint = boost::numeric::odeint;
+BallErrorChecker::BallErrorChecker(double abs_tol, double rel_tol, const std::vector<double>& radii) : rel_tol_(rel_tol) {
+  abs_tol_.reserve(kBallDofs * radii.size());
+  for (double r : radii)
+    for (int k = 0; k < kBallDofs; ++k) abs_tol_.push_back(k < 6 ? abs_tol : abs_tol / r);
+}
+
+double BallErrorChecker::error(const StateVector& x, const StateVector& dxdt, const StateVector& err, double dt) const {
+  // The largest ratio, divided out only where it grows: a division or two a step, not one a component.
+  double worst = 0;
+  for (size_t i = 0; i < abs_tol_.size(); ++i) {
+    const double allowed = abs_tol_[i] + rel_tol_ * (std::abs(x[i]) + dt * std::abs(dxdt[i]));
+    if (std::abs(err[i]) > worst * allowed) worst = std::abs(err[i]) / allowed;
+  }
+  return worst;
+}
+
 namespace {
+
+// An error-controlled explicit pair (Cash-Karp 54, Dormand-Prince 5) with that checker.
+template <class Pair>
+using Controlled = odeint::controlled_runge_kutta<Pair, BallErrorChecker>;
+template <class Pair>
+Controlled<Pair> make_controlled(double abs_tol, double rel_tol, const std::vector<double>& radii) {
+  return Controlled<Pair>(BallErrorChecker(abs_tol, rel_tol, radii));
+}
 
 // Euler and RK4: always accept, never change dt (the caller passes the fixed step).
 template <class S>
 class FixedStepper final : public Stepper {
  public:
   bool try_step(Dynamics& f, StateVector& x, StateVector& dxdt, double& t, double& dt, bool) override {
+    f.set_recording(false);
     stepper_.do_step(std::ref(f), x, dxdt, t, dt);
+    f.set_recording(true);
     t += dt;
     f(x, dxdt, t);
     return true;
@@ -34,7 +60,10 @@ class ControlledStepper final : public Stepper {
   ControlledStepper(S stepper, std::optional<S> strict) : stepper_(std::move(stepper)), strict_(std::move(strict)) {}
   bool try_step(Dynamics& f, StateVector& x, StateVector& dxdt, double& t, double& dt, bool onset) override {
     S& s = onset && strict_ ? *strict_ : stepper_;
-    if (s.try_step(std::ref(f), x, dxdt, t, dt) != odeint::success) return false;
+    f.set_recording(false);
+    const bool accepted = s.try_step(std::ref(f), x, dxdt, t, dt) == odeint::success;
+    f.set_recording(true);
+    if (!accepted) return false;
     f(x, dxdt, t);
     return true;
   }
@@ -50,22 +79,23 @@ class ControlledStepper final : public Stepper {
   std::optional<S> strict_;
 };
 
-// Dormand-Prince 5 is first-same-as-last: a successful step hands back f at its end for free. The caller passes
-// f at the start, so the strict twin (see above) needs none of the other's history.
+// Dormand-Prince 5 is first-same-as-last: a successful step hands back f at its end for free, its last stage, which
+// is therefore recorded like every stage (Dynamics::recorded). The caller passes f at the start, so the strict twin
+// (see above) needs none of the other's history.
 class DormandPrinceStepper final : public Stepper {
-  using Controlled = odeint::result_of::make_controlled<odeint::runge_kutta_dopri5<StateVector>>::type;
+  using Pair = odeint::runge_kutta_dopri5<StateVector>;
 
  public:
-  DormandPrinceStepper(double atol, double rtol, double onset_factor)
-      : stepper_(odeint::make_controlled(atol, rtol, odeint::runge_kutta_dopri5<StateVector>())),
-        strict_(odeint::make_controlled(atol / onset_factor, rtol / onset_factor, odeint::runge_kutta_dopri5<StateVector>())) {}
+  DormandPrinceStepper(double atol, double rtol, double onset_factor, const std::vector<double>& radii)
+      : stepper_(make_controlled<Pair>(atol, rtol, radii)),
+        strict_(make_controlled<Pair>(atol / onset_factor, rtol / onset_factor, radii)) {}
   bool try_step(Dynamics& f, StateVector& x, StateVector& dxdt, double& t, double& dt, bool onset) override {
     return (onset ? strict_ : stepper_).try_step(std::ref(f), x, dxdt, t, dt) == odeint::success;
   }
   void reset() override { stepper_.reset(), strict_.reset(); }
 
  private:
-  Controlled stepper_, strict_;
+  Controlled<Pair> stepper_, strict_;
 };
 
 // An explicit pair's weights: nodes c, the higher order's weights b, the embedded one's bhat.
@@ -128,17 +158,16 @@ double onset_factor(const Model& model) {
   return factor;
 }
 
-std::unique_ptr<Stepper> make_stepper(const IntegratorOptions& o, double onset_factor) {
+std::unique_ptr<Stepper> make_stepper(const IntegratorOptions& o, double onset_factor, const std::vector<double>& radii) {
   switch (o.method) {
     case Method::Euler: return std::make_unique<FixedStepper<odeint::euler<StateVector>>>();
     case Method::RK4: return std::make_unique<FixedStepper<odeint::runge_kutta4<StateVector>>>();
     case Method::CashKarp54: {
-      auto make = [&](double scale) {
-        return odeint::make_controlled(o.abs_tol / scale, o.rel_tol / scale, odeint::runge_kutta_cash_karp54<StateVector>());
-      };
-      return std::make_unique<ControlledStepper<decltype(make(1.0))>>(make(1.0), make(onset_factor));
+      using Pair = odeint::runge_kutta_cash_karp54<StateVector>;
+      auto make = [&](double scale) { return make_controlled<Pair>(o.abs_tol / scale, o.rel_tol / scale, radii); };
+      return std::make_unique<ControlledStepper<Controlled<Pair>>>(make(1.0), make(onset_factor));
     }
-    case Method::DormandPrince5: return std::make_unique<DormandPrinceStepper>(o.abs_tol, o.rel_tol, onset_factor);
+    case Method::DormandPrince5: return std::make_unique<DormandPrinceStepper>(o.abs_tol, o.rel_tol, onset_factor, radii);
     case Method::BulirschStoer: {
       using BS = odeint::bulirsch_stoer<StateVector>;
       return std::make_unique<ControlledStepper<BS>>(BS(o.abs_tol, o.rel_tol), std::nullopt);

@@ -1,6 +1,7 @@
 // The odeint methods behind one interface, so the simulation loop (simulation.cpp) is written once.
 #pragma once
 #include <memory>
+#include <vector>
 
 #include "dynamics.hpp"
 #include "model.hpp"
@@ -12,12 +13,38 @@ class Stepper {
  public:
   virtual ~Stepper() = default;
   // One attempt from (x, t) with step dt. On entry dxdt = f(x, t). On success x, t and dxdt (= f at the new point)
-  // advance and dt becomes the suggested next step; on rejection x, t, dxdt are unchanged and dt shrinks. `onset`:
+  // advance and dt becomes the suggested next step, and f's last evaluation, whose contacts it recorded
+  // (Dynamics::recorded), is the one at the new point; on rejection x, t, dxdt are unchanged and dt shrinks. `onset`:
   // the step starts where a contact begins, and an error-controlled method holds its estimate to the share of the
   // tolerance that makes up for what the estimate misses there (onset_underestimate).
   virtual bool try_step(Dynamics& f, StateVector& x, StateVector& dxdt, double& t, double& dt, bool onset) = 0;
   // Forget history (FSAL derivative, extrapolation tables) after the system changed discontinuously.
   virtual void reset() {}
+};
+
+// The error control of Cash-Karp 54 and Dormand-Prince 5 (odeint's error checker for their controlled steppers): a
+// step passes when the largest |err_i| / (atol_i + rel_tol (|x_i| + dt |dxdt_i|)) over the components is at most 1,
+// as in odeint's default checker, but with atol_i in the unit of its component. The tolerance is a length for the
+// positions and a speed for the velocities, and a spin w is held to it as the speed R |w| at which it moves the
+// ball's surface, what it adds to the slip at a contact (MODEL.md eq. 3.4): abs_tol / R rad/s. odeint's one scalar for
+// every component held a pool ball's spin 1/R = 35 times tighter than its velocity, and the spins then set the steps
+// wherever friction acts (it moves 5/(2R) rad/s of spin for every m/s it takes from the centre): the break took 14 %
+// more steps for it.
+class BallErrorChecker {
+ public:
+  using value_type = double;
+  // radii: each ball's radius (m), in the state's order.
+  BallErrorChecker(double abs_tol, double rel_tol, const std::vector<double>& radii);
+  double error(const StateVector& x, const StateVector& dxdt, const StateVector& err, double dt) const;
+  // The form odeint's controlled steppers call.
+  template <class Algebra>
+  double error(Algebra&, const StateVector& x, const StateVector& dxdt, const StateVector& err, double dt) const {
+    return error(x, dxdt, err, dt);
+  }
+
+ private:
+  std::vector<double> abs_tol_;  // per component: m, m/s, rad/s
+  double rel_tol_;
 };
 
 // How many times the embedded error estimate of method m understates the true error of a step that starts where a
@@ -32,8 +59,11 @@ double onset_error_coefficient(Method m, double exponent);
 // The largest onset_underestimate over the model's contact materials, for its integrator.
 double onset_factor(const Model& model);
 
-// `onset_factor`: the largest onset_underestimate of the contacts the stepper will meet (see above).
-std::unique_ptr<Stepper> make_stepper(const IntegratorOptions& options, double onset_factor);
+// `onset_factor`: the largest onset_underestimate of the contacts the stepper will meet (see above). `radii`: each
+// ball's radius (m), in the state's order. Cash-Karp 54 and Dormand-Prince 5 control their error with
+// BallErrorChecker; Bulirsch-Stoer and Rosenbrock 4 keep odeint's own control, abs_tol for every component alike.
+std::unique_ptr<Stepper> make_stepper(const IntegratorOptions& options, double onset_factor,
+                                      const std::vector<double>& radii);
 std::unique_ptr<Stepper> make_rosenbrock_stepper(double atol, double rtol);  // stepper_rosenbrock.cpp
 
 }  // namespace shotlab

@@ -42,7 +42,10 @@ class RosenbrockStepper final : public Stepper {
       dfdt.resize(n);
       std::fill(dfdt.begin(), dfdt.end(), 0.0);
     };
-    if (controller_->try_step(std::make_pair(system, jacobian), xu, t, dt) != odeint::success) return false;
+    f.set_recording(false);
+    const bool accepted = controller_->try_step(std::make_pair(system, jacobian), xu, t, dt) == odeint::success;
+    f.set_recording(true);
+    if (!accepted) return false;
     std::copy(xu.begin(), xu.end(), x.begin());
     f(x, dxdt, t);
     return true;

@@ -19,6 +19,9 @@ struct Rolled {
 
 Rolled roll_to(const nlohmann::json& doc, bool fast, double until) {
   nlohmann::json d = doc;
+  // Both at 3e-11: a spin's tolerance is a surface speed (stepper.hpp), and at 1e-10 the full model's own spin error
+  // over 6 s of rolling moves it 3e-8 m (1e-8 m at 3e-11, in the same steps: its cloth friction sets them).
+  d["integrator"]["abs_tol"] = d["integrator"]["rel_tol"] = 3e-11;
   if (!fast) d["model"] = {{"rolling_regime", false}, {"sliding_regime", false}, {"sleep_time", 0}};
   auto sim = simulate(scene(d));
   advance_to(*sim, until);
