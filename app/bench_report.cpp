@@ -29,7 +29,8 @@ std::string cpu_model() {
 bool write_csv(const std::string& path, const BenchReport& r) {
   std::ofstream o(path);
   o << "case,scene,method,path,adaptive,setting,status,pos_err,vel_err,err,missed,energy_drift,momentum_err,"
-       "wall_s,repeats,steps,rejected,rhs,contacts,steps_per_contact,sim_time_s,tol_ratio_pv,tol_ratio_spin\n";
+       "wall_s,repeats,steps,rejected,rhs,contacts,steps_per_contact,sim_time_s,tol_ratio_pv,tol_ratio_spin,"
+       "tol_ratio_pv_end,tol_ratio_spin_end\n";
   for (const BenchRow& w : r.rows) {
     const bool measured = !w.c->until_rest;
     o << w.c->id << "," << w.c->scene << "," << method_name(w.setting.method) << ","
@@ -40,7 +41,8 @@ bool write_csv(const std::string& path, const BenchReport& r) {
       << "," << fmt("%.6g", w.wall) << "," << w.repeats << "," << w.run.stats.steps << ","
       << w.run.stats.rejected_steps << "," << w.run.stats.rhs_evaluations << "," << w.run.contacts << ","
       << fmt("%.1f", w.run.steps_per_contact) << "," << fmt("%.6g", w.run.end_time) << ","
-      << (measured ? sci(w.err.tolerance_pv) : "") << "," << (measured ? sci(w.err.tolerance_spin) : "") << "\n";
+      << (measured ? sci(w.err.tolerance_pv) : "") << "," << (measured ? sci(w.err.tolerance_spin) : "") << ","
+      << (measured ? sci(w.err.tolerance_pv_end) : "") << "," << (measured ? sci(w.err.tolerance_spin_end) : "") << "\n";
   }
   return static_cast<bool>(o);
 }
@@ -150,34 +152,46 @@ void fast_plain_ratios(std::ostream& o, const BenchReport& r) {
 }
 
 // Issue 5 asks that a run agree with the reference within the tolerance it requested. The tolerance is the stepper's:
-// per step, component by component, abs_tol + rel_tol |x| in SI units. Measured the same way at the end of the run
-// (Errors::tolerance_pv), a ratio of at most 1 says it does; the spins are shown apart (rad/s against the same
-// numbers). The scale-free error of the other tables (pos / R, vel / v0) is not that measure: a velocity error dv
-// becomes a position error dv T after T seconds, T v0 / R ball radii per unit of vel / v0.
+// per step, component by component, abs_tol + rel_tol |x| in SI units, a spin as the surface speed R w it gives its
+// ball (BallErrorChecker). Measured the same way at the end of the run (Errors::tolerance_pv, tolerance_spin), a ratio
+// of at most 1 says it does. The relative share is taken at the size each component had over the run, as the steps
+// that made the error were held to it; the ratios against the end values alone follow, for the earlier reports. The
+// scale-free error of the other tables (pos / R, vel / v0) is not that measure: a velocity error dv becomes a position
+// error dv T after T seconds, T v0 / R ball radii per unit of vel / v0.
 void tolerance_table(std::ostream& o, const BenchReport& r) {
   const double tols[] = {1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11};
-  o << "\n## Within the requested tolerance\n\nThe end state against the reference in the stepper's own terms: the "
-       "largest |x_i - x_ref,i| / (tol + tol |x_ref,i|) over the position and velocity components (m, m/s); at most 1 "
-       "means within the tolerance requested (abs_tol = rel_tol = tol). In brackets the same over the spin components "
-       "(rad/s). Cash-Karp 54; -: not run.\n\n| case | path |";
-  for (double t : tols) o << " " << fmt("%.0e", t) << " |";
-  o << "\n|---|---|";
-  for (size_t k = 0; k < std::size(tols); ++k) o << "---|";
-  o << "\n";
-  const BenchCase* last = nullptr;
-  for (const BenchRow& w : r.rows) {
-    if (w.c == last || w.c->until_rest) continue;
-    last = w.c;
-    for (bool plain : {false, true}) {
-      o << "| " << w.c->id << " | " << (plain ? "plain" : "fast") << " |";
-      for (double t : tols) {
-        const BenchRow* row = find_row(r, w.c, Method::CashKarp54, t, plain);
-        o << " " << (row ? fmt("%.2f", row->err.tolerance_pv) + " (" + fmt("%.2g", row->err.tolerance_spin) + ")" : "-")
-          << " |";
+  auto table = [&](bool over_run) {
+    o << "\n| case | path |";
+    for (double t : tols) o << " " << fmt("%.0e", t) << " |";
+    o << "\n|---|---|";
+    for (size_t k = 0; k < std::size(tols); ++k) o << "---|";
+    o << "\n";
+    const BenchCase* last = nullptr;
+    for (const BenchRow& w : r.rows) {
+      if (w.c == last || w.c->until_rest) continue;
+      last = w.c;
+      for (bool plain : {false, true}) {
+        o << "| " << w.c->id << " | " << (plain ? "plain" : "fast") << " |";
+        for (double t : tols) {
+          const BenchRow* row = find_row(r, w.c, Method::CashKarp54, t, plain);
+          const double pv = row ? (over_run ? row->err.tolerance_pv : row->err.tolerance_pv_end) : 0;
+          const double spin = row ? (over_run ? row->err.tolerance_spin : row->err.tolerance_spin_end) : 0;
+          o << " " << (row ? fmt("%.2f", pv) + " (" + fmt("%.2f", spin) + ")" : "-") << " |";
+        }
+        o << "\n";
       }
-      o << "\n";
     }
-  }
+  };
+  o << "\n## Within the requested tolerance\n\nThe end state against the reference in the stepper's own terms: the "
+       "largest |x_i - x_ref,i| / (tol + tol s_i) over the position and velocity components (m, m/s), where s_i is the "
+       "size of the reference's component over the run (its largest |x_ref,i|); at most 1 means within the tolerance "
+       "requested (abs_tol = rel_tol = tol). In brackets the same over the spins, each as the surface speed R w it gives "
+       "its ball (m/s), as the stepper holds a spin. Cash-Karp 54; -: not run.\n";
+  table(true);
+  o << "\nThe same with s_i = |x_ref,i| at the end: stricter wherever a component ends smaller than it was (a struck "
+       "ball's speed, a spin worn down by friction), where the steps that made the error were held to its larger size."
+       "\n";
+  table(false);
 }
 
 bool write_markdown(const std::string& path, const BenchReport& r) {

@@ -56,10 +56,18 @@ RunResult run_case(const std::string& data_root, const BenchCase& c, const Metho
   r.energy0 = sim.energy().total();
   r.momentum0 = sim.momentum();
 
-  // The step end times of each ball's islands. The observer only records times: it must not distort the wall time.
+  // The step end times of each ball's islands, and each component's largest size. The observer does little per
+  // step: it must not distort the wall time.
   std::vector<std::vector<double>> step_ends(sim.state().ball_count());
+  r.scale.resize(r.x0.size());
+  std::transform(r.x0.begin(), r.x0.end(), r.scale.begin(), [](double v) { return std::abs(v); });
   sim.set_observer([&](const Island& island) {
-    for (int i : island.balls()) step_ends[i].push_back(island.time());
+    for (size_t k = 0; k < island.balls().size(); ++k) {
+      const int i = island.balls()[k];
+      step_ends[i].push_back(island.time());
+      for (int c = 0; c < kBallDofs; ++c)
+        r.scale[kBallDofs * i + c] = std::max(r.scale[kBallDofs * i + c], std::abs(island.state().x[kBallDofs * k + c]));
+    }
   });
   if (c.until_rest) {
     // Frames of 1/60 s, as the GUI runs; stop at the first frame where everything is at rest.
@@ -93,14 +101,20 @@ Errors errors(const BenchCase& c, const RunResult& run, const RunResult& ref, do
     const Vec3 expected = c.swap_exact ? velocity(run.x0, 1 - i) : velocity(ref.x, i);
     e.velocity = std::max(e.velocity, glm::length(velocity(run.x, i) - expected) / scale);
     if (tolerance <= 0) continue;
-    // Component by component, as odeint's error checker weighs a step's error estimate.
+    // Component by component, as the stepper weighs a step's error estimate (BallErrorChecker): a spin as the surface
+    // speed R w.
     const Vec3 want[] = {position(ref.x, i), expected, spin(ref.x, i)};
     const Vec3 got[] = {position(run.x, i), velocity(run.x, i), spin(run.x, i)};
     for (int part = 0; part < 3; ++part)
       for (int k = 0; k < 3; ++k) {
-        const double ratio = std::abs(got[part][k] - want[part][k]) / (tolerance + tolerance * std::abs(want[part][k]));
-        double& into = part < 2 ? e.tolerance_pv : e.tolerance_spin;
-        into = std::max(into, ratio);
+        const double unit = part < 2 ? 1.0 : run.radius[static_cast<size_t>(i)];
+        const double error = unit * std::abs(got[part][k] - want[part][k]), end = unit * std::abs(want[part][k]);
+        const size_t at = kBallDofs * static_cast<size_t>(i) + 3 * part + k;
+        const double over_run = at < ref.scale.size() ? std::max(end, unit * ref.scale[at]) : end;
+        double& over = part < 2 ? e.tolerance_pv : e.tolerance_spin;
+        double& at_end = part < 2 ? e.tolerance_pv_end : e.tolerance_spin_end;
+        over = std::max(over, error / (tolerance + tolerance * over_run));
+        at_end = std::max(at_end, error / (tolerance + tolerance * end));
       }
   }
   e.missed = std::max(0, ref.contacts - run.contacts);

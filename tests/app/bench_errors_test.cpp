@@ -54,8 +54,8 @@ TEST(BenchErrors, SwapCasesCompareWithTheExactSwap) {
 }
 
 // The end state in the stepper's terms: each component's error against tol + tol |x_ref| (here 1e-7 + 1e-7 x 1 m for
-// ball 1's x, 1e-7 + 1e-7 x 0.5 m/s for ball 0's speed), positions and velocities apart from spins; fixed-step runs
-// (no tolerance) get none.
+// ball 1's x, 1e-7 + 1e-7 x 0.5 m/s for ball 0's speed), positions and velocities apart from spins, a spin as the
+// surface speed R w (R = 0.03 m); fixed-step runs (no tolerance) get none.
 TEST(BenchErrors, ToleranceRatioWeighsEachComponentAsTheStepperDoes) {
   RunResult ref = two_balls();
   ref.speed_scale = 1.0;
@@ -63,11 +63,33 @@ TEST(BenchErrors, ToleranceRatioWeighsEachComponentAsTheStepperDoes) {
   RunResult run = ref;
   set_position(run.x, 1, Vec3{1.0 + 1e-7, 0.0, 0.0});    // 1e-7 / 2e-7: half the tolerance
   set_velocity(run.x, 0, Vec3{0.5 + 3e-7, 0.0, 0.0});    // 3e-7 / 1.5e-7: twice
-  set_spin(run.x, 1, Vec3{0.0, 5e-7, 0.0});              // 5e-7 / 1e-7 on a spin at rest
+  set_spin(run.x, 1, Vec3{0.0, 5e-6, 0.0});              // R 5e-6 = 1.5e-7 m/s on a spin at rest: 1.5 times
   const Errors e = errors(BenchCase{}, run, ref, 1e-7);
   EXPECT_NEAR(e.tolerance_pv, 2.0, 1e-9);
-  EXPECT_NEAR(e.tolerance_spin, 5.0, 1e-9);
+  EXPECT_NEAR(e.tolerance_spin, 1.5, 1e-9);
+  EXPECT_NEAR(e.tolerance_pv_end, 2.0, 1e-9);
+  EXPECT_NEAR(e.tolerance_spin_end, 1.5, 1e-9);
   EXPECT_EQ(errors(BenchCase{}, run, ref).tolerance_pv, -1.0);
+}
+
+// The relative share at the size a component had over the reference's run: ball 0 was struck to 3 m/s and ends at
+// 0.5 m/s; an error of 3e-7 m/s is 3e-7 / (1e-7 + 1e-7 x 3) = 0.75 of the tolerance its steps were held to, twice the
+// tolerance at the end value. Its spin reached 100 rad/s (R w = 3 m/s) and ends at rest.
+TEST(BenchErrors, ToleranceRatioTakesEachComponentsSizeOverTheRun) {
+  RunResult ref = two_balls();
+  ref.speed_scale = 3.0;
+  set_velocity(ref.x, 0, Vec3{0.5, 0.0, 0.0});
+  ref.scale.assign(ref.x.size(), 0.0);
+  ref.scale[3] = 3.0;    // ball 0's x velocity, m/s
+  ref.scale[7] = 100.0;  // ball 0's spin about y, rad/s
+  RunResult run = ref;
+  set_velocity(run.x, 0, Vec3{0.5 + 3e-7, 0.0, 0.0});
+  set_spin(run.x, 0, Vec3{0.0, 4e-6, 0.0});  // R 4e-6 = 1.2e-7 m/s against 1e-7 + 1e-7 x 3 m/s
+  const Errors e = errors(BenchCase{}, run, ref, 1e-7);
+  EXPECT_NEAR(e.tolerance_pv, 0.75, 1e-9);
+  EXPECT_NEAR(e.tolerance_pv_end, 2.0, 1e-9);
+  EXPECT_NEAR(e.tolerance_spin, 0.3, 1e-9);
+  EXPECT_NEAR(e.tolerance_spin_end, 1.2, 1e-9);
 }
 
 }  // namespace
