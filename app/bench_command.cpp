@@ -73,7 +73,7 @@ std::unique_ptr<RunResult> reference(const std::string& root, const BenchCase& c
     std::unique_ptr<RunResult> a;
     MethodSetting a_setting{};
     for (Method m : kReferenceMethods) {
-      auto r = std::make_unique<RunResult>(run_case(root, c, {m, tol, true}));
+      auto r = std::make_unique<RunResult>(run_case(root, c, {m, tol, true}, true));
       info.wall += r->stats.wall_seconds;
       if (r->status != Status::Ok) continue;
       if (!a) {

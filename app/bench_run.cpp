@@ -42,7 +42,7 @@ void count_contact_steps(const Model& model, const std::vector<Event>& events,
 
 }  // namespace
 
-RunResult run_case(const std::string& data_root, const BenchCase& c, const MethodSetting& setting) {
+RunResult run_case(const std::string& data_root, const BenchCase& c, const MethodSetting& setting, bool reference) {
   Scene scene = load_scene(data_root + "/" + c.file, c.overrides);
   scene.model.integrator = integrator_options(setting);
   if (setting.plain) use_plain_path(scene.model.options);
@@ -56,17 +56,21 @@ RunResult run_case(const std::string& data_root, const BenchCase& c, const Metho
   r.energy0 = sim.energy().total();
   r.momentum0 = sim.momentum();
 
-  // The step end times of each ball's islands, and each component's largest size. The observer does little per
-  // step: it must not distort the wall time.
+  // The step end times of each ball's islands, and for a reference each component's largest size. The observer does
+  // little per step: it must not distort the wall time.
   std::vector<std::vector<double>> step_ends(sim.state().ball_count());
-  r.scale.resize(r.x0.size());
-  std::transform(r.x0.begin(), r.x0.end(), r.scale.begin(), [](double v) { return std::abs(v); });
+  if (reference) {
+    r.scale.resize(r.x0.size());
+    std::transform(r.x0.begin(), r.x0.end(), r.scale.begin(), [](double v) { return std::abs(v); });
+  }
   sim.set_observer([&](const Island& island) {
     for (size_t k = 0; k < island.balls().size(); ++k) {
       const int i = island.balls()[k];
       step_ends[i].push_back(island.time());
-      for (int c = 0; c < kBallDofs; ++c)
-        r.scale[kBallDofs * i + c] = std::max(r.scale[kBallDofs * i + c], std::abs(island.state().x[kBallDofs * k + c]));
+      for (int c = 0; c < kBallDofs && reference; ++c) {
+        double& scale = r.scale[kBallDofs * i + c];
+        scale = std::max(scale, std::abs(island.state().x[kBallDofs * k + static_cast<size_t>(c)]));
+      }
     }
   });
   if (c.until_rest) {

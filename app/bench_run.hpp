@@ -25,7 +25,8 @@ struct RunResult {
 };
 
 // Loads the case's scene from `data_root`, applies the setting, simulates. Throws InputError on a bad scene file.
-RunResult run_case(const std::string& data_root, const BenchCase& c, const MethodSetting& setting);
+// `reference`: also keep each component's size over the run (RunResult::scale), which the timed runs leave out.
+RunResult run_case(const std::string& data_root, const BenchCase& c, const MethodSetting& setting, bool reference = false);
 
 struct Errors {
   double position = 0;   // max over balls |p - p_ref| / R

@@ -11,9 +11,7 @@ namespace shotlab {
 // A contact normal known to point straight up, (0, 1, 0): the bed under a ball, a contact of every ball on the table
 // in every right-hand side. On it the law's vector algebra reduces to components (the functions below): the same
 // numbers, bar the sign of a zero, for a tenth less of a break's time.
-struct UpNormal {
-  operator Vec3() const { return kUp; }
-};
+struct UpNormal {};
 inline double normal_component(const Vec3& a, const Vec3& n) { return glm::dot(a, n); }
 inline double normal_component(const Vec3& a, UpNormal) { return a.y; }
 inline Vec3 tangential_part(const Vec3& a, const Vec3& n) { return a - glm::dot(a, n) * n; }
@@ -63,15 +61,17 @@ struct ContactForce {
   uint8_t bands = 0;       // FrictionBand bits of the terms that act
 };
 
-// What says which law a contact's friction follows: the FrictionBand bits, and the direction of each term (floats:
-// only their signs against each other's count). Kept for every contact at a step's ends (Dynamics::recorded).
+// What says which law a contact's friction follows: the FrictionBand bits, and each term (floats: what counts is their
+// directions against each other's and the size of their change over a step). Kept for every contact at a step's ends
+// (Dynamics::recorded).
 struct FrictionLaw {
   FrictionLaw() = default;
   explicit FrictionLaw(const ContactForce& f)
       : friction(f.friction), rolling(f.rolling), spin_torque(static_cast<float>(f.spin_torque)), bands(f.bands) {}
-  glm::vec3 friction{0.0f}, rolling{0.0f};
-  float spin_torque = 0;
-  uint8_t bands = 0;
+  glm::vec3 friction{0.0f};  // N, ContactForce::friction
+  glm::vec3 rolling{0.0f};   // N, ContactForce::rolling
+  float spin_torque = 0;     // N m, ContactForce::spin_torque
+  uint8_t bands = 0;         // FrictionBand bits
 };
 
 // Whether one contact's friction changed its law between two evaluations a and b that both push (normal > 0): a term

@@ -56,8 +56,11 @@ template <class Normal>
   const Vec3 u = tangential_part(k.slip, k.normal);
   const double u_len = glm::length(u);
   // slide: 0 at no slip, 1 once slip > 1/k
+  // A frictionless contact has no law to switch: its band bits stay clear.
+  uint8_t slip_bands = 0;
   const double slide =
-      contact_law::smoothed_sign(smoothing, mat.friction * out.normal, k.slip_mobility, u_len, out.bands, kSlipInBand, kSlipLimited);
+      contact_law::smoothed_sign(smoothing, mat.friction * out.normal, k.slip_mobility, u_len, slip_bands, kSlipInBand, kSlipLimited);
+  if (mat.friction > 0) out.bands |= slip_bands;
   if (mat.friction > 0 && u_len > 0) {
     out.friction = -(mat.friction * out.normal * slide / u_len) * u;
     out.force += out.friction;

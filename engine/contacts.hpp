@@ -44,10 +44,13 @@ struct StepContacts {
 
 // One touching contact as an evaluation of the right-hand side saw it (Dynamics::recorded), seen from key.first: what
 // the event detector compares at a step's two ends (EventDetector::first_law_change).
+// Of two balls of different radii, the spin term's band is taken at the radius of the ball the contact pass evaluated
+// it from (the sweep's order) and the detector's bisection at key.first's: a switch of that term may then be missed or
+// found where there is none, never a force changed. Every preset's balls have one radius.
 struct ContactRecord {
-  ContactKey key;
-  double depth;   // m
-  double normal;  // N, the normal force (negative where the step keeps the contact's law unclamped)
+  ContactKey key{0, 0};
+  double depth = 0;   // m
+  double normal = 0;  // N, the normal force (negative where the step keeps the contact's law unclamped)
   FrictionLaw friction;
 };
 

@@ -75,13 +75,14 @@ class EventDetector {
   // speed there; 0 when it touches already; +inf when it is not closing, is kTouch or more apart (the next step leaves
   // it out and finds its onset) or cannot touch the collider at all.
   double time_to_touch(const StepSpan& span, const ContactKey& key) const;
-  // Earliest times in the span at which a contact that pushed at its start stops pushing (its normal force reaches
-  // zero, where the clamp cuts in, or it ends) and at which one that pushes at both ends switches its friction's law
-  // (friction_switched: a term enters or leaves its smoothing band, or is turned around through it); +inf when none.
-  // Found by comparing the right-hand side's records at the span's two ends (Dynamics::recorded, both sorted by key),
-  // located on the span.
+  // The earliest time in the span at which a contact that pushed at its start stops pushing (its normal force reaches
+  // zero, where the clamp cuts in, or it ends) or one that pushes at both ends switches its friction's law
+  // (friction_switched: a term enters or leaves its smoothing band, or is turned around through it), as `release` or
+  // `friction` by its kind; +inf for either kind where it is not the earliest (a contact that has not changed by then
+  // is not located) or there is none. Found by comparing the right-hand side's records at the span's two ends
+  // (Dynamics::recorded, both sorted by key), located on the span.
   struct LawChanges {
-    double release, friction;
+    double release, friction;  // s
   };
   LawChanges first_law_change(const StepSpan& span, const std::vector<ContactRecord>& start,
                               const std::vector<ContactRecord>& end) const;

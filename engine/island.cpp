@@ -311,7 +311,7 @@ bool Island::integrate(double dt, double limit, double& t) {
   auto by_key = [](const ContactRecord& a, const ContactRecord& b) { return a.key < b.key; };
   if (end_record_is_start_) {
     start_record_.swap(end_record_);
-  } else {
+  } else if (adaptive) {  // the fixed-step methods cut no step
     start_record_ = dynamics_.recorded();
     std::sort(start_record_.begin(), start_record_.end(), by_key);
   }
@@ -342,9 +342,9 @@ bool Island::integrate(double dt, double limit, double& t) {
       // that enters or leaves its smoothing band (friction_switched): a slip driven through the band by a hard contact
       // crosses it in a fraction of the step, a sign switch the estimate may not see at all (in a breaking rack such
       // steps were 8-13 times the tolerance). Redo the step so that it ends at the change, located on this step's
-      // dense output; the next step then starts at the kink. An onset or a release of a contact whose law the step
-      // kept (StepContacts) ends the step however early it comes; other changes in the first 1 % of a step are left
-      // alone, where a redone step's successor finds them.
+      // dense output; the next step then starts at the kink. An onset of a contact left out of the step, any release and
+      // any friction switch end the step however early they come; other onsets and ends of contacts in the first 1 % of
+      // a step are left alone, where a redone step's successor finds them.
       if (!adaptive) break;
       if (retries == 0) passed = tried;
       trial.t1 = t;

@@ -41,8 +41,8 @@ bool is_adaptive(Method m);
 
 struct IntegratorOptions {
   Method method = Method::CashKarp54;    // default chosen by docs/bench (fastest at the accuracy the presets need)
-  double abs_tol = 1e-7;          // absolute error per step: m for positions, m/s for velocities and for a spin's
-                                  // surface speed R |w| (stepper.hpp)
+  double abs_tol = 1e-7;          // absolute error per step: m for positions, m/s for velocities and, with Cash-Karp
+                                  // and Dormand-Prince, for a spin's surface speed R |w| (stepper.hpp)
   double rel_tol = 1e-7;          // relative error per step
   double fixed_step = 1e-5;       // s, for Euler and RK4
   double initial_step = 1e-4;     // s, first trial step of the adaptive methods

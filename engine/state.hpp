@@ -10,6 +10,7 @@ namespace shotlab {
 
 // ODE state layout (MODEL.md eq. 2.3): 9 numbers a ball, [p (m), v (m/s), w (rad/s)], balls in model order.
 inline constexpr int kBallDofs = 9;
+inline constexpr int kSpinDof = 6;  // where a ball's spin starts among its 9 numbers
 using StateVector = std::vector<double>;
 
 template <class X> Vec3 position(const X& x, int i) { return {x[9 * i], x[9 * i + 1], x[9 * i + 2]}; }

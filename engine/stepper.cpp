@@ -11,7 +11,7 @@ namespace odeint = boost::numeric::odeint;
 BallErrorChecker::BallErrorChecker(double abs_tol, double rel_tol, const std::vector<double>& radii) : rel_tol_(rel_tol) {
   abs_tol_.reserve(kBallDofs * radii.size());
   for (double r : radii)
-    for (int k = 0; k < kBallDofs; ++k) abs_tol_.push_back(k < 6 ? abs_tol : abs_tol / r);
+    for (int k = 0; k < kBallDofs; ++k) abs_tol_.push_back(k < kSpinDof ? abs_tol : abs_tol / r);
 }
 
 double BallErrorChecker::error(const StateVector& x, const StateVector& dxdt, const StateVector& err, double dt) const {

@@ -131,8 +131,8 @@ void tune_panel(Lab& lab, ProbeReadouts& probes) {
     if (is_adaptive(in.method)) {
       changed |= slider("abs tol", in.abs_tol, 1e-12, 1e-2, "%.1e", true);
       if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("error allowed per step: m for positions, m/s for velocities and for the speed R|w| a spin "
-                          "gives the ball's surface");
+        ImGui::SetTooltip("error allowed per step: m for positions, m/s for velocities and, with Cash-Karp and "
+                          "Dormand-Prince, for the speed R|w| a spin gives the ball's surface (rad/s with the others)");
       changed |= slider("rel tol", in.rel_tol, 1e-12, 1e-2, "%.1e", true);
     } else {
       changed |= slider("fixed step", in.fixed_step, 1e-7, 1e-2, "%.1e s", true);
