@@ -49,12 +49,19 @@ Motion classify(const Model& model, const ContactCache& cache, const State& stat
   const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
   Vec3 n{0.0};
   double best_up = -2;
-  near_colliders(model, cache, p, r, kSupportGap, [&](int, const Penetration& pen) {
-    if (pen.depth > -kSupportGap && glm::dot(pen.normal, kUp) > best_up) {
-      best_up = glm::dot(pen.normal, kUp);
-      n = pen.normal;
-    }
-  });
+  // The support is the collider within kSupportGap whose normal points most nearly up. A level floor under the ball
+  // (ContactCache::floor) is as far up as a normal goes: the other colliders need no probe (a ball on the bed, in
+  // every step's scan).
+  for (size_t k = 0; k < cache.plane_like.size() && best_up < 1; ++k)
+    if (const auto on_floor = floor_penetration(cache, k, p, r); on_floor && *on_floor && (*on_floor)->depth > -kSupportGap)
+      best_up = 1, n = kUp;
+  if (best_up < 1)
+    near_colliders(model, cache, p, r, kSupportGap, [&](int, const Penetration& pen) {
+      if (pen.depth > -kSupportGap && glm::dot(pen.normal, kUp) > best_up) {
+        best_up = glm::dot(pen.normal, kUp);
+        n = pen.normal;
+      }
+    });
   if (best_up == -2) return Motion::Airborne;
   const double eps = model.options.rest_speed;
   const Vec3 vt = v - glm::dot(v, n) * n;
