@@ -106,6 +106,23 @@ void EventDetector::collect(const State& state, const double* x, std::vector<Key
   memo_keys_ = keys;
 }
 
+void EventDetector::collect(const State& state, const double* x, const EndRecord& end, std::vector<Key>& keys) {
+  keys.clear();
+  for (const ContactRecord& r : *end.record)
+    if (r.depth > kTouch) keys.push_back(r.key);
+  // What the right-hand side left out: the colliders of a ball in the rolling or sliding regime (the bed it rests on)
+  // and the contacts the step kept apart.
+  for (int i = 0; i < state.ball_count(); ++i) {
+    if (!state.active(i) || !(state.rolling(i) || state.sliding(i))) continue;
+    near_colliders(model_, cache_, position(x, i), model_.balls[i].radius, kTouch, [&](int c, const Penetration& pen) {
+      if (pen.depth > kTouch) keys.emplace_back(i, -1 - c);
+    });
+  }
+  for (const Key& k : *end.separated)
+    if (depth(k, x) > kTouch) keys.push_back(k);
+  std::sort(keys.begin(), keys.end());
+}
+
 double EventDetector::depth(const Key& key, const double* x) const {
   const auto [i, other] = key;
   const double ri = model_.balls[i].radius;
@@ -264,17 +281,18 @@ void EventDetector::reset(const State& state) {
   for (int i = 0; i < state.ball_count(); ++i) motion_[i] = classify(model_, cache_, state, state.x.data(), i);
 }
 
-void EventDetector::changes(const State& state, const double* x) {
+void EventDetector::changes(const State& state, const double* x, const EndRecord& end) {
   std::vector<Key> &now = now_, &begun = begun_, &ended = ended_;
-  collect(state, x, now);
+  if (end.record) collect(state, x, end, now);
+  else collect(state, x, now);
   begun.clear();
   ended.clear();
   std::set_difference(now.begin(), now.end(), contacts_.begin(), contacts_.end(), std::back_inserter(begun));
   std::set_difference(contacts_.begin(), contacts_.end(), now.begin(), now.end(), std::back_inserter(ended));
 }
 
-EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span, const State& state) {
-  changes(state, span.x1.data());
+EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span, const State& state, const EndRecord& end) {
+  changes(state, span.x1.data(), end);
   constexpr double inf = std::numeric_limits<double>::infinity();
   Changes first{inf, inf};
   // Frozen balls touch at zero depth, and round-off flips them in and out of contact: no kink worth a restart.
@@ -289,8 +307,8 @@ EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span,
   return first;
 }
 
-void EventDetector::scan(const StepSpan& span, const State& state, const StepContacts& kept, std::vector<Event>& events,
-                         std::vector<Exit>& exits) {
+void EventDetector::scan(const StepSpan& span, const State& state, const StepContacts& kept, const EndRecord& end,
+                         std::vector<Event>& events, std::vector<Exit>& exits) {
   auto ball_at = [&](double t, int i) { return balls_at(span, t, Key{i, -1}); };
   const size_t first_new = events.size();
 
@@ -312,7 +330,7 @@ void EventDetector::scan(const StepSpan& span, const State& state, const StepCon
   }
 
   // Contacts that began or ended: set difference of sorted key lists, each change located on its own depth.
-  changes(state, span.x1.data());
+  changes(state, span.x1.data(), end);
   std::vector<Key>& now = now_;
   auto touching_at = [&](const Key& k, double s) { return depth(k, balls_at(span, s, k)) > kTouch; };
   for (const Key& k : begun_)

@@ -57,17 +57,25 @@ class EventDetector {
   explicit EventDetector(const Model& model) : model_(model), cache_(model) {}
   // Snapshot of what holds in `state` (call at the start and after any discontinuity).
   void reset(const State& state);
+  // The contacts as the right-hand side recorded them at a span's end (Dynamics::recorded, sorted by key) and those the
+  // step kept apart (StepContacts::separated): what scan and first_contact_change compare against the snapshot, bar
+  // the beds of balls in a regime, instead of a broad phase of their own (in a breaking rack, a twentieth of the
+  // run). Without a record (a closed-form step, a fixed-step method), they look for themselves.
+  struct EndRecord {
+    const std::vector<ContactRecord>* record = nullptr;
+    const std::vector<ContactKey>* separated = nullptr;
+  };
   // Compares the end of `span` against the snapshot, appends located events and the balls that left play, and takes
   // the end of the span as the new snapshot. `kept`: the contacts whose law the step kept (a separated one that
   // touches at the end began there).
-  void scan(const StepSpan& span, const State& state, const StepContacts& kept, std::vector<Event>& events,
-            std::vector<Exit>& exits);
+  void scan(const StepSpan& span, const State& state, const StepContacts& kept, const EndRecord& end,
+            std::vector<Event>& events, std::vector<Exit>& exits);
   // Earliest times in the span at which a contact begins and at which one ends (where the force law has a kink);
   // +inf when none.
   struct Changes {
     double begin, end;
   };
-  Changes first_contact_change(const StepSpan& span, const State& state);
+  Changes first_contact_change(const StepSpan& span, const State& state, const EndRecord& end);
   // Earliest time in the span at which one of the `separated` contacts touches (depth > 0), located to
   // kOnsetResolution; +inf when none. `which`, when given, gets that contact.
   double first_touch(const StepSpan& span, const std::vector<ContactKey>& separated, ContactKey* which = nullptr);
@@ -91,9 +99,11 @@ class EventDetector {
 
  private:
   using Key = ContactKey;
+  // The contacts deeper than kTouch at x, sorted: by a broad phase, or from the record at x.
   void collect(const State& state, const double* x, std::vector<Key>& keys);
+  void collect(const State& state, const double* x, const EndRecord& end, std::vector<Key>& keys);
   // The contacts at x (now_), and which of them began (begun_) or ended (ended_) since the snapshot.
-  void changes(const State& state, const double* x);
+  void changes(const State& state, const double* x, const EndRecord& end);
   double depth(const Key& key, const double* x) const;
   // The contact's force at x by the plain law, seen from key.first (none where it does not touch).
   ContactForce force_at(const Key& key, const double* x) const;

@@ -192,7 +192,7 @@ bool Island::step(double limit) {
     closed_form_step(t);
     // The caps let a pair come contact_margin into touching within the step: end it where the contact begins,
     // exactly, as on the closed-form path the step's interpolant is the motion itself.
-    const double touch = std::min(detector_.first_contact_change(trial_, integ_).begin,
+    const double touch = std::min(detector_.first_contact_change(trial_, integ_, {}).begin,
                                   detector_.first_touch(trial_, dynamics_.step().separated));
     if (touch < t - kOnsetResolution) {
       t = touch;
@@ -234,7 +234,11 @@ bool Island::step(double limit) {
   // The flags the step started with (a rewind to inside it needs them); only the flags, not the state vector.
   copy_flags(integ_, start_);
   std::vector<Exit> exits;
-  detector_.scan(span_, integ_, dynamics_.step(), events_, exits);
+  // An integrated step's last evaluation recorded the contacts at its end (end_record_, sorted).
+  const EventDetector::EndRecord end = !constant && adaptive
+                                           ? EventDetector::EndRecord{&end_record_, &dynamics_.step().separated}
+                                           : EventDetector::EndRecord{};
+  detector_.scan(span_, integ_, dynamics_.step(), end, events_, exits);
   // A ball that left play is frozen where it left.
   StateVector at;
   for (const Exit& e : exits) {
@@ -358,8 +362,10 @@ bool Island::integrate(double dt, double limit, double& t) {
       if (!adaptive) break;
       if (retries == 0) passed = tried;
       trial.t1 = t;
-      const auto change = detector_.first_contact_change(trial, integ_);
       const StepContacts& kept = dynamics_.step();
+      end_record_ = dynamics_.recorded();
+      std::sort(end_record_.begin(), end_record_.end(), by_key);
+      const auto change = detector_.first_contact_change(trial, integ_, {&end_record_, &kept.separated});
       const double early = span_.t1 + 0.01 * tried;
       constexpr double inf = std::numeric_limits<double>::infinity();
       ContactKey touching;
@@ -368,8 +374,6 @@ bool Island::integrate(double dt, double limit, double& t) {
       // Releases and friction switches, however early: a contact whose law the step kept unclamped would pull all
       // through the step, and a friction switch just after the start is a slip driven through its band in a moment,
       // where the step's first stage would see the friction before it turned.
-      end_record_ = dynamics_.recorded();
-      std::sort(end_record_.begin(), end_record_.end(), by_key);
       const auto law = detector_.first_law_change(trial, start_record_, end_record_);
       const double cut = std::min({onset, change.end > early ? change.end : inf, law.release, law.friction});
       if (cut >= t - kOnsetResolution) {
