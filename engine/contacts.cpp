@@ -52,7 +52,8 @@ void ColumnXZ::exclude(const Vec3& lo, const Vec3& hi) {
   }
 }
 
-ContactCache::ContactCache(const Model& model) : ball_ball(&model.material(kBallBall)) {
+ContactCache::ContactCache(const Model& model)
+    : ball_ball(&model.material(kBallBall)), gravity(glm::length(model.options.gravity)) {
   // Every island builds several of these (a new island every few collisions): one allocation per table, not one per
   // doubling of it.
   const size_t colliders = model.colliders.size(), balls = model.balls.size();
@@ -218,8 +219,8 @@ bool may_release(const ContactMaterial& m, double depth, double rate) {
 
 }  // namespace
 
-double free_acceleration(const Model& model, const State& state, const ContactCache& cache, int i) {
-  const double g = glm::length(model.options.gravity);
+double free_acceleration(const Model&, const State& state, const ContactCache& cache, int i) {
+  const double g = cache.gravity;
   if (state.rolling(i)) return cache.collider_material[state.rolling_on[i]]->rolling_resistance * g;
   if (state.sliding(i)) {
     const ContactMaterial& m = *cache.collider_material[state.sliding_on[i]];
@@ -262,7 +263,7 @@ double time_to_possible_contact(const Model& model, const State& state, const do
   }
   // Relative acceleration bound outside contacts: gravity plus cloth friction, generously twice |g|. A pair pushed
   // harder by third balls may start touching inside a step; the simulation then cuts the step at the onset.
-  const double a_free = 2.0 * glm::length(model.options.gravity);
+  const double a_free = 2.0 * cache.gravity;
   auto accel = [&](int i) { return free_acceleration(model, state, cache, i); };
   const double margin = model.options.contact_margin;
   double best = std::numeric_limits<double>::infinity();

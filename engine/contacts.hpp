@@ -97,6 +97,7 @@ struct ContactCache {
   std::vector<double> floor_y;
   std::vector<int> floor_of;  // each collider's index in plane_like (and floor), or -1
   const ContactMaterial* ball_ball;
+  double gravity;  // m/s^2, |g|: the step caps and the regimes' right-hand sides want it for every ball
   // Each ball's mobilities (contact_force.hpp), constant for the model: 1/m (1/kg) and r^2/I (1/kg).
   std::vector<double> inv_mass, inv_inertia_r2;
   std::vector<std::pair<int, int>> pairs;

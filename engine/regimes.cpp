@@ -113,7 +113,7 @@ void sliding_derivative(const Model& model, const State& state, const ContactCac
   const BallSpec& b = model.balls[i];
   const Vec3 v = velocity(x, i), w = spin(x, i);
   ContactForce f;
-  f.normal = b.mass * glm::length(model.options.gravity);
+  f.normal = b.mass * cache.gravity;
   // The depth is the static sink; the friction terms do not read it.
   add_friction(*cache.collider_material[bed], collider_kinematics(cache, i, b.radius, v, w, n, 0.0),
                {model.options.friction_sharpness, model.options.friction_rate_limit}, f);
@@ -137,7 +137,7 @@ void rolling_derivative(const Model& model, const State& state, const ContactCac
                         double* dxdt) {
   const ContactMaterial& m = *cache.collider_material[state.rolling_on[i]];
   const Vec3& n = cache.plane_normal[state.rolling_on[i]];
-  const double g = glm::length(model.options.gravity), r = model.balls[i].radius, weight = model.balls[i].mass * g;
+  const double g = cache.gravity, r = model.balls[i].radius, weight = model.balls[i].mass * g;
   const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
   // The sharpness each term would get in contact_force (the static normal force is m g).
   const double k_roll = sharpness_for(smooth, m.rolling_resistance * weight, cache.inv_mass[i]);
