@@ -1,9 +1,13 @@
 // The contact law's forms and the error control's units: the bed's component form (UpNormal) against the generic
-// law, what counts as a friction switch (friction_switched), and a spin held to the tolerance as a surface speed
-// (BallErrorChecker).
+// law, what counts as a friction switch (friction_switched) and where a trial's switches are located
+// (EventDetector::first_law_change), and a spin held to the tolerance as a surface speed (BallErrorChecker).
+#include <algorithm>
+#include <cstdio>
 #include <random>
 
 #include "engine/contact_force.hpp"
+#include "engine/dynamics.hpp"
+#include "engine/events.hpp"
 #include "engine/stepper.hpp"
 
 #include "support.hpp"
@@ -62,6 +66,49 @@ TEST(ContactLaw, FrictionSwitches) {
   ContactForce spin_a, spin_b;
   spin_a.spin_torque = 1e-4, spin_b.spin_torque = -1e-4;
   EXPECT_TRUE(friction_switched(FrictionLaw(spin_a), FrictionLaw(spin_b)));
+}
+
+// A trial across two friction switches of two contacts reports the first as the one to cut at and the second as
+// `next`, where the step after the cut ends (Island::integrate). Two balls slide apart on the cloth, without spin, at
+// 1 and 2 cm/s: saturated friction mu m g takes slip off at mu g (the centre) plus 5/2 mu g (the spin it builds), so
+// each slip enters its band (1/k = 1 mm/s) at (u0 - 1e-3) / (3.5 mu g) = 1.31 and 2.77 ms. The trial is that constant
+// deceleration over 4 ms, a quadratic, which the span's cubic interpolant holds exactly; its end is evaluated by the
+// law (the slips there have turned around).
+TEST(ContactLaw, TrialReportsTheNextSwitchAfterTheFirst) {
+  const double u_a = 0.01, u_b = 0.02, mu = 0.2, h = 4e-3;
+  Prepared p = prepare(scene(cloth_scene({{{"id", "a"}, {"position", {0, kR, 0}}, {"velocity", {u_a, 0, 0}}},
+                                           {{"id", "b"}, {"position", {0.5, kR, 0}}, {"velocity", {0, 0, u_b}}}})));
+  Dynamics f(p.model, p.state);
+  StepSpan span;
+  span.t1 = h;
+  span.x0 = span.x1 = p.state.x;
+  f(span.x0, span.f0, 0.0);
+  std::vector<ContactRecord> start = f.recorded(), end;
+  span.f1 = span.f0;
+  for (int i = 0; i < 2; ++i) {
+    // The rest on the bed stays as it is (its vertical force balances the weight to round-off).
+    span.f0[kBallDofs * i + 1] = span.f0[kBallDofs * i + 4] = 0.0;
+    const Vec3 v = velocity(span.x0, i), a = velocity(span.f0, i), alpha = spin(span.f0, i);
+    set_position(span.x1, i, position(span.x0, i) + v * h + 0.5 * h * h * a);
+    set_velocity(span.x1, i, v + a * h);
+    set_spin(span.x1, i, spin(span.x0, i) + alpha * h);
+    set_position(span.f1, i, v + a * h);
+    set_velocity(span.f1, i, a);
+    set_spin(span.f1, i, alpha);
+  }
+  StateVector f1;
+  f(span.x1, f1, h);
+  end = f.recorded();
+  auto by_key = [](const ContactRecord& x, const ContactRecord& y) { return x.key < y.key; };
+  std::sort(start.begin(), start.end(), by_key);
+  std::sort(end.begin(), end.end(), by_key);
+  const EventDetector::LawChanges law = EventDetector(p.model).first_law_change(span, start, end);
+  const double rate = 3.5 * mu * kG;
+  std::printf("[ switches ] %.9f %.9f (expected %.9f %.9f)\n", law.friction, law.next, (u_a - 1e-3) / rate, (u_b - 1e-3) / rate);
+  // Each located just past the switch, to the resolution of a switch on a span this long.
+  EXPECT_NEAR(law.friction, (u_a - 1e-3) / rate, switch_resolution(h));
+  EXPECT_NEAR(law.next, (u_b - 1e-3) / rate, switch_resolution(h));
+  EXPECT_EQ(law.release, std::numeric_limits<double>::infinity());
 }
 
 // abs_tol holds a position in m, a velocity in m/s and a spin w as the surface speed R w in m/s: on a ball of radius
