@@ -286,7 +286,8 @@ double time_to_possible_contact(const Model& model, const State& state, const do
   }
   // Straight relative motion, its target widened by how far accelerations can bend the paths within the horizon
   // (pair_contact_time).
-  sweep_pairs(model, state, x, cache, 2.0 * vmax * h + a_free * h * h, false, [&](int i, int j) {
+  const double reach = 2.0 * vmax * h + a_free * h * h;
+  sweep_pairs(model, state, x, cache, reach, false, [&](int i, int j) {
     const double ai = accel(i), aj = accel(j), a = ai == a_free || aj == a_free ? a_free : ai + aj;
     const Vec3 d0 = position(x, i) - position(x, j), v = velocity(x, i) - velocity(x, j);
     const double ri = model.balls[i].radius, rj = model.balls[j].radius, dist = glm::length(d0);
@@ -307,7 +308,7 @@ double time_to_possible_contact(const Model& model, const State& state, const do
     if (dist - ri - rj >= kTouch && t <= horizon) step->separated.emplace_back(std::min(i, j), std::max(i, j));
     else step->near.emplace_back(i, j);
   });
-  if (step) step->near_known = true;
+  if (step) step->near_known = true, step->reach = reach;
   sort();
   return best;
 }

@@ -33,6 +33,10 @@ struct StepContacts {
   // checks these instead of sweeping again on each of its six calls a step.
   std::vector<ContactKey> near;
   bool near_known = false;
+  // m, with near_known: the cap's sweep found every pair of balls whose extents came within this of each other at the
+  // step's start (the pairs in near or separated). No other pair can touch unless its balls moved more than this
+  // between them (EventDetector::collect: balls pushed harder than the cap's acceleration bound).
+  double reach = 0;
   // A contact begins at the step's start: within kTouch of zero depth and closing. Its force grows as depth^e (Hertz:
   // e = 1.5) from there, which the step's error estimate understates (stepper.hpp, onset_underestimate).
   bool onset = false;

@@ -106,21 +106,36 @@ void EventDetector::collect(const State& state, const double* x, std::vector<Key
   memo_keys_ = keys;
 }
 
-void EventDetector::collect(const State& state, const double* x, const EndRecord& end, std::vector<Key>& keys) {
+void EventDetector::collect(const State& state, const StepSpan& span, const EndRecord& end, std::vector<Key>& keys) {
+  const double* x = span.x1.data();
+  // The record holds every pair the step looked at. Another pair can touch only if its balls closed a gap wider than
+  // the cap's reach: two of them moved more than that between them (pushed harder than the cap's bound on their
+  // acceleration by the balls around them). Then the broad phase looks.
+  if (end.step->near_known) {
+    double most = 0, next = 0;  // m: the two largest displacements over the span
+    for (int i = 0; i < state.ball_count(); ++i) {
+      if (!state.active(i)) continue;
+      const double moved = glm::length(position(x, i) - position(span.x0, i));
+      if (moved > most) next = most, most = moved;
+      else next = std::max(next, moved);
+    }
+    if (most + next >= end.step->reach) return collect(state, x, keys);
+  }
   keys.clear();
   for (const ContactRecord& r : *end.record)
     if (r.depth > kTouch) keys.push_back(r.key);
   // What the right-hand side left out: the colliders of a ball in the rolling or sliding regime (the bed it rests on)
-  // and the contacts the step kept apart.
+  // and the contacts the step kept apart (which for a ball in a regime may already be among the former).
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.active(i) || !(state.rolling(i) || state.sliding(i))) continue;
     near_colliders(model_, cache_, position(x, i), model_.balls[i].radius, kTouch, [&](int c, const Penetration& pen) {
       if (pen.depth > kTouch) keys.emplace_back(i, -1 - c);
     });
   }
-  for (const Key& k : *end.separated)
+  for (const Key& k : end.step->separated)
     if (depth(k, x) > kTouch) keys.push_back(k);
   std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
 }
 
 double EventDetector::depth(const Key& key, const double* x) const {
@@ -153,7 +168,16 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
   // second is not), the first with its kind.
   double first_at = inf, next_at = inf;
   bool first_is_release = false;
-  auto by = [&] { return std::min(next_at, span.t1); };
+  // Where changed(t) first holds, from `from` on, searched only as far as the changes found so far make worth it: up
+  // to the first if the contact has changed by then (it becomes the first), else up to the second (it becomes the
+  // second); +inf where it has changed by neither. The span's end, where every contact looked at has changed, stands
+  // in for a change not found yet.
+  auto locate = [&](const auto& changed, double from, double resolution) {
+    const double first = std::min(first_at, span.t1), second = std::min(next_at, span.t1);
+    if (first == span.t1 || changed(first)) return bisect(from, first, changed, resolution);
+    if (second < span.t1 && !changed(second)) return inf;
+    return bisect(std::max(from, first), second, changed, resolution);
+  };
   auto found = [&](double at, bool release) {
     if (at < first_at) {
       next_at = first_at;
@@ -176,8 +200,7 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
       // Located to 0.1 ns, past the point: the force is continuous through zero there, so a pulling force held for
       // 0.1 ns costs an impulse of order (dF/dt) 1e-20 N s, and the step that follows sees the contact released.
       auto released_at = [&](double t) { return released(k, balls_at(span, t, k)); };
-      if (by() < span.t1 && !released_at(by())) continue;
-      found(bisect(span.t0, by(), released_at), true);
+      if (const double at = locate(released_at, span.t0, kTimeResolution); at < inf) found(at, true);
     } else if (e->depth > kTouch && friction_switched(s0.friction, e->friction) &&
                moves(k, s0.friction, e->friction, span.t1 - span.t0)) {
       // Where the law first differs from the start's; where the contact stops pushing on the way, it has none. A
@@ -190,10 +213,8 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
       };
       double from = span.t0;
       for (int pass = 0; pass < 2; ++pass) {
-        const double until = by();
-        if (until < span.t1 && !switched_at(until)) break;
-        const double at = bisect(from, until, switched_at, resolution);
-        if (at >= span.t1 - resolution) break;
+        const double at = locate(switched_at, from, resolution);
+        if (at >= span.t1 - resolution) break;  // +inf included
         if (at > span.t0 + resolution) {
           found(at, false);
           break;
@@ -281,10 +302,10 @@ void EventDetector::reset(const State& state) {
   for (int i = 0; i < state.ball_count(); ++i) motion_[i] = classify(model_, cache_, state, state.x.data(), i);
 }
 
-void EventDetector::changes(const State& state, const double* x, const EndRecord& end) {
+void EventDetector::changes(const State& state, const StepSpan& span, const EndRecord& end) {
   std::vector<Key> &now = now_, &begun = begun_, &ended = ended_;
-  if (end.record) collect(state, x, end, now);
-  else collect(state, x, now);
+  if (end.record) collect(state, span, end, now);
+  else collect(state, span.x1.data(), now);
   begun.clear();
   ended.clear();
   std::set_difference(now.begin(), now.end(), contacts_.begin(), contacts_.end(), std::back_inserter(begun));
@@ -292,7 +313,7 @@ void EventDetector::changes(const State& state, const double* x, const EndRecord
 }
 
 EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span, const State& state, const EndRecord& end) {
-  changes(state, span.x1.data(), end);
+  changes(state, span, end);
   constexpr double inf = std::numeric_limits<double>::infinity();
   Changes first{inf, inf};
   // Frozen balls touch at zero depth, and round-off flips them in and out of contact: no kink worth a restart.
@@ -330,7 +351,7 @@ void EventDetector::scan(const StepSpan& span, const State& state, const StepCon
   }
 
   // Contacts that began or ended: set difference of sorted key lists, each change located on its own depth.
-  changes(state, span.x1.data(), end);
+  changes(state, span, end);
   std::vector<Key>& now = now_;
   auto touching_at = [&](const Key& k, double s) { return depth(k, balls_at(span, s, k)) > kTouch; };
   for (const Key& k : begun_)

@@ -57,17 +57,15 @@ class EventDetector {
   explicit EventDetector(const Model& model) : model_(model), cache_(model) {}
   // Snapshot of what holds in `state` (call at the start and after any discontinuity).
   void reset(const State& state);
-  // The contacts as the right-hand side recorded them at a span's end (Dynamics::recorded, sorted by key) and those the
-  // step kept apart (StepContacts::separated): what scan and first_contact_change compare against the snapshot, bar
-  // the beds of balls in a regime, instead of a broad phase of their own (in a breaking rack, a twentieth of the
-  // run). Without a record (a closed-form step, a fixed-step method), they look for themselves.
+  // The contacts as the right-hand side recorded them at a span's end (Dynamics::recorded, sorted by key) and how the
+  // step treated them (StepContacts: the contacts it kept apart, the pairs it looked at): what scan and
+  // first_contact_change compare against the snapshot, bar the beds of balls in a regime, instead of a broad phase of
+  // their own (in a breaking rack, a twentieth of the run). Without a record (a closed-form step, a fixed-step method),
+  // or where a ball moved further than the step's pairs allow for, they look for themselves.
   struct EndRecord {
     const std::vector<ContactRecord>* record = nullptr;
-    const std::vector<ContactKey>* separated = nullptr;
+    const StepContacts* step = nullptr;
   };
-  // Compares the end of `span` against the snapshot, appends located events and the balls that left play, and takes
-  // the end of the span as the new snapshot. `kept`: the contacts whose law the step kept (a separated one that
-  // touches at the end began there).
   void scan(const StepSpan& span, const State& state, const StepContacts& kept, const EndRecord& end,
             std::vector<Event>& events, std::vector<Exit>& exits);
   // Earliest times in the span at which a contact begins and at which one ends (where the force law has a kink);
@@ -101,9 +99,9 @@ class EventDetector {
   using Key = ContactKey;
   // The contacts deeper than kTouch at x, sorted: by a broad phase, or from the record at x.
   void collect(const State& state, const double* x, std::vector<Key>& keys);
-  void collect(const State& state, const double* x, const EndRecord& end, std::vector<Key>& keys);
-  // The contacts at x (now_), and which of them began (begun_) or ended (ended_) since the snapshot.
-  void changes(const State& state, const double* x, const EndRecord& end);
+  void collect(const State& state, const StepSpan& span, const EndRecord& end, std::vector<Key>& keys);
+  // The contacts at the span's end (now_), and which of them began (begun_) or ended (ended_) since the snapshot.
+  void changes(const State& state, const StepSpan& span, const EndRecord& end);
   double depth(const Key& key, const double* x) const;
   // The contact's force at x by the plain law, seen from key.first (none where it does not touch).
   ContactForce force_at(const Key& key, const double* x) const;

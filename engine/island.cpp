@@ -236,7 +236,7 @@ bool Island::step(double limit) {
   std::vector<Exit> exits;
   // An integrated step's last evaluation recorded the contacts at its end (end_record_, sorted).
   const EventDetector::EndRecord end = !constant && adaptive
-                                           ? EventDetector::EndRecord{&end_record_, &dynamics_.step().separated}
+                                           ? EventDetector::EndRecord{&end_record_, &dynamics_.step()}
                                            : EventDetector::EndRecord{};
   detector_.scan(span_, integ_, dynamics_.step(), end, events_, exits);
   // A ball that left play is frozen where it left.
@@ -365,7 +365,7 @@ bool Island::integrate(double dt, double limit, double& t) {
       const StepContacts& kept = dynamics_.step();
       end_record_ = dynamics_.recorded();
       std::sort(end_record_.begin(), end_record_.end(), by_key);
-      const auto change = detector_.first_contact_change(trial, integ_, {&end_record_, &kept.separated});
+      const auto change = detector_.first_contact_change(trial, integ_, {&end_record_, &kept});
       const double early = span_.t1 + 0.01 * tried;
       constexpr double inf = std::numeric_limits<double>::infinity();
       ContactKey touching;
@@ -393,9 +393,10 @@ bool Island::integrate(double dt, double limit, double& t) {
         continue;
       }
       at_onset = cut == onset;
-      // The changes this trial saw after the cut: the first of them ends the next step. (A cut this trial fell short
-      // of is no such change: the trajectory that reached it was not the one redone; aiming at those cost more steps
-      // than it saved.)
+      // The changes each trial of the step saw after its cut: the earliest of them past the step's end ends the next
+      // step (integrate's start). Onsets are left to the onset's own step length, and a cut an earlier trial made that
+      // this one fell short of is no such change (the trajectory that reached it was not the one redone): aiming at
+      // either cost more steps than it saved.
       for (const double later : {change.end, law.release, law.friction, law.next})
         if (later > cut + kTimeResolution) aim_ = std::min(aim_, later);
       aimed.reset();
