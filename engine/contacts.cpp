@@ -219,7 +219,7 @@ bool may_release(const ContactMaterial& m, double depth, double rate) {
 
 }  // namespace
 
-double free_acceleration(const Model&, const State& state, const ContactCache& cache, int i) {
+double free_acceleration(const State& state, const ContactCache& cache, int i) {
   const double g = cache.gravity;
   if (state.rolling(i)) return cache.collider_material[state.rolling_on[i]]->rolling_resistance * g;
   if (state.sliding(i)) {
@@ -233,7 +233,7 @@ double collider_contact_time(const Model& model, const State& state, const doubl
                              const ContactCache& cache, StepContacts* step) {
   const double margin = model.options.contact_margin;
   const Vec3 p = position(x, i), v = velocity(x, i);
-  const double s = glm::length(v), a = free_acceleration(model, state, cache, i);
+  const double s = glm::length(v), a = free_acceleration(state, cache, i);
   double best = std::numeric_limits<double>::infinity();
   // Colliders farther than the ball can travel within the horizon cannot limit the step.
   const double travel = s * horizon + a * horizon * horizon + margin;
@@ -264,7 +264,7 @@ double time_to_possible_contact(const Model& model, const State& state, const do
   // Relative acceleration bound outside contacts: gravity plus cloth friction, generously twice |g|. A pair pushed
   // harder by third balls may start touching inside a step; the simulation then cuts the step at the onset.
   const double a_free = 2.0 * cache.gravity;
-  auto accel = [&](int i) { return free_acceleration(model, state, cache, i); };
+  auto accel = [&](int i) { return free_acceleration(state, cache, i); };
   const double margin = model.options.contact_margin;
   double best = std::numeric_limits<double>::infinity();
   double vmax = 0;

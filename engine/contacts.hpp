@@ -211,7 +211,7 @@ double time_to_possible_contact(const Model& model, const State& state, const do
 // m/s^2: a bound on ball i's acceleration while it touches nothing but the bed it rolls or slides on: rolling
 // resistance mu_r g when rolling, (mu + mu_r) g when sliding, generously 2 |g| otherwise (a ball in the air, one
 // settling onto the bed).
-double free_acceleration(const Model& model, const State& state, const ContactCache& cache, int i);
+double free_acceleration(const State& state, const ContactCache& cache, int i);
 
 // s: a lower bound on the time before ball i could come contact_margin into a collider other than the bed it rolls
 // or slides on (as far as a step may take it), or that far over a hole's edge in that bed; +inf when nothing can

@@ -106,12 +106,13 @@ void EventDetector::collect(const State& state, const double* x, std::vector<Key
   memo_keys_ = keys;
 }
 
-void EventDetector::collect(const State& state, const StepSpan& span, const EndRecord& end, std::vector<Key>& keys) {
+void EventDetector::collect(const State& state, const StepSpan& span, const StepContacts& kept,
+                            const std::vector<ContactRecord>& record, std::vector<Key>& keys) {
   const double* x = span.x1.data();
   // The record holds every pair the step looked at. Another pair can touch only if its balls closed a gap wider than
   // the cap's reach: two of them moved more than that between them (pushed harder than the cap's bound on their
   // acceleration by the balls around them). Then the broad phase looks.
-  if (end.step->near_known) {
+  if (kept.near_known) {
     double most = 0, next = 0;  // m: the two largest displacements over the span
     for (int i = 0; i < state.ball_count(); ++i) {
       if (!state.active(i)) continue;
@@ -119,10 +120,10 @@ void EventDetector::collect(const State& state, const StepSpan& span, const EndR
       if (moved > most) next = most, most = moved;
       else next = std::max(next, moved);
     }
-    if (most + next >= end.step->reach) return collect(state, x, keys);
+    if (most + next >= kept.reach) return collect(state, x, keys);
   }
   keys.clear();
-  for (const ContactRecord& r : *end.record)
+  for (const ContactRecord& r : record)
     if (r.depth > kTouch) keys.push_back(r.key);
   // What the right-hand side left out: the colliders of a ball in the rolling or sliding regime (the bed it rests on)
   // and the contacts the step kept apart (which for a ball in a regime may already be among the former).
@@ -132,7 +133,7 @@ void EventDetector::collect(const State& state, const StepSpan& span, const EndR
       if (pen.depth > kTouch) keys.emplace_back(i, -1 - c);
     });
   }
-  for (const Key& k : end.step->separated)
+  for (const Key& k : kept.separated)
     if (depth(k, x) > kTouch) keys.push_back(k);
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
@@ -302,9 +303,10 @@ void EventDetector::reset(const State& state) {
   for (int i = 0; i < state.ball_count(); ++i) motion_[i] = classify(model_, cache_, state, state.x.data(), i);
 }
 
-void EventDetector::changes(const State& state, const StepSpan& span, const EndRecord& end) {
+void EventDetector::changes(const State& state, const StepSpan& span, const StepContacts& kept,
+                            const std::vector<ContactRecord>* record) {
   std::vector<Key> &now = now_, &begun = begun_, &ended = ended_;
-  if (end.record) collect(state, span, end, now);
+  if (record) collect(state, span, kept, *record, now);
   else collect(state, span.x1.data(), now);
   begun.clear();
   ended.clear();
@@ -312,8 +314,10 @@ void EventDetector::changes(const State& state, const StepSpan& span, const EndR
   std::set_difference(contacts_.begin(), contacts_.end(), now.begin(), now.end(), std::back_inserter(ended));
 }
 
-EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span, const State& state, const EndRecord& end) {
-  changes(state, span, end);
+EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span, const State& state,
+                                                           const StepContacts& kept,
+                                                           const std::vector<ContactRecord>* record) {
+  changes(state, span, kept, record);
   constexpr double inf = std::numeric_limits<double>::infinity();
   Changes first{inf, inf};
   // Frozen balls touch at zero depth, and round-off flips them in and out of contact: no kink worth a restart.
@@ -328,8 +332,8 @@ EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span,
   return first;
 }
 
-void EventDetector::scan(const StepSpan& span, const State& state, const StepContacts& kept, const EndRecord& end,
-                         std::vector<Event>& events, std::vector<Exit>& exits) {
+void EventDetector::scan(const StepSpan& span, const State& state, const StepContacts& kept,
+                         const std::vector<ContactRecord>* record, std::vector<Event>& events, std::vector<Exit>& exits) {
   auto ball_at = [&](double t, int i) { return balls_at(span, t, Key{i, -1}); };
   const size_t first_new = events.size();
 
@@ -351,7 +355,7 @@ void EventDetector::scan(const StepSpan& span, const State& state, const StepCon
   }
 
   // Contacts that began or ended: set difference of sorted key lists, each change located on its own depth.
-  changes(state, span, end);
+  changes(state, span, kept, record);
   std::vector<Key>& now = now_;
   auto touching_at = [&](const Key& k, double s) { return depth(k, balls_at(span, s, k)) > kTouch; };
   for (const Key& k : begun_)

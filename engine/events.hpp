@@ -57,23 +57,20 @@ class EventDetector {
   explicit EventDetector(const Model& model) : model_(model), cache_(model) {}
   // Snapshot of what holds in `state` (call at the start and after any discontinuity).
   void reset(const State& state);
-  // The contacts as the right-hand side recorded them at a span's end (Dynamics::recorded, sorted by key) and how the
-  // step treated them (StepContacts: the contacts it kept apart, the pairs it looked at): what scan and
+  // `record`: the contacts as the right-hand side recorded them at an integrated step's end (Dynamics::recorded,
+  // sorted by key), which with `kept` (the contacts the step kept apart, the pairs it looked at) is what scan and
   // first_contact_change compare against the snapshot, bar the beds of balls in a regime, instead of a broad phase of
-  // their own (in a breaking rack, a twentieth of the run). Without a record (a closed-form step, a fixed-step method),
-  // or where a ball moved further than the step's pairs allow for, they look for themselves.
-  struct EndRecord {
-    const std::vector<ContactRecord>* record = nullptr;
-    const StepContacts* step = nullptr;
-  };
-  void scan(const StepSpan& span, const State& state, const StepContacts& kept, const EndRecord& end,
-            std::vector<Event>& events, std::vector<Exit>& exits);
+  // their own (in a breaking rack, a twentieth of the run). Without a record (a closed-form step, a fixed-step method:
+  // nullptr), or where a ball moved further than the step's pairs allow for, they look for themselves.
+  void scan(const StepSpan& span, const State& state, const StepContacts& kept,
+            const std::vector<ContactRecord>* record, std::vector<Event>& events, std::vector<Exit>& exits);
   // Earliest times in the span at which a contact begins and at which one ends (where the force law has a kink);
   // +inf when none.
   struct Changes {
     double begin, end;
   };
-  Changes first_contact_change(const StepSpan& span, const State& state, const EndRecord& end);
+  Changes first_contact_change(const StepSpan& span, const State& state, const StepContacts& kept,
+                               const std::vector<ContactRecord>* record);
   // Earliest time in the span at which one of the `separated` contacts touches (depth > 0), located to
   // kOnsetResolution; +inf when none. `which`, when given, gets that contact.
   double first_touch(const StepSpan& span, const std::vector<ContactKey>& separated, ContactKey* which = nullptr);
@@ -99,9 +96,11 @@ class EventDetector {
   using Key = ContactKey;
   // The contacts deeper than kTouch at x, sorted: by a broad phase, or from the record at x.
   void collect(const State& state, const double* x, std::vector<Key>& keys);
-  void collect(const State& state, const StepSpan& span, const EndRecord& end, std::vector<Key>& keys);
+  void collect(const State& state, const StepSpan& span, const StepContacts& kept,
+               const std::vector<ContactRecord>& record, std::vector<Key>& keys);
   // The contacts at the span's end (now_), and which of them began (begun_) or ended (ended_) since the snapshot.
-  void changes(const State& state, const StepSpan& span, const EndRecord& end);
+  void changes(const State& state, const StepSpan& span, const StepContacts& kept,
+               const std::vector<ContactRecord>* record);
   double depth(const Key& key, const double* x) const;
   // The contact's force at x by the plain law, seen from key.first (none where it does not touch).
   ContactForce force_at(const Key& key, const double* x) const;

@@ -192,7 +192,7 @@ bool Island::step(double limit) {
     closed_form_step(t);
     // The caps let a pair come contact_margin into touching within the step: end it where the contact begins,
     // exactly, as on the closed-form path the step's interpolant is the motion itself.
-    const double touch = std::min(detector_.first_contact_change(trial_, integ_, {}).begin,
+    const double touch = std::min(detector_.first_contact_change(trial_, integ_, dynamics_.step(), nullptr).begin,
                                   detector_.first_touch(trial_, dynamics_.step().separated));
     if (touch < t - kOnsetResolution) {
       t = touch;
@@ -235,10 +235,7 @@ bool Island::step(double limit) {
   copy_flags(integ_, start_);
   std::vector<Exit> exits;
   // An integrated step's last evaluation recorded the contacts at its end (end_record_, sorted).
-  const EventDetector::EndRecord end = !constant && adaptive
-                                           ? EventDetector::EndRecord{&end_record_, &dynamics_.step()}
-                                           : EventDetector::EndRecord{};
-  detector_.scan(span_, integ_, dynamics_.step(), end, events_, exits);
+  detector_.scan(span_, integ_, dynamics_.step(), !constant && adaptive ? &end_record_ : nullptr, events_, exits);
   // A ball that left play is frozen where it left.
   StateVector at;
   for (const Exit& e : exits) {
@@ -307,7 +304,7 @@ bool Island::integrate(double dt, double limit, double& t) {
   // A change the last step's trials saw past where they were cut ends this step (aim_): a trial across it would be
   // redone to end there, two trials for one step. Located on a trial that crossed the cut's kink, it is not always
   // close enough (a step that ends short of it is followed by a short one), but on balance it pays: on the break,
-  // 77 steps so aimed, 5 % fewer trials of the rack and 5 % fewer instructions in all.
+  // the rack's trials 790 -> 718 and 5 % fewer instructions in all.
   const double aim = aim_;
   aim_ = std::numeric_limits<double>::infinity();
   if (adaptive && aim > span_.t1 && aim - span_.t1 < dt) dt = aim - span_.t1;
@@ -365,7 +362,7 @@ bool Island::integrate(double dt, double limit, double& t) {
       const StepContacts& kept = dynamics_.step();
       end_record_ = dynamics_.recorded();
       std::sort(end_record_.begin(), end_record_.end(), by_key);
-      const auto change = detector_.first_contact_change(trial, integ_, {&end_record_, &kept});
+      const auto change = detector_.first_contact_change(trial, integ_, kept, &end_record_);
       const double early = span_.t1 + 0.01 * tried;
       constexpr double inf = std::numeric_limits<double>::infinity();
       ContactKey touching;

@@ -166,7 +166,7 @@ std::optional<FreePath> free_path(const Model& model, const State& state, const 
   const double jump = 2.0 / 7.0 * entry_slip(model) + kStopSpeed + (model.options.sleep_time > 0 ? rest : 0.0);
   // Up to free_for the ball may come contact_margin into a collider (collider_contact_time), which pushes it back by
   // at most that much.
-  return FreePath{position(x, i), velocity(x, i), free_acceleration(model, state, cache, i), jump,
+  return FreePath{position(x, i), velocity(x, i), free_acceleration(state, cache, i), jump,
                   model.options.contact_margin, std::min(horizon, collider_contact_time(model, state, x, i, horizon, cache))};
 }
 
