@@ -88,12 +88,8 @@ void EventDetector::collect(const State& state, const double* x, std::vector<Key
   keys.clear();
   // Sleepers' contacts cannot change while they sleep; leaving them out of the snapshot and of every later collect
   // is consistent, because the snapshot is retaken whenever a ball falls asleep or wakes.
-  for (int i = 0; i < n; ++i) {
-    if (!state.active(i)) continue;
-    near_colliders(model_, cache_, position(x, i), model_.balls[i].radius, kTouch, [&](int c, const Penetration& pen) {
-      if (pen.depth > kTouch) keys.emplace_back(i, -1 - c);
-    });
-  }
+  for (int i = 0; i < n; ++i)
+    if (state.active(i)) collider_contacts(i, x, keys);
   overlapping_pairs(model_, state, x, cache_);
   for (const auto& [i, j] : cache_.pairs) {
     const Key k{std::min(i, j), std::max(i, j)};
@@ -127,16 +123,18 @@ void EventDetector::collect(const State& state, const StepSpan& span, const Step
     if (r.depth > kTouch) keys.push_back(r.key);
   // What the right-hand side left out: the colliders of a ball in the rolling or sliding regime (the bed it rests on)
   // and the contacts the step kept apart (which for a ball in a regime may already be among the former).
-  for (int i = 0; i < state.ball_count(); ++i) {
-    if (!state.active(i) || !(state.rolling(i) || state.sliding(i))) continue;
-    near_colliders(model_, cache_, position(x, i), model_.balls[i].radius, kTouch, [&](int c, const Penetration& pen) {
-      if (pen.depth > kTouch) keys.emplace_back(i, -1 - c);
-    });
-  }
+  for (int i = 0; i < state.ball_count(); ++i)
+    if (state.active(i) && (state.rolling(i) || state.sliding(i))) collider_contacts(i, x, keys);
   for (const Key& k : kept.separated)
     if (depth(k, x) > kTouch) keys.push_back(k);
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+}
+
+void EventDetector::collider_contacts(int i, const double* x, std::vector<Key>& keys) const {
+  near_colliders(model_, cache_, position(x, i), model_.balls[i].radius, kTouch, [&](int c, const Penetration& pen) {
+    if (pen.depth > kTouch) keys.emplace_back(i, -1 - c);
+  });
 }
 
 double EventDetector::depth(const Key& key, const double* x) const {

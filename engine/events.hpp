@@ -98,6 +98,8 @@ class EventDetector {
   void collect(const State& state, const double* x, std::vector<Key>& keys);
   void collect(const State& state, const StepSpan& span, const StepContacts& kept,
                const std::vector<ContactRecord>& record, std::vector<Key>& keys);
+  // Appends ball i's contacts with colliders deeper than kTouch at x.
+  void collider_contacts(int i, const double* x, std::vector<Key>& keys) const;
   // The contacts at the span's end (now_), and which of them began (begun_) or ended (ended_) since the snapshot.
   void changes(const State& state, const StepSpan& span, const StepContacts& kept,
                const std::vector<ContactRecord>* record);
