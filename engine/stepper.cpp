@@ -1,6 +1,11 @@
 #include "stepper.hpp"
 
+// At the engine's inlining limit (engine/CMakeLists.txt) GCC 12 sees odeint's Bulirsch-Stoer read m_dt_last before
+// setting it: its first step compares the step size with it, where a reset or none starts the same fresh state.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <boost/numeric/odeint.hpp>
+#pragma GCC diagnostic pop
 #include <algorithm>
 #include <cmath>
 #include <optional>
