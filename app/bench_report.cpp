@@ -8,6 +8,10 @@
 #include <iterator>
 #include <thread>
 
+#ifdef __linux__
+#include <sched.h>
+#endif
+
 namespace shotlab {
 namespace {
 
@@ -24,6 +28,25 @@ std::string cpu_model() {
   for (std::string line; std::getline(in, line);)
     if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
   return "unknown CPU";
+}
+
+// The CPUs the run was allowed on (`taskset -c 1 shotlab bench` pins it to one). On a virtual machine the cores need
+// not run at the same speed: on the bench machine one vCPU at a time ran the break about 45 % slower than the other
+// for minutes (a busy neighbour on its host core), so an unpinned sweep mixes the two.
+std::string cpu_affinity() {
+#ifdef __linux__
+  cpu_set_t set;
+  if (sched_getaffinity(0, sizeof set, &set) == 0) {
+    std::string list;
+    for (int c = 0; c < CPU_SETSIZE; ++c)
+      if (CPU_ISSET(c, &set)) {
+        if (!list.empty()) list += ',';
+        list += std::to_string(c);
+      }
+    return list + (CPU_COUNT(&set) == 1 ? " (pinned)" : " (not pinned)");
+  }
+#endif
+  return "unknown";
 }
 
 bool write_csv(const std::string& path, const BenchReport& r) {
@@ -200,7 +223,7 @@ bool write_markdown(const std::string& path, const BenchReport& r) {
   char date[64];
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
   o << "# shotlab bench results\n\n- Machine: " << cpu_model() << ", " << std::thread::hardware_concurrency()
-    << " hardware threads\n- Date: " << date << "\n- Command: `" << r.command << "` (total " << fmt("%.0f", r.total_seconds)
+    << " hardware threads; CPUs the run was allowed on: " << cpu_affinity() << "\n- Date: " << date << "\n- Command: `" << r.command << "` (total " << fmt("%.0f", r.total_seconds)
     << " s)\n- Wall time: median of each setting's repeats, inside `advance()` only\n"
     << "- Error: max(|p - p_ref| / R, |v - v_ref| / v0) over the balls at the end time; missed: contacts of the "
        "reference that the run did not have\n\n";
