@@ -259,17 +259,16 @@ bool Regimes::slip_below(const StateVector& x, int i, const Vec3& n, double limi
 bool Regimes::at_rest(const State& state, const StateVector& x, int i) const {
   const double eps = model_.options.rest_speed, r = model_.balls[i].radius;
   return glm::length(velocity(x, i)) < eps && r * glm::length(spin(x, i)) < eps &&
-         (classify(model_, cache_, state, x.data(), i) == Motion::Stationary || hangs_still(x, i));
+         (classify(model_, cache_, state, x.data(), i) == Motion::Stationary || held_still(x, i));
 }
 
-bool Regimes::hangs_still(const StateVector& x, int i) const {
+bool Regimes::held_still(const StateVector& x, int i) const {
   const Rod* held = nullptr;
   for (const Rod& rod : model_.rods)
     if (rod.ball == i) {
       if (held) return false;  // two rods: their forces are not the one-rod law below
       held = &rod;
     }
-  if (!held) return false;
   // Pressed by nothing (a contact's force is not part of the balance below); a cradle's balls may touch at zero depth.
   const double r = model_.balls[i].radius;
   const Vec3 p = position(x, i);
@@ -278,15 +277,20 @@ bool Regimes::hangs_still(const StateVector& x, int i) const {
   bool pressed = false;
   near_colliders(model_, cache_, p, r, 0.0, [&](int, const Penetration& pen) { pressed = pressed || pen.depth > 0; });
   if (pressed) return false;
-  // At zero speed the rod (dynamics.cpp) leaves the ball g - (g.d^) d^ plus its length correction along d^. Hanging
-  // below the anchor (g.d^ > 0: above it the balance is unstable) at the rod's length, with the rest of g under
-  // rest_speed / sleep_time, the ball would not reach rest_speed in the sleep_time that sleep asks it to rest.
-  const Vec3 g = model_.options.gravity, d = p - held->anchor;
-  const double len = glm::length(d);
-  if (len <= 0 || std::abs(len - held->length) > model_.options.contact_margin) return false;
-  const Vec3 dh = d / len;
-  return glm::dot(g, dh) > 0 &&
-         glm::length(g - glm::dot(g, dh) * dh) * model_.options.sleep_time < model_.options.rest_speed;
+  // What is left at zero speed: gravity, less what the rod (dynamics.cpp) takes along d^ (plus its length
+  // correction, nil at the rod's length). Hanging below the anchor or level with it (g.d^ >= 0: above it the balance
+  // is unstable), with what is left under rest_speed / sleep_time, the ball would not reach rest_speed in the
+  // sleep_time that sleep asks it to rest. Without a rod that is a ball in free space without gravity.
+  Vec3 a = model_.options.gravity;
+  if (held) {
+    const Vec3 d = p - held->anchor;
+    const double len = glm::length(d);
+    if (len <= 0 || std::abs(len - held->length) > model_.options.contact_margin) return false;
+    const Vec3 dh = d / len;
+    if (glm::dot(a, dh) < 0) return false;
+    a -= glm::dot(a, dh) * dh;
+  }
+  return glm::length(a) * model_.options.sleep_time < model_.options.rest_speed;
 }
 
 int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const {

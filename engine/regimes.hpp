@@ -12,9 +12,9 @@
 //    motion with the matching spin, linear decay of the vertical spin, height fixed at the static sink depth.
 //    Explicit steps are then limited by accuracy and by the time to the next possible contact, not by stability;
 //  - asleep (Box2D's islands, reduced to what billiards needs): a group of touching balls that has rested (stationary
-//    on its support, or hanging still on its rod) for sleep_time is frozen exactly (no equations, no contacts), so
-//    resting balls cost nothing and cannot drift. A sleeping ball is an obstacle to awake ones and wakes, with every
-//    sleeping ball touching it, as soon as an awake ball that is not at rest touches it.
+//    on its support, hanging still on its rod, or still in free space) for sleep_time is frozen exactly (no
+//    equations, no contacts), so resting balls cost nothing and cannot drift. A sleeping ball is an obstacle to awake
+//    ones and wakes, with every sleeping ball touching it, as soon as an awake ball that is not at rest touches it.
 // Inside their smoothing bands a regime ball's spin about the normal and a rolling ball's speed decay exponentially,
 // which would hold every step to milliseconds; they follow their closed forms instead (band_tail.hpp), and a rolling
 // ball's last 1e-7 m/s of speed is cut to zero.
@@ -43,8 +43,9 @@ class Regimes {
 
  private:
   bool at_rest(const State& state, const StateVector& x, int i) const;
-  // Ball i hangs still under the anchor of its one rod, pressed by nothing (a Newton's cradle's resting balls).
-  bool hangs_still(const StateVector& x, int i) const;
+  // Ball i is held still off any support, pressed by nothing: under the anchor of its one rod (a Newton's cradle's
+  // resting balls), or in free space without gravity.
+  bool held_still(const StateVector& x, int i) const;
   bool slip_below(const StateVector& x, int i, const Vec3& n, double limit) const;  // tangential slip at the bed
   bool update_sleep(State& state, StateVector& x, double dt);
   bool update_rolling(State& state, StateVector& x);

@@ -17,9 +17,9 @@ Simulation::Simulation(Model model, State initial)
       integ_(std::move(initial)),
       cache_(model_),
       partition_(model_) {
-  // Balls that start at rest (in their static sink on the bed, nothing moving against them, or hanging still on a
-  // rod) sleep from the start instead of after sleep_time of integrating what cannot move. The update also sizes the
-  // regime flags.
+  // Balls that start at rest (in their static sink on the bed, nothing moving against them, or held still off any
+  // support: under a rod's anchor, in free space without gravity) sleep from the start instead of after sleep_time of
+  // integrating what cannot move. The update also sizes the regime flags.
   Regimes(model_).update(integ_, integ_.x, model_.options.sleep_time);
   state_ = integ_;
   const Energy e = energy();

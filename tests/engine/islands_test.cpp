@@ -170,9 +170,9 @@ TEST(Islands, SplitShotEndsWhereTheSingleSystemEnds) {
 // Newton's cradle (the bench's S5): the four balls hanging still under their anchors sleep from the start, so only
 // the released ball is integrated while it swings (46 steps, not the ~230 of a resting four-ball island held to 1 ms
 // steps by its 10 um gaps); the swinging ball wakes them, and the impulse still runs through to the last ball. A ball
-// held still off the vertical, or on a rod standing up from its anchor, must not sleep: the first would swing, the
-// second fall.
-TEST(Islands, CradleBallsHangingStillSleepUntilHit) {
+// held still off the vertical, on a rod standing up from its anchor, or in the air without a rod must not sleep: the
+// first would swing, the others fall.
+TEST(Islands, BallsHeldStillSleepUntilHit) {
   const Scene s = load_scene(preset("bench/s5_cradle.json"));
   auto sim = simulate(s);
   for (int i = 1; i < 5; ++i) EXPECT_TRUE(sim->state().sleeping(i)) << "ball " << i + 1;
@@ -196,6 +196,28 @@ TEST(Islands, CradleBallsHangingStillSleepUntilHit) {
   EXPECT_FALSE(simulate(scene(doc))->state().sleeping(0));
   doc["rods"][0]["anchor"] = {0, 0.4, 0};
   EXPECT_TRUE(simulate(scene(doc))->state().sleeping(0));
+  // Without a rod: a ball at rest in the air falls, one at rest in free space without gravity stays.
+  doc.erase("rods");
+  EXPECT_FALSE(simulate(scene(doc))->state().sleeping(0));
+  doc["gravity"] = {0, 0, 0};
+  EXPECT_TRUE(simulate(scene(doc))->state().sleeping(0));
+}
+
+// The bench's S2 (free space, no gravity): the resting object ball sleeps until the cue ball reaches it, and the cut
+// ends where the plain path ends it.
+TEST(Islands, BallAtRestInFreeSpaceSleepsUntilHit) {
+  const Scene s = load_scene(preset("bench/s2_glancing.json"));
+  auto sim = simulate(s);
+  EXPECT_TRUE(sim->state().sleeping(1));
+  EXPECT_EQ(islands_of(*sim), (std::vector<std::vector<int>>{{0}}));
+  ASSERT_EQ(sim->advance(s.duration), Status::Ok) << sim->diagnostic();
+  auto plain = simulate(load_scene(preset("bench/s2_glancing.json"), {"model.sleep_time=0", "model.islands=false"}));
+  ASSERT_EQ(plain->advance(s.duration), Status::Ok) << plain->diagnostic();
+  EXPECT_GT(glm::length(velocity(sim->state().x, 1)), 0.1);  // the object ball was hit
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_LT(glm::length(position(sim->state().x, i) - position(plain->state().x, i)), 1e-9) << "ball " << i;
+    EXPECT_LT(glm::length(velocity(sim->state().x, i) - velocity(plain->state().x, i)), 1e-8) << "ball " << i;
+  }
 }
 
 }  // namespace
