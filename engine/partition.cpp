@@ -9,7 +9,7 @@ namespace {
 // s: the longest the islands run apart while one of them holds two or more awake balls. Islands are split only when
 // they synchronise: a pair that separated after a collision stays one system until then.
 constexpr double kMaxHorizon = 0.02;
-// m: sleepers this close are frozen together and wake together (regimes.cpp's touching slack).
+// m: sleepers this close are frozen together and wake together (Regimes::kTouchSlack, sleep.cpp).
 constexpr double kFrozen = 1e-9;
 }  // namespace
 

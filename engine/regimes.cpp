@@ -9,9 +9,6 @@
 
 namespace shotlab {
 namespace {
-// Balls this close count as touching for waking and grouping sleepers: frozen balls touch at zero depth, give or
-// take round-off.
-constexpr double kTouchSlack = 1e-9;
 // A ball enters the rolling regime once its slip is under entry_slip: 1 % of rest_speed, and no more than 10 times
 // the absolute tolerance. The smoothed friction has by then done almost all of its work: it decays the slip u
 // exponentially, at 1/tau = 3.5 mu g k, about 7e3 1/s for k = 1000 s/m, so the last factor 100 costs a millisecond
@@ -256,43 +253,6 @@ bool Regimes::slip_below(const StateVector& x, int i, const Vec3& n, double limi
   return glm::length(u) < limit;
 }
 
-bool Regimes::at_rest(const State& state, const StateVector& x, int i) const {
-  const double eps = model_.options.rest_speed, r = model_.balls[i].radius;
-  return glm::length(velocity(x, i)) < eps && r * glm::length(spin(x, i)) < eps &&
-         (classify(model_, cache_, state, x.data(), i) == Motion::Stationary || held_still(x, i));
-}
-
-bool Regimes::held_still(const StateVector& x, int i) const {
-  const Rod* held = nullptr;
-  for (const Rod& rod : model_.rods)
-    if (rod.ball == i) {
-      if (held) return false;  // two rods: their forces are not the one-rod law below
-      held = &rod;
-    }
-  // Pressed by nothing (a contact's force is not part of the balance below); a cradle's balls may touch at zero depth.
-  const double r = model_.balls[i].radius;
-  const Vec3 p = position(x, i);
-  for (int j : touching_[i])
-    if (glm::length(p - position(x, j)) - r - model_.balls[j].radius < 0) return false;
-  bool pressed = false;
-  near_colliders(model_, cache_, p, r, 0.0, [&](int, const Penetration& pen) { pressed = pressed || pen.depth > 0; });
-  if (pressed) return false;
-  // What is left at zero speed: gravity, less what the rod (dynamics.cpp) takes along d^ (plus its length
-  // correction, nil at the rod's length). Hanging below the anchor or level with it (g.d^ >= 0: above it the balance
-  // is unstable), with what is left under rest_speed / sleep_time, the ball would not reach rest_speed in the
-  // sleep_time that sleep asks it to rest. Without a rod that is a ball in free space without gravity.
-  Vec3 a = model_.options.gravity;
-  if (held) {
-    const Vec3 d = p - held->anchor;
-    const double len = glm::length(d);
-    if (len <= 0 || std::abs(len - held->length) > model_.options.contact_margin) return false;
-    const Vec3 dh = d / len;
-    if (glm::dot(a, dh) < 0) return false;
-    a -= glm::dot(a, dh) * dh;
-  }
-  return glm::length(a) * model_.options.sleep_time < model_.options.rest_speed;
-}
-
 int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const {
   const double margin = model_.options.contact_margin, r = model_.balls[i].radius;
   const Vec3 p = position(x, i);
@@ -475,77 +435,6 @@ bool Regimes::settle_rolling(StateVector& x, int i, const Vec3& n) const {
   set_velocity(x, i, Vec3{0.0});
   set_spin(x, i, glm::dot(w, n) * n);  // no rolling spin at zero speed (v + R n x w = 0)
   return true;
-}
-
-bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
-  const int n = state.ball_count();
-  if (model_.options.sleep_time <= 0) return false;
-  auto frozen_touch = [&](int i, int j) {
-    return glm::length(position(x, i) - position(x, j)) - model_.balls[i].radius - model_.balls[j].radius < kTouchSlack;
-  };
-  std::vector<uint8_t>& resting = resting_;
-  resting.assign(n, 0);
-  for (int i = 0; i < n; ++i) {
-    if (!state.in_play[i]) continue;
-    resting[i] = state.sleeping(i) || at_rest(state, x, i);
-    state.still_for[i] = resting[i] && !state.sleeping(i) ? state.still_for[i] + dt : 0.0;
-  }
-  bool changed = false;
-  // Wake: flood from every awake ball that is moving through the touching graph; every sleeper reached wakes. A
-  // moving ball wakes a sleeper already within contact_margin, so that the sleeper is awake before the contact
-  // force builds up (steps end at contact onsets); sleepers wake each other only when frozen together.
-  std::vector<int>& stack = stack_;
-  stack.clear();
-  for (int i = 0; i < n; ++i)
-    if (state.in_play[i] && !resting[i]) stack.push_back(i);
-  std::vector<uint8_t>& seen = seen_;
-  seen.assign(n, 0);
-  while (!stack.empty()) {
-    const int i = stack.back();
-    stack.pop_back();
-    auto wake = [&](int j) {
-      if (!state.sleeping(j) || seen[j]) return;
-      seen[j] = 1;
-      state.asleep[j] = 0;
-      state.still_for[j] = 0;
-      changed = true;
-      stack.push_back(j);
-    };
-    for (int j : touching_[i])
-      if (!resting[i]) wake(j);
-    // touching_ leaves out sleeper pairs (the broad phase skips them); look those up directly.
-    sleepers_near(model_, x.data(), cache_, i, kTouchSlack, [&](int j) {
-      if (frozen_touch(i, j)) wake(j);
-    });
-  }
-  // Sleep: a group of touching awake balls falls asleep together once every one has rested for sleep_time.
-  std::fill(seen.begin(), seen.end(), 0);
-  for (int start = 0; start < n; ++start) {
-    if (!state.active(start) || seen[start]) continue;
-    std::vector<int>& group = group_;
-    group.assign(1, start);
-    seen[start] = 1;
-    bool ready = true;
-    for (size_t k = 0; k < group.size(); ++k) {
-      const int i = group[k];
-      ready = ready && state.still_for[i] >= model_.options.sleep_time;
-      for (int j : touching_[i])
-        if (state.active(j) && !seen[j] && frozen_touch(i, j)) {
-          seen[j] = 1;
-          group.push_back(j);
-        }
-    }
-    if (!ready) continue;
-    for (int i : group) {
-      state.asleep[i] = 1;
-      state.rolling_on[i] = -1;
-      state.sliding_on[i] = -1;
-      set_velocity(x, i, Vec3{0.0});
-      set_spin(x, i, Vec3{0.0});
-    }
-    changed = true;
-  }
-  return changed;
 }
 
 }  // namespace shotlab

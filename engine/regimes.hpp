@@ -42,12 +42,12 @@ class Regimes {
   bool update(State& state, StateVector& x, double dt);
 
  private:
+  // Sleep (sleep.cpp): whether ball i rests; ball i held still off any support, pressed by nothing (under the anchor
+  // of its one rod, a Newton's cradle's resting balls, or in free space without gravity); the sleep and wake pass.
   bool at_rest(const State& state, const StateVector& x, int i) const;
-  // Ball i is held still off any support, pressed by nothing: under the anchor of its one rod (a Newton's cradle's
-  // resting balls), or in free space without gravity.
   bool held_still(const StateVector& x, int i) const;
-  bool slip_below(const StateVector& x, int i, const Vec3& n, double limit) const;  // tangential slip at the bed
   bool update_sleep(State& state, StateVector& x, double dt);
+  bool slip_below(const StateVector& x, int i, const Vec3& n, double limit) const;  // tangential slip at the bed
   bool update_rolling(State& state, StateVector& x);
   bool update_sliding(State& state, StateVector& x);
   bool settle_rolling(StateVector& x, int i, const Vec3& n) const;  // stops a rolling ball at the end of its tail
@@ -59,6 +59,9 @@ class Regimes {
   // above its static sink, has settled enough to enter the sliding regime (update_sliding).
   bool settles(const StateVector& x, int i, int bed, const Vec3& n, double vn, double offset) const;
 
+  // Balls this close count as touching for waking and grouping sleepers: frozen balls touch at zero depth, give or
+  // take round-off.
+  static constexpr double kTouchSlack = 1e-9;
   const Model& model_;
   ContactCache cache_;
   std::vector<std::vector<int>> touching_;  // neighbours (frozen-touching included), rebuilt each update
