@@ -296,7 +296,16 @@ std::string EventDetector::body_name(int other) const {
 }
 
 void EventDetector::reset(const State& state) {
+  // A contact that scan let begin at zero depth (a step ended at its onset) is not yet kTouch deep: a restart there
+  // (a regime change at the same step's end) keeps it rather than reporting it again once it gets that deep.
+  std::vector<Key> onsets;
+  for (const Key& k : contacts_)
+    if (state.active(k.first) && (k.second < 0 || state.active(k.second)) && depth(k, state.x.data()) > 0)
+      onsets.push_back(k);
   collect(state, state.x.data(), contacts_);
+  for (const Key& k : onsets)
+    if (const auto at = std::lower_bound(contacts_.begin(), contacts_.end(), k); at == contacts_.end() || *at != k)
+      contacts_.insert(at, k);
   motion_.resize(state.ball_count());
   for (int i = 0; i < state.ball_count(); ++i) motion_[i] = classify(model_, cache_, state, state.x.data(), i);
 }

@@ -55,7 +55,8 @@ constexpr double kOnsetResolution = 1e-13;
 class EventDetector {
  public:
   explicit EventDetector(const Model& model) : model_(model), cache_(model) {}
-  // Snapshot of what holds in `state` (call at the start and after any discontinuity).
+  // Snapshot of what holds in `state` (call at the start and after any discontinuity); the contacts begun at zero
+  // depth before it that still touch stay on.
   void reset(const State& state);
   // `record`: the contacts as the right-hand side recorded them at an integrated step's end (Dynamics::recorded,
   // sorted by key), which with `kept` (the contacts the step kept apart, the pairs it looked at) is what scan and
