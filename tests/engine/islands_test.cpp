@@ -168,7 +168,7 @@ TEST(Islands, SplitShotEndsWhereTheSingleSystemEnds) {
 }
 
 // Newton's cradle (the bench's S5): the four balls hanging still under their anchors sleep from the start, so only
-// the released ball is integrated while it swings (46 steps, not the ~230 of a resting four-ball island held to 1 ms
+// the released ball is integrated while it swings (45 steps, not the ~230 of a resting four-ball island held to 1 ms
 // steps by its 10 um gaps); the swinging ball wakes them, and the impulse still runs through to the last ball. A ball
 // held still off the vertical, on a rod standing up from its anchor, or in the air without a rod must not sleep: the
 // first would swing, the others fall.
@@ -190,7 +190,8 @@ TEST(Islands, BallsHeldStillSleepUntilHit) {
   }
   EXPECT_GT(velocity(sim->state().x, 4).x, 0.5);  // ball 5 flies off, swinging up
 
-  nlohmann::json doc = {{"balls", {{{"id", "up"}, {"position", {0, 0.2, 0}}}}}, {"rods", {{{"ball", "up"}, {"anchor", {0, 0, 0}}}}}};
+  nlohmann::json doc = {{"balls", {{{"id", "up"}, {"position", {0, 0.2, 0}}}}},
+                        {"rods", {{{"ball", "up"}, {"anchor", {0, 0, 0}}}}}};
   EXPECT_FALSE(simulate(scene(doc))->state().sleeping(0));
   doc["rods"][0]["anchor"] = {0.001, 0.4, 0};  // hanging 0.29 degrees off the vertical: pulled back at 0.05 m/s^2
   EXPECT_FALSE(simulate(scene(doc))->state().sleeping(0));
