@@ -85,6 +85,7 @@ std::string line_name(const MethodSetting& s) {
 void use_plain_path(Options& options) {
   options.rolling_regime = false;
   options.sliding_regime = false;
+  options.swing_regime = false;
   options.sleep_time = 0;
   options.islands = false;
 }

@@ -26,8 +26,8 @@ std::vector<BenchCase> bench_cases();
 
 // One integrator configuration: an adaptive method at a tolerance (abs_tol = rel_tol = tol), or a fixed-step
 // method at a step, on the engine's default fast path (rolling regime and sleeping, regimes.hpp) or on the plain
-// all-ODE path (model.rolling_regime = false, model.sliding_regime = false, model.sleep_time = 0,
-// model.islands = false), which the references use.
+// all-ODE path (model.rolling_regime = false, model.sliding_regime = false, model.swing_regime = false,
+// model.sleep_time = 0, model.islands = false), which the references use.
 struct MethodSetting {
   Method method;
   double value;        // tolerance (adaptive) or step in s (fixed)

@@ -1,22 +1,25 @@
 // Dense output for every method: the cubic Hermite interpolant of one accepted step, built from the states and
 // derivatives at both ends. Between contacts the ball paths on the cloth are polynomials of degree <= 2 (MODEL.md:
 // parabolic sliding, linear deceleration, linear spin decay), which a cubic reproduces exactly; inside contacts the
-// steps are short. Error O(h^4) in general. The one exception is a closed-form step's band tails (band_tail.hpp):
-// what they govern follows their own closed form.
+// steps are short. Error O(h^4) in general. The exceptions are a closed-form step's band tails (band_tail.hpp) and
+// swings (swing.hpp): what they govern follows their own closed form.
 #pragma once
 #include <algorithm>
 #include <vector>
 
 #include "band_tail.hpp"
 #include "state.hpp"
+#include "swing.hpp"
 
 namespace shotlab {
 
 struct StepSpan {
   double t0 = 0, t1 = 0;
   StateVector x0, f0, x1, f1;
-  // What decays inside a friction band over the span, in closed form (a closed-form step's; else none).
+  // What decays inside a friction band over the span, and the balls that swing on their rods, in closed form (a
+  // closed-form step's; else none).
   std::vector<BandTail> tails;
+  std::vector<Swing> swings;
 
   // State at t in [t0, t1], written to out (resized).
   void interpolate(double t, StateVector& out) const {
@@ -43,11 +46,12 @@ struct StepSpan {
     for (size_t k = begin; k < end; ++k) out[k] = h00 * x0[k] + h10 * f0[k] + h01 * x1[k] + h11 * f1[k];
     // A tail's components from its closed form instead of the cubic, which would overshoot an exponential across a
     // long step. At t1 itself x1, as a regime's snap at the step's end may have left it (the stop cut).
-    if (s < 1)
-      for (const BandTail& tail : tails) {
-        const size_t b = kBallDofs * static_cast<size_t>(tail.ball);
-        if (b >= begin && b < end) tail.apply(t - t0, out.data() + b);
-      }
+    if (s >= 1) return;
+    auto in_range = [&](int ball) { return kBallDofs * static_cast<size_t>(ball) >= begin && kBallDofs * static_cast<size_t>(ball) < end; };
+    for (const BandTail& tail : tails)
+      if (in_range(tail.ball)) tail.apply(t - t0, out.data() + kBallDofs * tail.ball);
+    for (const Swing& swing : swings)
+      if (in_range(swing.ball)) swing.apply(t - t0, out.data() + kBallDofs * swing.ball);
   }
 };
 

@@ -155,14 +155,17 @@ bool Island::step(double limit) {
   const bool adaptive = is_adaptive(model_.integrator.method);
   double dt = adaptive ? dt_next_ : model_.integrator.fixed_step;
   // An island whose right-hand side stays constant (every ball asleep, or rolling or sliding outside its friction
-  // bands, or inside them where band_tail.hpp has the closed form) moves in closed form: one step as long as the caps
+  // bands, or inside them where band_tail.hpp has the closed form), or whose other balls swing alone on their rods
+  // (swing.hpp), moves in closed form: one step as long as the caps
   // allow (and no longer than a lone ball's horizon, where the island's deadline is not finite), with no error to
   // control.
   bool constant = false;
   trial_.tails.clear();
+  trial_.swings.clear();
   if (adaptive) {
-    const double band = time_to_band_edge(model_, integ_, cap_cache_, span_.x1.data(), &constant, &trial_.tails);
-    if (!constant) trial_.tails.clear();
+    const double band =
+        time_to_band_edge(model_, integ_, cap_cache_, span_.x1.data(), &constant, &trial_.tails, &trial_.swings);
+    if (!constant) trial_.tails.clear(), trial_.swings.clear();
     const double horizon = constant ? std::min(limit - span_.t1, kLoneHorizon) : dt;
     dt = std::min({horizon, band, time_to_possible_contact(model_, integ_, span_.x1.data(), horizon, cap_cache_, &plan_)});
   }
@@ -226,6 +229,7 @@ bool Island::step(double limit) {
   span_.x1.swap(x);
   span_.f1.swap(f);
   span_.tails.swap(trial_.tails);
+  span_.swings.swap(trial_.swings);
   span_.t1 = t;
   integ_.x = span_.x1;
   integ_.time = t;
@@ -241,6 +245,7 @@ bool Island::step(double limit) {
   for (const Exit& e : exits) {
     span_.interpolate(e.time, at);
     std::erase_if(span_.tails, [&](const BandTail& tail) { return tail.ball == e.ball; });
+    std::erase_if(span_.swings, [&](const Swing& swing) { return swing.ball == e.ball; });
     integ_.in_play[e.ball] = 0;
     set_position(span_.x1, e.ball, position(at, e.ball));
     set_velocity(span_.x1, e.ball, Vec3{0.0});
@@ -267,7 +272,8 @@ bool Island::step(double limit) {
 // Constant acceleration over the step to t1 (the island's right-hand side does not change, time_to_band_edge):
 // x(t0 + h) = x0 + h f0 + h^2 / 2 (the acceleration slots of f0 added to the positions), exact, and so is the step's
 // Hermite interpolant (cubic) of a motion that is quadratic in time. What decays inside a friction band follows its
-// own closed form instead (band_tail.hpp), in the interpolant too. The step size suggestion is left alone: a closed
+// own closed form instead (band_tail.hpp), and so does a swinging ball (swing.hpp, whose rod and gravity are all of its
+// right-hand side), in the interpolant too. The step size suggestion is left alone: a closed
 // form estimates no error to base one on.
 void Island::closed_form_step(double t1) {
   end_record_is_start_ = false;
@@ -279,6 +285,7 @@ void Island::closed_form_step(double t1) {
   for (size_t b = 0; b < x.size(); b += kBallDofs)
     for (size_t c = 0; c < 3; ++c) x[b + c] += 0.5 * h * h * f0[b + 3 + c];
   for (const BandTail& tail : trial_.tails) tail.apply(h, x.data() + kBallDofs * tail.ball);
+  for (const Swing& swing : trial_.swings) swing.apply(h, x.data() + kBallDofs * swing.ball);
   f.resize(x.size());
   dynamics_(x, f, t1);
   trial_.t1 = t1;

@@ -58,10 +58,12 @@ struct Options {
   double contact_margin = 1e-6;        // m: a step may bring a still separated pair this far into contact
   double sleep_time = 0.2;             // s a group of touching balls must rest before it sleeps; 0: never
   bool rolling_regime = true;          // closed-form rolling for a ball alone on the bed (regimes.hpp); false, with
-                                       // sliding_regime false, sleep_time 0 and islands false, gives the plain all-ODE
-                                       // path, kept as the reference
+                                       // sliding_regime and swing_regime false, sleep_time 0 and islands false, gives
+                                       // the plain all-ODE path, kept as the reference
   bool sliding_regime = true;          // a ball alone on the bed, settled onto it, slides at its static sink
                                        // (regimes.hpp) instead of integrating its stiff vertical contact mode
+  bool swing_regime = true;            // a ball alone on its rod swings in the plane pendulum's closed form (swing.hpp)
+                                       // instead of being integrated
   bool islands = true;                 // balls that cannot touch for a while integrate apart (partition.hpp); false:
                                        // every ball in one ODE system
 };

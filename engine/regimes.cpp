@@ -27,11 +27,6 @@ double entry_slip(const Model& model) {  // m/s
 constexpr double kDeadTail = 1e-12;
 // m/s: a rolling ball this slow stops (settle_rolling).
 constexpr double kStopSpeed = 1e-7;
-// The share of the absolute tolerance that one snap onto the sliding regime may move a ball where its corrections do
-// not hold (Regimes::settles). The plain path's own position error at the end of the bench scenes is 0.1-0.2 abs_tol
-// (S6 at 1e-7: 1.3e-8 m), and a break has a few dozen snaps: at abs_tol itself, without the position's correction,
-// S6's fast path ended 4x further off than the plain path; at 3 % as close.
-constexpr double kSnapShare = 0.03;
 
 // m: how deep ball b sinks into a bed of material m under its own weight (C d^e = m g).
 double static_sink(const BallSpec& b, const ContactMaterial& m, double g) {
@@ -180,13 +175,14 @@ double path_meeting_time(const FreePath& a, const FreePath& b, double reach, dou
 }
 
 double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
-                         bool* constant, std::vector<BandTail>* tails) {
+                         bool* constant, std::vector<BandTail>* tails, std::vector<Swing>* swings) {
   // A kink this close is not worth a step of its own: the step crosses it within round-off of its start.
   constexpr double kTooClose = 1e-12;
   const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
   const double g = glm::length(model.options.gravity);
   double best = std::numeric_limits<double>::infinity();
   bool outside = true;  // every term so far outside its band
+  bool full = false;     // a ball in the full model
   // A quantity q falling at `rate` (each friction term of strength F relaxes the motion it opposes at F times its
   // mobility, contact_force.hpp) reaches its band's edge 1/k after (q - 1/k) / rate. Where fricstep is 0 (q = 0 and
   // `zero_holds`: nothing else moves q) or 1 (beyond the edge), the term is constant.
@@ -198,11 +194,12 @@ double time_to_band_edge(const Model& model, const State& state, const ContactCa
     return false;
   };
   if (tails) tails->clear();
+  if (swings) swings->clear();
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.active(i)) continue;  // asleep or out of play: frozen
     const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : -1;
-    if (bed < 0) {
-      outside = false;  // the full model
+    if (bed < 0) {  // the full model, unless the ball swings alone on its rod (below)
+      full = true;
       continue;
     }
     const ContactMaterial& m = *cache.collider_material[bed];
@@ -243,6 +240,14 @@ double time_to_band_edge(const Model& model, const State& state, const ContactCa
       outside = false;  // frictionless sliding: rolling resistance acts on the centre's speed all along
     }
   }
+  // The swings last: worked out only where nothing else keeps the island from its closed form.
+  if (full && !(swings && !model.rods.empty())) outside = false;
+  for (int i = 0; full && outside && i < state.ball_count(); ++i)
+    if (state.active(i) && !state.rolling(i) && !state.sliding(i)) {
+      const auto swing = swing_of(model, state, cache, x, i);
+      if (swing) swings->push_back(*swing);
+      else outside = false;
+    }
   if (constant) *constant = outside;
   return best;
 }

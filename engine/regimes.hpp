@@ -17,7 +17,8 @@
 //    ones and wakes, with every sleeping ball touching it, as soon as an awake ball that is not at rest touches it.
 // Inside their smoothing bands a regime ball's spin about the normal and a rolling ball's speed decay exponentially,
 // which would hold every step to milliseconds; they follow their closed forms instead (band_tail.hpp), and a rolling
-// ball's last 1e-7 m/s of speed is cut to zero.
+// ball's last 1e-7 m/s of speed is cut to zero. Off the bed, a free ball that hangs alone on its rod swings in the
+// plane pendulum's closed form (swing.hpp), worked out afresh at each step's start rather than kept as a flag.
 // A ball leaves the rolling regime when anything other than the bed comes within contact_margin, when its support
 // is no longer the flat bed (a pocket rim), or when it stops rolling. Contact onsets end the integrator's step
 // (simulation.cpp), so regime changes happen at the instant of contact.
@@ -29,8 +30,15 @@
 #include "model.hpp"
 #include "band_tail.hpp"
 #include "state.hpp"
+#include "swing.hpp"
 
 namespace shotlab {
+
+// The share of the absolute tolerance that one snap onto a regime may move a ball where its corrections do not hold
+// (Regimes::settles, swing_of). The plain path's own position error at the end of the bench scenes is 0.1-0.2 abs_tol
+// (S6 at 1e-7: 1.3e-8 m), and a break has a few dozen snaps: at abs_tol itself, without the position's correction,
+// S6's fast path ended 4x further off than the plain path; at 3 % as close.
+inline constexpr double kSnapShare = 0.03;
 
 class Regimes {
  public:
@@ -110,9 +118,11 @@ double path_meeting_time(const FreePath& a, const FreePath& b, double reach, dou
 // spin about the normal). The island may then step in closed form (island.cpp). With `tails`, a spin about the
 // normal, a rolling speed or (where its closed form holds) a sliding ball's slip inside its band does not count
 // against that: it is listed there instead, to be followed in closed form (band_tail.hpp), and a tail's end (the
-// stop cut, the rolling entry) counts as an edge.
+// stop cut, the rolling entry) counts as an edge. With `swings`, neither does a ball in the full model that swings
+// alone on its rod (swing_of): it is listed there, to follow the pendulum's closed form.
 double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
-                         bool* constant = nullptr, std::vector<BandTail>* tails = nullptr);
+                         bool* constant = nullptr, std::vector<BandTail>* tails = nullptr,
+                         std::vector<Swing>* swings = nullptr);
 
 // Right-hand sides of a ball in the rolling and the sliding regime (the dynamics above), written into dxdt. `cache`
 // supplies the bed's material without a lookup by name (this runs in every right-hand side).

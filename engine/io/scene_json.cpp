@@ -271,6 +271,7 @@ Scene parse_scene(const json& doc, const std::string& source) {
     m.optional("sleep_time", [&](const JsonNode& v) { s.model.options.sleep_time = v.non_negative(); });
     m.optional("rolling_regime", [&](const JsonNode& v) { s.model.options.rolling_regime = v.boolean(); });
     m.optional("sliding_regime", [&](const JsonNode& v) { s.model.options.sliding_regime = v.boolean(); });
+    m.optional("swing_regime", [&](const JsonNode& v) { s.model.options.swing_regime = v.boolean(); });
     m.optional("islands", [&](const JsonNode& v) { s.model.options.islands = v.boolean(); });
     m.finish();
   });
@@ -395,6 +396,7 @@ json scene_to_json(const Scene& s) {
                   {"sleep_time", s.model.options.sleep_time},
                   {"rolling_regime", s.model.options.rolling_regime},
                   {"sliding_regime", s.model.options.sliding_regime},
+                  {"swing_regime", s.model.options.swing_regime},
                   {"islands", s.model.options.islands}};
   const IntegratorOptions& o = s.model.integrator;
   doc["integrator"] = {{"method", method_name(o.method)}, {"abs_tol", o.abs_tol}, {"rel_tol", o.rel_tol},

@@ -182,7 +182,8 @@ TEST(Islands, BallsHeldStillSleepUntilHit) {
   EXPECT_LT(sim->stats().steps, 60);
   ASSERT_EQ(sim->advance(s.duration - 0.2), Status::Ok) << sim->diagnostic();
   // Where the plain path (every ball integrated all along) ends, to well within the 1e-7 tolerance.
-  auto plain = simulate(load_scene(preset("bench/s5_cradle.json"), {"model.sleep_time=0", "model.islands=false"}));
+  auto plain = simulate(
+      load_scene(preset("bench/s5_cradle.json"), {"model.swing_regime=false", "model.sleep_time=0", "model.islands=false"}));
   ASSERT_EQ(plain->advance(s.duration), Status::Ok) << plain->diagnostic();
   for (int i = 0; i < 5; ++i) {
     EXPECT_LT(glm::length(position(sim->state().x, i) - position(plain->state().x, i)), 1e-8) << "ball " << i + 1;
@@ -224,7 +225,7 @@ TEST(Islands, ContactStepsDoNotDependOnTheStepBeforeTheOnset) {
     return lengths;
   };
   const auto fast = chain_steps({});
-  const auto plain = chain_steps({"model.sleep_time=0", "model.islands=false"});
+  const auto plain = chain_steps({"model.swing_regime=false", "model.sleep_time=0", "model.islands=false"});
   ASSERT_EQ(fast.size(), 12u);
   ASSERT_EQ(plain.size(), 12u);
   for (size_t k = 0; k < fast.size(); ++k) EXPECT_NEAR(fast[k], plain[k], 1e-3 * plain[k]) << "step " << k;
@@ -238,7 +239,8 @@ TEST(Islands, BallAtRestInFreeSpaceSleepsUntilHit) {
   EXPECT_TRUE(sim->state().sleeping(1));
   EXPECT_EQ(islands_of(*sim), (std::vector<std::vector<int>>{{0}}));
   ASSERT_EQ(sim->advance(s.duration), Status::Ok) << sim->diagnostic();
-  auto plain = simulate(load_scene(preset("bench/s2_glancing.json"), {"model.sleep_time=0", "model.islands=false"}));
+  auto plain = simulate(
+      load_scene(preset("bench/s2_glancing.json"), {"model.swing_regime=false", "model.sleep_time=0", "model.islands=false"}));
   ASSERT_EQ(plain->advance(s.duration), Status::Ok) << plain->diagnostic();
   EXPECT_GT(glm::length(velocity(sim->state().x, 1)), 0.1);  // the object ball was hit
   for (int i = 0; i < 2; ++i) {

@@ -89,8 +89,8 @@ TEST(Determinism, IntegratorsAgreeOnACushionRebound) {
 TEST(Determinism, IntegratorsAgreeOnTheBreak) {
   expect_integrators_agree("s6_break.json", 10.0, {{"cash_karp54", "1e-9"}});
   expect_integrators_agree("s6_break.json", 10.0, {{"bulirsch_stoer", "1e-12"}},
-                           {"model.rolling_regime=false", "model.sliding_regime=false", "model.sleep_time=0",
-                            "model.islands=false"});
+                           {"model.rolling_regime=false", "model.sliding_regime=false", "model.swing_regime=false",
+                            "model.sleep_time=0", "model.islands=false"});
 }
 
 }  // namespace
