@@ -163,8 +163,10 @@ bool Island::step(double limit) {
   trial_.tails.clear();
   trial_.swings.clear();
   if (adaptive) {
-    const double band =
-        time_to_band_edge(model_, integ_, cap_cache_, span_.x1.data(), &constant, &trial_.tails, &trial_.swings);
+    continuing_ = span_.swings;
+    for (Swing& s : continuing_) s.phase += s.omega * (span_.t1 - span_.t0);  // as apply() reached the step's end
+    const double band = time_to_band_edge(model_, integ_, cap_cache_, span_.x1.data(), &constant, &trial_.tails,
+                                          &trial_.swings, &continuing_);
     if (!constant) trial_.tails.clear(), trial_.swings.clear();
     const double horizon = constant ? std::min(limit - span_.t1, kLoneHorizon) : dt;
     dt = std::min({horizon, band, time_to_possible_contact(model_, integ_, span_.x1.data(), horizon, cap_cache_, &plan_)});

@@ -175,7 +175,8 @@ double path_meeting_time(const FreePath& a, const FreePath& b, double reach, dou
 }
 
 double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
-                         bool* constant, std::vector<BandTail>* tails, std::vector<Swing>* swings) {
+                         bool* constant, std::vector<BandTail>* tails, std::vector<Swing>* swings,
+                         const std::vector<Swing>* continuing) {
   // A kink this close is not worth a step of its own: the step crosses it within round-off of its start.
   constexpr double kTooClose = 1e-12;
   const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
@@ -244,7 +245,11 @@ double time_to_band_edge(const Model& model, const State& state, const ContactCa
   if (full && !(swings && !model.rods.empty())) outside = false;
   for (int i = 0; full && outside && i < state.ball_count(); ++i)
     if (state.active(i) && !state.rolling(i) && !state.sliding(i)) {
-      const auto swing = swing_of(model, state, cache, x, i);
+      const Swing* last = nullptr;
+      if (continuing)
+        for (const Swing& s : *continuing)
+          if (s.ball == i) last = &s;
+      const auto swing = swing_of(model, state, cache, x, i, last);
       if (swing) swings->push_back(*swing);
       else outside = false;
     }

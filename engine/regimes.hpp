@@ -119,10 +119,11 @@ double path_meeting_time(const FreePath& a, const FreePath& b, double reach, dou
 // normal, a rolling speed or (where its closed form holds) a sliding ball's slip inside its band does not count
 // against that: it is listed there instead, to be followed in closed form (band_tail.hpp), and a tail's end (the
 // stop cut, the rolling entry) counts as an edge. With `swings`, neither does a ball in the full model that swings
-// alone on its rod (swing_of): it is listed there, to follow the pendulum's closed form.
+// alone on its rod (swing_of): it is listed there, to follow the pendulum's closed form (`continuing`: the swings of
+// the step that ended at x, their phases moved on to its end).
 double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
                          bool* constant = nullptr, std::vector<BandTail>* tails = nullptr,
-                         std::vector<Swing>* swings = nullptr);
+                         std::vector<Swing>* swings = nullptr, const std::vector<Swing>* continuing = nullptr);
 
 // Right-hand sides of a ball in the rolling and the sliding regime (the dynamics above), written into dxdt. `cache`
 // supplies the bed's material without a lookup by name (this runs in every right-hand side).

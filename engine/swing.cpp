@@ -48,7 +48,8 @@ void Swing::apply(double h, double* b) const {
   set_velocity(b, 0, (length * 2.0 * modulus * omega * cn) * (c * across - s * down));
 }
 
-std::optional<Swing> swing_of(const Model& model, const State& state, const ContactCache& cache, const double* x, int i) {
+std::optional<Swing> swing_of(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+                              const Swing* last) {
   if (!model.options.swing_regime || cache.gravity <= 0) return std::nullopt;
   const Rod* rod = nullptr;
   for (const Rod& r : model.rods)
@@ -67,6 +68,11 @@ std::optional<Swing> swing_of(const Model& model, const State& state, const Cont
   bool near = false;
   near_colliders(model, cache, p, r, margin, [&](int, const Penetration&) { near = true; });
   if (near) return std::nullopt;
+  if (last) {  // bit for bit where the last step's closed form put it (closed_form_step): nothing changed it since
+    double b[kBallDofs];
+    last->apply(0.0, b);
+    if (position(b, 0) == p && velocity(b, 0) == v) return *last;
+  }
   // On the rod, moving across it and in the plane through it and ĝ, to within what a snap may move it (the
   // out-of-plane speed over the longest closed-form step, kLoneHorizon).
   const double snap = kSnapShare * model.integrator.abs_tol;

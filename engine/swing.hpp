@@ -48,6 +48,9 @@ struct Swing {
 // ball is at the rod's length and moving across it, and in the vertical plane through it, to within a share of the
 // absolute tolerance (the closed form starts from the ball put exactly there); and it swings no higher than the
 // anchor (90 degrees), where free_acceleration's bound of 2 |g| (contacts.hpp) still holds for the step cap.
-std::optional<Swing> swing_of(const Model& model, const State& state, const ContactCache& cache, const double* x, int i);
+// `last`: the swing the ball followed over the step that ended at x, its phase moved on to that end (or none). Where x
+// is exactly where it led, the ball goes on with it, skipping the elliptic integral that finds the phase afresh.
+std::optional<Swing> swing_of(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+                              const Swing* last = nullptr);
 
 }  // namespace shotlab
