@@ -44,10 +44,14 @@ struct StepSpan {
     // Hermite basis: h00 = 2s^3 - 3s^2 + 1, h10 = s^3 - 2s^2 + s, h01 = -2s^3 + 3s^2, h11 = s^3 - s^2.
     const double h00 = 2 * s3 - 3 * s2 + 1, h10 = (s3 - 2 * s2 + s) * h, h01 = -2 * s3 + 3 * s2, h11 = (s3 - s2) * h;
     for (size_t k = begin; k < end; ++k) out[k] = h00 * x0[k] + h10 * f0[k] + h01 * x1[k] + h11 * f1[k];
-    // A tail's components from its closed form instead of the cubic, which would overshoot an exponential across a
-    // long step. At t1 itself x1, as a regime's snap at the step's end may have left it (the stop cut).
+    // A tail's or a swing's components from its closed form instead of the cubic, which would overshoot an exponential
+    // or an arc across a long step. At t1 itself x1, as a regime's snap at the step's end may have left it (the stop
+    // cut).
     if (s >= 1) return;
-    auto in_range = [&](int ball) { return kBallDofs * static_cast<size_t>(ball) >= begin && kBallDofs * static_cast<size_t>(ball) < end; };
+    auto in_range = [&](int ball) {
+      const size_t b = kBallDofs * static_cast<size_t>(ball);
+      return b >= begin && b < end;
+    };
     for (const BandTail& tail : tails)
       if (in_range(tail.ball)) tail.apply(t - t0, out.data() + kBallDofs * tail.ball);
     for (const Swing& swing : swings)

@@ -156,9 +156,8 @@ bool Island::step(double limit) {
   double dt = adaptive ? dt_next_ : model_.integrator.fixed_step;
   // An island whose right-hand side stays constant (every ball asleep, or rolling or sliding outside its friction
   // bands, or inside them where band_tail.hpp has the closed form), or whose other balls swing alone on their rods
-  // (swing.hpp), moves in closed form: one step as long as the caps
-  // allow (and no longer than a lone ball's horizon, where the island's deadline is not finite), with no error to
-  // control.
+  // (swing.hpp), moves in closed form: one step as long as the caps allow (and no longer than a lone ball's horizon,
+  // where the island's deadline is not finite), with no error to control.
   bool constant = false;
   trial_.tails.clear();
   trial_.swings.clear();
@@ -274,9 +273,9 @@ bool Island::step(double limit) {
 // Constant acceleration over the step to t1 (the island's right-hand side does not change, time_to_band_edge):
 // x(t0 + h) = x0 + h f0 + h^2 / 2 (the acceleration slots of f0 added to the positions), exact, and so is the step's
 // Hermite interpolant (cubic) of a motion that is quadratic in time. What decays inside a friction band follows its
-// own closed form instead (band_tail.hpp), and so does a swinging ball (swing.hpp, whose rod and gravity are all of its
-// right-hand side), in the interpolant too. The step size suggestion is left alone: a closed
-// form estimates no error to base one on.
+// own closed form instead (band_tail.hpp), and so does a swinging ball (swing.hpp: its rod and gravity are all of its
+// right-hand side), in the interpolant too. The step size suggestion is left alone: a closed form estimates no error
+// to base one on.
 void Island::closed_form_step(double t1) {
   end_record_is_start_ = false;
   StateVector &x = trial_.x1, &f = trial_.f1;

@@ -42,7 +42,7 @@ void sn_cn(double u, double k, double& sn, double& cn) {
 void Swing::apply(double h, double* b) const {
   double sn, cn;
   sn_cn(phase + omega * h, modulus, sn, cn);
-  // cos θ and sin θ from sin(θ/2) = k sn and cos(θ/2) = dn = sqrt(1 - k^2 sn^2), without another trigonometric call.
+  // cos θ and sin θ from sin(θ/2) = k sn and cos(θ/2) = dn = sqrt(1 - k^2 sn^2), with no further sine or cosine.
   const double half = modulus * sn, c = 1.0 - 2.0 * half * half, s = 2.0 * half * std::sqrt(1.0 - half * half);
   set_position(b, 0, anchor + length * (c * down + s * across));
   set_velocity(b, 0, (length * 2.0 * modulus * omega * cn) * (c * across - s * down));
@@ -86,8 +86,8 @@ std::optional<Swing> swing_of(const Model& model, const State& state, const Cont
   if (glm::length(e) == 0) e = std::abs(g.x) < 0.9 ? glm::cross(g, Vec3{1, 0, 0}) : glm::cross(g, Vec3{0, 1, 0});
   e = glm::normalize(e);
   if (std::abs(glm::dot(v, glm::cross(g, e))) * kLoneHorizon > snap) return std::nullopt;
-  // θ from the vertical: cos θ = d^.ĝ, sin θ = d^.ê; sin(θ/2) = sin θ / (2 cos(θ/2)) with cos(θ/2) = sqrt((1 + cos θ) / 2),
-  // accurate at small angles where 1 - cos θ would not be.
+  // θ from the vertical: cos θ = d^.ĝ, sin θ = d^.ê; sin(θ/2) = sin θ / (2 cos(θ/2)) with
+  // cos(θ/2) = sqrt((1 + cos θ) / 2), accurate at small angles where 1 - cos θ would not be.
   const double cos_t = glm::dot(dh, g), sin_t = glm::dot(dh, e);
   if (cos_t <= 0) return std::nullopt;  // level with the anchor or above it
   const double omega = std::sqrt(cache.gravity / rod->length);

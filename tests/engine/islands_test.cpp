@@ -9,6 +9,11 @@
 namespace shotlab::test {
 namespace {
 
+// Every ball integrated, as one system, all along (the plain path but for the regimes on the bed, which these scenes
+// without a bed do not use).
+const std::vector<std::string> kEveryBallIntegrated = {"model.swing_regime=false", "model.sleep_time=0",
+                                                       "model.islands=false"};
+
 nlohmann::json ball(const std::string& id, double x, double z, double vx = 0, double vz = 0) {
   return {{"id", id}, {"position", {x, kR, z}}, {"velocity", {vx, 0, vz}}, {"angular_velocity", {vz / kR, 0, -vx / kR}}};
 }
@@ -182,8 +187,7 @@ TEST(Islands, BallsHeldStillSleepUntilHit) {
   EXPECT_LT(sim->stats().steps, 60);
   ASSERT_EQ(sim->advance(s.duration - 0.2), Status::Ok) << sim->diagnostic();
   // Where the plain path (every ball integrated all along) ends, to well within the 1e-7 tolerance.
-  auto plain = simulate(
-      load_scene(preset("bench/s5_cradle.json"), {"model.swing_regime=false", "model.sleep_time=0", "model.islands=false"}));
+  auto plain = simulate(load_scene(preset("bench/s5_cradle.json"), kEveryBallIntegrated));
   ASSERT_EQ(plain->advance(s.duration), Status::Ok) << plain->diagnostic();
   for (int i = 0; i < 5; ++i) {
     EXPECT_LT(glm::length(position(sim->state().x, i) - position(plain->state().x, i)), 1e-8) << "ball " << i + 1;
@@ -225,7 +229,7 @@ TEST(Islands, ContactStepsDoNotDependOnTheStepBeforeTheOnset) {
     return lengths;
   };
   const auto fast = chain_steps({});
-  const auto plain = chain_steps({"model.swing_regime=false", "model.sleep_time=0", "model.islands=false"});
+  const auto plain = chain_steps(kEveryBallIntegrated);
   ASSERT_EQ(fast.size(), 12u);
   ASSERT_EQ(plain.size(), 12u);
   for (size_t k = 0; k < fast.size(); ++k) EXPECT_NEAR(fast[k], plain[k], 1e-3 * plain[k]) << "step " << k;
@@ -239,8 +243,7 @@ TEST(Islands, BallAtRestInFreeSpaceSleepsUntilHit) {
   EXPECT_TRUE(sim->state().sleeping(1));
   EXPECT_EQ(islands_of(*sim), (std::vector<std::vector<int>>{{0}}));
   ASSERT_EQ(sim->advance(s.duration), Status::Ok) << sim->diagnostic();
-  auto plain = simulate(
-      load_scene(preset("bench/s2_glancing.json"), {"model.swing_regime=false", "model.sleep_time=0", "model.islands=false"}));
+  auto plain = simulate(load_scene(preset("bench/s2_glancing.json"), kEveryBallIntegrated));
   ASSERT_EQ(plain->advance(s.duration), Status::Ok) << plain->diagnostic();
   EXPECT_GT(glm::length(velocity(sim->state().x, 1)), 0.1);  // the object ball was hit
   for (int i = 0; i < 2; ++i) {
