@@ -1,6 +1,7 @@
 #include "collision_probe.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "simulation.hpp"
 
@@ -39,15 +40,21 @@ CollisionProbe probe_collision(const ContactMaterial& material, double mass, dou
     const auto list = contacts(island.model(), island.state());
     if (list.empty()) return;
     ++out.steps;
+    double force = 0;
     for (const Contact& c : list) {
       out.peak_penetration = std::max(out.peak_penetration, c.depth);
-      out.peak_force = std::max(out.peak_force, c.force.normal);
+      force = std::max(force, c.force.normal);
     }
+    out.peak_force = std::max(out.peak_force, force);
+    out.time.push_back(island.time());
+    out.force.push_back(force);
   });
   double begin = -1, end = -1;
-  // The contact lasts well under a millisecond for any realistic material; allow a second for soft ones.
-  const double slice = 1e-4;
+  // The contact lasts well under a millisecond for any realistic material; allow a second for soft ones, and a
+  // fifth of one in contact (overdamped balls creep apart for ever).
+  const double slice = 1e-4, stuck = 0.2;
   for (int k = 0; k < 10000 && end < 0 && sim.status() == Status::Ok; ++k) {
+    if (begin >= 0 && sim.time() > begin + stuck) break;
     sim.advance(slice);
     for (const Event& e : sim.events()) {
       if (e.kind == "contact_begin" && begin < 0) begin = e.time;
@@ -55,10 +62,38 @@ CollisionProbe probe_collision(const ContactMaterial& material, double mass, dou
     }
   }
   out.contact_time = end > begin && begin >= 0 ? end - begin : 0;
+  for (double& t : out.time) t -= std::max(begin, 0.0);
   const double after = ball_ball ? velocity(sim.state().x, 1).x - velocity(sim.state().x, 0).x
                                  : -velocity(sim.state().x, 0).x;
   out.restitution = after / speed;
   return out;
+}
+
+double damping_for_restitution(const ContactMaterial& material, double mass, double radius, double speed,
+                               bool ball_ball, double restitution, const IntegratorOptions& integrator) {
+  // Bisection on log10 of the damping, bracketed by decades from the material's own damping: few probes land in
+  // the overdamped range, where a probe is slowest (the balls creep apart).
+  constexpr double kTolerance = 2e-4;  // of the restitution: below what the readouts show
+  auto e_at = [&](double log_damping) {
+    ContactMaterial m = material;
+    m.damping = std::pow(10.0, log_damping);
+    return probe_collision(m, mass, radius, speed, ball_ball, integrator).restitution;
+  };
+  const double start = std::log10(material.damping > 0 ? material.damping : 1.0);
+  double lo = start, hi = start;
+  if (e_at(start) > restitution) {
+    for (int k = 0; e_at(hi += 1) > restitution; lo = hi)
+      if (++k == 12) return std::pow(10.0, hi);
+  } else {
+    for (int k = 0; e_at(lo -= 1) <= restitution; hi = lo)
+      if (++k == 12) return 0.0;
+  }
+  for (int k = 0; k < 40; ++k) {
+    const double mid = 0.5 * (lo + hi), e = e_at(mid);
+    if (std::abs(e - restitution) < kTolerance) return std::pow(10.0, mid);
+    (e > restitution ? lo : hi) = mid;
+  }
+  return std::pow(10.0, 0.5 * (lo + hi));
 }
 
 }  // namespace shotlab

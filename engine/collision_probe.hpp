@@ -2,6 +2,8 @@
 // formula): contact time, peak penetration, peak force and restitution at a given impact speed. Used by the tuning
 // panel's readouts and by tests; gravity, table and friction are off so that only the normal law acts.
 #pragma once
+#include <vector>
+
 #include "material.hpp"
 #include "model.hpp"
 
@@ -13,10 +15,19 @@ struct CollisionProbe {
   double peak_force = 0;         // N
   double restitution = 0;        // separation speed / approach speed
   long steps = 0;                // integrator steps while in contact
+  std::vector<double> time;      // s since the contact began, at every step's end while in contact
+  std::vector<double> force;     // N, the normal force then
 };
 
 // Ball (mass, radius) hitting an equal free ball head-on (`ball_ball` = true) or a fixed plane, at `speed` m/s.
 CollisionProbe probe_collision(const ContactMaterial& material, double mass, double radius, double speed,
                                bool ball_ball, const IntegratorOptions& integrator = {});
+
+// The damping (in the material's law and units) for which the same collision has restitution `restitution` in
+// (0, 1), found by bisection on probe_collision (the restitution falls as the damping grows, under both laws).
+// Returns 0 when even undamped the collision keeps less than that, and the largest damping tried when the
+// restitution wanted is below what it reaches.
+double damping_for_restitution(const ContactMaterial& material, double mass, double radius, double speed,
+                               bool ball_ball, double restitution, const IntegratorOptions& integrator = {});
 
 }  // namespace shotlab

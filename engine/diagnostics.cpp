@@ -11,10 +11,9 @@ Energy energy(const Model& model, const State& state, ContactCache& cache, bool 
   Energy e;
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.in_play[i] || (state.sleeping(i) && !with_inactive)) continue;
-    const BallSpec& b = model.balls[i];
-    const Vec3 v = velocity(state.x, i), w = spin(state.x, i);
-    e.kinetic += 0.5 * b.mass * glm::dot(v, v) + 0.5 * b.inertia() * glm::dot(w, w);
-    e.potential -= b.mass * glm::dot(model.options.gravity, position(state.x, i));
+    const BallMotion b = ball_motion(model, state, i);
+    e.kinetic += b.translation + b.rotation;
+    e.potential -= model.balls[i].mass * glm::dot(model.options.gravity, position(state.x, i));
   }
   for_each_contact(model, state, state.x.data(), cache, [&](const Contact& c) {
     const ContactMaterial& m = c.other_ball >= 0 ? *cache.ball_ball : *cache.collider_material[c.collider];
@@ -23,10 +22,16 @@ Energy energy(const Model& model, const State& state, ContactCache& cache, bool 
   return e;
 }
 
+BallMotion ball_motion(const Model& model, const State& state, int i) {
+  const BallSpec& b = model.balls[i];
+  const Vec3 v = velocity(state.x, i), w = spin(state.x, i);
+  return {0.5 * b.mass * glm::dot(v, v), 0.5 * b.inertia() * glm::dot(w, w), b.mass * v};
+}
+
 Vec3 momentum(const Model& model, const State& state) {
   Vec3 p{0.0};
   for (int i = 0; i < state.ball_count(); ++i)
-    if (state.in_play[i]) p += model.balls[i].mass * velocity(state.x, i);
+    if (state.in_play[i]) p += ball_motion(model, state, i).momentum;
   return p;
 }
 

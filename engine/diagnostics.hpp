@@ -15,6 +15,13 @@ struct Energy {
   double total() const { return kinetic + potential + elastic; }
 };
 
+// One ball's part: kinetic energy of translation and of rotation (J), momentum (kg m/s).
+struct BallMotion {
+  double translation = 0, rotation = 0;
+  Vec3 momentum{0.0};
+};
+BallMotion ball_motion(const Model& model, const State& state, int ball);
+
 Energy energy(const Model& model, const State& state);
 // The energy of what the integrator moves (with_inactive = false): awake balls in play and the contacts
 // for_each_contact evaluates for them, i.e. without sleepers and the bed under a rolling ball, whose energy stays
