@@ -63,7 +63,7 @@ std::vector<BenchCase> bench_cases() {
   full.until_rest = true;
   cases.push_back(full);
   // Issue 5's target scene: the break preset (11 m/s from the head spot, frozen rack) to rest.
-  BenchCase target = whole_file("S8", "S8 break preset at 11 m/s to rest", "presets/break.json");
+  BenchCase target = whole_file("S8", "S8 break preset at 11 m/s to rest", "presets/bench/s8_break.json");
   target.until_rest = true;
   cases.push_back(target);
   return cases;

@@ -70,7 +70,7 @@ TEST(FrictionRateLimit, GearedCutShotKeepsItsThrow) {
 TEST(FrictionRateLimit, BreakKeepsItsFirstMilliseconds) {
   nlohmann::json doc;
   {
-    std::ifstream in(preset("break.json"));
+    std::ifstream in(preset("bench/s8_break.json"));
     doc = nlohmann::json::parse(in);
   }
   expect_same_outcome("break, cue ball", doc, 11.0, 0.14);

@@ -101,7 +101,7 @@ TEST(Islands, LoneBallsOnFreePathsMeetOnlyWhereThePathsMeet) {
 // through each other; the deepest ball-ball contact seen in frames of 1/240 s stays at the Hertz depth of the
 // hardest collision (about 1 mm at 11 m/s), far from the 57 mm of a pass-through.
 TEST(Islands, BreakMissesNoContactBetweenIslands) {
-  auto sim = simulate(load_scene(preset("break.json")));
+  auto sim = simulate(load_scene(preset("bench/s8_break.json")));
   double deepest = 0;
   size_t most_islands = 0;
   while (sim->time() < 3.0) {
@@ -120,7 +120,7 @@ TEST(Islands, BreakMissesNoContactBetweenIslands) {
 // other), every pair that overlaps anywhere on a step's interpolant is listed as near or as left out of the step, by
 // the cap run again at the step's start over the step's length.
 TEST(Islands, StepListsHoldEveryPairThatTouchesInTheStep) {
-  auto sim = simulate(load_scene(preset("break.json")));
+  auto sim = simulate(load_scene(preset("bench/s8_break.json")));
   long steps = 0, touching = 0;
   sim->set_observer([&](const Island& island) {
     const StepSpan& span = island.span();

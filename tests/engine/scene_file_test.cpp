@@ -175,7 +175,7 @@ TEST(Cli, RunWritesResultAndTrajectory) {
 
 TEST(Cli, BlowUpExitsWithDiagnostic) {
   std::string err;
-  EXPECT_EQ(run_cli("run " + preset("break.json") + " --set integrator.max_steps_per_call=20", err), 3);
+  EXPECT_EQ(run_cli("run " + preset("bench/s8_break.json") + " --set integrator.max_steps_per_call=20", err), 3);
   EXPECT_NE(err.find("step limit"), std::string::npos) << err;
 }
 

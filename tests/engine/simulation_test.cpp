@@ -107,7 +107,7 @@ TEST(Simulation, FrameRateDoesNotChangeTheResult) {
 }
 
 TEST(Simulation, StepLimitStopsWithADiagnostic) {
-  Scene s = load_scene(preset("break.json"));
+  Scene s = load_scene(preset("bench/s8_break.json"));
   s.model.integrator.max_steps_per_call = 50;
   auto sim = simulate(s);
   Status st = Status::Ok;
