@@ -4,18 +4,14 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "ui/gui.hpp"
+
 namespace shotlab {
 
 void add_run_command(CLI::App& app);    // run_command.cpp
 void add_bench_command(CLI::App& app);  // bench_command.cpp
 
-// Options of the GUI, the program's default mode (no subcommand).
-struct GuiOptions {
-  std::string scene;   // scene file to open, empty: the default preset
-  std::string script;  // file of UI actions to replay (tests, demos), empty: interactive
-  int width = 1280, height = 720;
-};
+// The GUI's options (ui/gui.hpp) on the command line; run_gui is ui/'s, or no_gui.cpp's in builds without a GUI.
 void add_gui_options(CLI::App& app, GuiOptions& options);
-int run_gui(const GuiOptions& options);  // ui/, or no_gui.cpp in builds without a GUI
 
 }  // namespace shotlab

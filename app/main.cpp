@@ -24,5 +24,6 @@ int main(int argc, char** argv) {
     preset.until_rest = true;
     return shotlab::run_scene(preset);
   }
+  gui.data_root = shotlab::data_root();
   return shotlab::run_gui(gui);
 }

@@ -5,7 +5,9 @@ packages=(
   cmake g++ make pkg-config git
   libboost-dev libglm-dev nlohmann-json3-dev libcli11-dev          # engine, scene files, command line
   libglfw3-dev libgl-dev libimgui-dev libstb-dev                   # GUI (GLFW, OpenGL 3.3, Dear ImGui, PNG)
+  fonts-dejavu-core                                                # the GUI's font
   libgtest-dev libbenchmark-dev xvfb xauth python3                 # tests, micro benchmarks, GUI test display
+  xdotool x11-apps                                                 # real mouse and keys, screen grabs (GUI test)
 )
 missing=()
 for p in "${packages[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done

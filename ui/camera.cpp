@@ -30,18 +30,44 @@ void Camera::pan(double dx, double dy, double viewport_height) {
   const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3{0, 1, 0}));
   const glm::dvec3 up = glm::cross(right, forward);
   target += (-dx * right + dy * up) * scale;
+  auto_fit = false;
 }
 
-void Camera::zoom(double steps) { distance = std::clamp(distance * std::pow(0.88, steps), 0.05, 12.0); }
+void Camera::zoom(double steps) {
+  distance = std::clamp(distance * std::pow(0.88, steps), 0.05, 12.0);
+  auto_fit = false;
+}
 
 void Camera::top_view() {
   target = {0, 0, 0};
   yaw = M_PI / 2;  // x (the table's length) runs left to right on screen
   pitch = kMaxPitch;
   distance = 4.1;
+  auto_fit = true;
 }
 
 void Camera::reset() { *this = Camera{}; }
+
+double Camera::fit_distance(const std::vector<glm::dvec3>& points, double aspect) const {
+  constexpr double kMargin = 0.94;  // of the half-extent of the view, on each side
+  auto fits = [&](double d) {
+    Camera c = *this;
+    c.distance = d;
+    const glm::dmat4 vp = c.projection(aspect) * c.view();
+    for (const glm::dvec3& p : points) {
+      const glm::dvec4 clip = vp * glm::dvec4(p, 1.0);
+      if (clip.w <= 1e-6 || std::abs(clip.x) > kMargin * clip.w || std::abs(clip.y) > kMargin * clip.w) return false;
+    }
+    return true;
+  };
+  double lo = 0.05, hi = 40.0;
+  if (!fits(hi)) return distance;
+  for (int k = 0; k < 40; ++k) {  // fitting is monotonic in the distance: bisect to a fraction of a millimetre
+    const double mid = 0.5 * (lo + hi);
+    (fits(mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
 
 Viewport::Viewport(const Camera& c, double x, double w, double h)
     : view_proj(c.projection(w / std::max(h, 1.0)) * c.view()), eye(c.eye()), x0(x), width(w), height(h) {}

@@ -1,7 +1,10 @@
 // Orbit camera around a target point on the table: drag to orbit, pan the target, zoom the distance; a top view.
+// While auto_fit holds, the frame loop sets the distance each frame so that the table fits the 3D view at any window
+// size; orbiting keeps it, zooming or panning ends it, and a reset or the top view brings it back.
 #pragma once
 #include <glm/glm.hpp>
 #include <optional>
+#include <vector>
 
 namespace shotlab {
 
@@ -11,6 +14,7 @@ struct Camera {
   double pitch = 1.0;    // rad above the table plane
   double distance = 3.8; // m
   double fov = 0.8;      // rad, vertical
+  bool auto_fit = true;  // the distance follows the view's size so that what is framed fits (until the user zooms)
 
   glm::dvec3 eye() const;
   glm::dmat4 view() const;
@@ -21,6 +25,8 @@ struct Camera {
   void zoom(double wheel_steps);
   void top_view();
   void reset();
+  // The distance at which every point lies inside the view of the given aspect (width / height), a margin left.
+  double fit_distance(const std::vector<glm::dvec3>& points, double aspect) const;
 };
 
 // A camera fixed to one viewport for the frame: world <-> screen. The viewport is the part of the window between

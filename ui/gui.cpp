@@ -1,11 +1,11 @@
-// run_gui: the window, the frame loop (input, physics on a time budget, 3D view, overlay, panels) and screenshots.
+// run_gui: the window and the frame loop (input, physics on a time budget, layout, 3D view, overlay, panels),
+// pictures (screenshots, plot exports, strobe), and the state dump for tests. The loop sleeps while nothing moves.
+#include "ui/gui.hpp"
+
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
-
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#include <stb_image_write.h>
 
 #include <atomic>
 #include <csignal>
@@ -13,58 +13,28 @@
 #include <iostream>
 #include <memory>
 
-#include "app/commands.hpp"
-#include "app/paths.hpp"
+#include "ui/fonts.hpp"
 #include "ui/gl.hpp"
+#include "ui/keys.hpp"
 #include "ui/panels.hpp"
+#include "ui/pictures.hpp"
 #include "ui/renderer.hpp"
 #include "ui/script.hpp"
+#include "ui/state_dump.hpp"
+#include "ui/widgets.hpp"
 
 namespace shotlab {
 
 namespace {
 
-// Ctrl+C or a polite kill closes the window like its close button, so the settings are still saved.
-std::atomic<bool> interrupted{false};
+// Ctrl+C or a polite kill closes the window like its close button, so the settings are still saved; SIGUSR1 asks
+// for a state dump (--dump-state).
+std::atomic<bool> interrupted{false}, dump_requested{false};
 extern "C" void on_signal(int) { interrupted = true; }
+extern "C" void on_dump_signal(int) { dump_requested = true; }
 
-// The back buffer just drawn (3D view and panels) as a PNG.
-bool write_png(const std::string& path, int width, int height) {
-  std::vector<unsigned char> pixels(static_cast<size_t>(width) * height * 3);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadBuffer(GL_BACK);
-  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
-  stbi_flip_vertically_on_write(1);
-  return stbi_write_png(path.c_str(), width, height, 3, pixels.data(), width * 3) != 0;
-}
-
-void draw_balls(Renderer& renderer, const Lab& lab) {
-  const Frame& f = lab.frame();
-  for (int i = 0; i < f.state.ball_count(); ++i) {
-    if (!f.state.in_play[i] && position(f.state.x, i).y < -0.1) continue;  // gone down a pocket
-    const BallSpec& b = lab.scene.balls[i].spec;
-    renderer.draw_ball(position(f.state.x, i), f.orientation[i], b.radius, ball_look(b.id));
-  }
-}
-
-// Tables have a standard view; a scene without one (Newton's cradle) is framed around its balls and rod anchors.
-void frame_scene(Camera& camera, const Scene& scene) {
-  camera.reset();
-  if (scene.table || scene.balls.empty()) return;
-  Vec3 lo{1e9}, hi{-1e9};
-  for (const InitialBall& b : scene.balls) lo = glm::min(lo, b.position), hi = glm::max(hi, b.position);
-  for (const Rod& r : scene.model.rods) lo = glm::min(lo, r.anchor), hi = glm::max(hi, r.anchor);
-  camera.target = (lo + hi) * 0.5;
-  camera.yaw = M_PI / 2;
-  camera.pitch = 0.25;
-  camera.distance = std::max(0.5, 2.5 * glm::length(hi - lo));
-}
-
-std::string initial_scene(const GuiOptions& o, const Settings& s) {
-  if (!o.scene.empty()) return o.scene;
-  if (!s.last_scene.empty() && std::filesystem::exists(s.last_scene)) return s.last_scene;
-  return preset_path("break.json");
-}
+constexpr float kBaseFontPx = 15;          // the UI font at scale 1
+constexpr float kPresentationScale = 1.7f;  // presentation mode's fonts and widgets, times the UI scale
 
 struct Window {
   GLFWwindow* handle;
@@ -80,6 +50,9 @@ struct Window {
       throw std::runtime_error("cannot open an OpenGL 3.3 core window");
     }
     glfwMakeContextCurrent(handle);
+    // Without a window manager nothing focuses a new window, and ImGui then ignores a pointer that was over it
+    // before it opened (no enter event): take the focus, as a window manager would give it.
+    glfwFocusWindow(handle);
   }
   ~Window() {
     glfwDestroyWindow(handle);
@@ -87,82 +60,214 @@ struct Window {
   }
 };
 
+// Fonts at a few sizes (crisp text at every UI scale), and the style scaled to match; the atlas is built once.
+class Fonts {
+ public:
+  Fonts() {
+    ImGuiIO& io = ImGui::GetIO();
+    base_style_ = ImGui::GetStyle();
+    if (!std::filesystem::exists(kUiFont)) return;  // ImGui's own font, scaled
+    for (float px : {15.0f, 20.0f, 26.0f, 34.0f}) fonts_.push_back({px, io.Fonts->AddFontFromFileTTF(kUiFont, px)});
+  }
+  // Before NewFrame: the font nearest above the wanted size, scaled down to it.
+  void apply(float scale) {
+    if (scale == applied_) return;
+    applied_ = scale;
+    ImGuiIO& io = ImGui::GetIO();
+    const float want = kBaseFontPx * scale;
+    ImFont* font = nullptr;
+    float size = 13;  // ImGui's default font
+    for (const auto& [px, f] : fonts_) {
+      font = f, size = px;
+      if (px >= want) break;
+    }
+    io.FontDefault = font;
+    io.FontGlobalScale = want / size;
+    ImGui::GetStyle() = base_style_;
+    ImGui::GetStyle().ScaleAllSizes(scale);
+  }
+
+ private:
+  std::vector<std::pair<float, ImFont*>> fonts_;
+  ImGuiStyle base_style_;
+  float applied_ = -1;
+};
+
+// Scenes without a table (Newton's cradle) are framed around their balls and rod anchors.
+std::vector<Vec3> framed_points(const Scene& scene) {
+  std::vector<Vec3> points;
+  if (scene.table) {
+    const double hx = scene.table->length / 2 + scene.table->rail_width, hz = scene.table->width / 2 + scene.table->rail_width;
+    for (double sx : {-1.0, 1.0})
+      for (double sz : {-1.0, 1.0}) points.push_back({sx * hx, 0, sz * hz});
+    return points;
+  }
+  for (const InitialBall& b : scene.balls)
+    for (double s : {-1.0, 1.0}) points.push_back(b.position + Vec3{s * b.spec.radius, 0, 0});
+  for (const Rod& r : scene.model.rods)  // the whole swing: a rod's length either side of its anchor and below it
+    for (const Vec3& d : {Vec3{0, 0, 0}, Vec3{r.length, 0, 0}, Vec3{-r.length, 0, 0}, Vec3{0, -r.length, 0},
+                          Vec3{0, 0, r.length}, Vec3{0, 0, -r.length}})
+      points.push_back(r.anchor + d);
+  return points;
+}
+
+void on_scene_loaded(Camera& camera, const Scene& scene) {
+  camera.reset();
+  if (scene.table) return;
+  camera.yaw = M_PI / 2;
+  camera.pitch = 0.25;
+}
+
+// While the camera auto-fits, what is framed fills the 3D view at its current size.
+void fit_camera(Camera& camera, const Scene& scene, const Rect& view) {
+  if (!camera.auto_fit || view.w < 1 || view.h < 1) return;
+  const std::vector<Vec3> points = framed_points(scene);
+  if (points.empty()) return;
+  if (!scene.table) {
+    Vec3 lo{1e9}, hi{-1e9};
+    for (const Vec3& p : points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    camera.target = (lo + hi) * 0.5;
+  }
+  camera.distance = camera.fit_distance(points, view.w / view.h);
+}
+
+// In replay the camera can follow the cue ball (players watching where it goes); it keeps its distance and angle.
+void follow_cue_ball(Camera& camera, const Lab& lab) {
+  if (!lab.settings.view.follow_cue || !lab.shot || !lab.scene.cue) return;
+  const int c = scene_ball(lab.shot->start(), lab.scene.cue->ball);
+  if (c < 0 || c >= lab.frame().state.ball_count() || !lab.frame().state.in_play[c]) return;
+  const Vec3 p = position(lab.frame().state.x, c);
+  camera.target = {p.x, 0, p.z};
+}
+
+std::string initial_scene(const GuiOptions& o, const Settings& s) {
+  if (!o.scene.empty()) return o.scene;
+  if (!s.last_scene.empty() && std::filesystem::exists(s.last_scene)) return s.last_scene;
+  return o.data_root + "/presets/break.json";
+}
+
+Layout frame_layout(const Settings& s, int w, int h) {
+  const float scale = ImGui::GetFontSize() / kBaseFontPx;
+  const float bar = ImGui::GetFrameHeight();
+  return layout_panels(static_cast<float>(w), static_cast<float>(h),
+                       {s.panels.left_open, s.panels.left_width * scale, bar},
+                       {s.panels.right_open, s.panels.right_width * scale, bar});
+}
+
+// Sleeps while nothing changes on screen; after input, draws a few frames so that ImGui settles.
+class Pacer {
+ public:
+  void wait(bool busy) {
+    if (busy || settle_ > 0) {
+      glfwPollEvents();
+      settle_ = busy ? kSettle : settle_ - 1;
+      return;
+    }
+    const double before = glfwGetTime();
+    glfwWaitEventsTimeout(kIdleWake);
+    if (glfwGetTime() - before < kIdleWake * 0.9) settle_ = kSettle;  // woken by an event, not the timeout
+  }
+
+ private:
+  static constexpr int kSettle = 3;
+  static constexpr double kIdleWake = 0.5;  // s: the status line still refreshes at idle
+  int settle_ = kSettle;
+};
+
 }  // namespace
 
 int run_gui(const GuiOptions& options) {
   try {
     std::unique_ptr<Script> script;
-    if (!options.script.empty()) script = std::make_unique<Script>(options.script);
+    if (!options.script.empty()) script = std::make_unique<Script>(options.script, options.data_root);
     Window window(options.width, options.height);
     glfwSwapInterval(script ? 0 : 1);
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
-    // Scripted runs are hermetic: no settings or window layout read or written.
-    static std::string ini;
-    ini = script || config_dir().empty() ? "" : config_dir() + "/imgui.ini";
-    ImGui::GetIO().IniFilename = ini.empty() ? nullptr : ini.c_str();
+    ImGui::GetIO().IniFilename = nullptr;  // panel places come from layout.hpp, not from a saved file
     ImGui::StyleColorsDark();
+    install_key_queue(window.handle);
     ImGui_ImplGlfw_InitForOpenGL(window.handle, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
+    Fonts fonts;
 
+    // Scripted runs are hermetic: no settings read or written.
     Settings settings = script ? Settings{} : load_settings();
     int exit_code = 0;
     {
-      Lab lab(settings);
-      Renderer renderer;
-      ProbeReadouts probes;
+      Lab lab(settings, options.data_root);
+      Renderer renderer(options.data_root);
+      Tuning tuning;
       MouseDrag drag;
-      if (!lab.load(initial_scene(options, settings))) lab.load(preset_path("stun.json"));
-      lab.on_load = [&settings](const Scene& s) { frame_scene(settings.camera, s); };  // the first load keeps the saved view
+      Pacer pacer;
+      lab.on_load = [&settings](const Scene& s) { on_scene_loaded(settings.camera, s); };
+      if (!lab.load(initial_scene(options, settings))) lab.load(options.data_root + "/presets/stun.json");
       ScriptHost host{lab, settings.camera, nullptr};
-      float left = 0, right = static_cast<float>(options.width);  // the 3D view's area, from the previous frame
-      double last = glfwGetTime(), fps_start = last;
-      int fps_frames = 0;
+      double last = glfwGetTime(), frame_seconds = 0;
+      long frame = 0;
       std::signal(SIGINT, on_signal);
       std::signal(SIGTERM, on_signal);
+      if (!options.dump_state.empty()) std::signal(SIGUSR1, on_dump_signal);
       while (!glfwWindowShouldClose(window.handle) && !interrupted && !(script && script->done())) {
-        glfwPollEvents();
+        if (script) glfwPollEvents();
+        else pacer.wait(lab.animating() || tuning.busy() || ImGui::IsAnyMouseDown());
         const double now = glfwGetTime();
         const double dt = script && !host.real_clock ? 1.0 / 60 : std::min(now - last, 0.1);
+        frame_seconds = now - last;
         last = now;
-        if (++fps_frames, now - fps_start >= 1.0) host.fps = fps_frames / (now - fps_start), fps_frames = 0, fps_start = now;
+        host.fps = frame_seconds > 0 ? 1 / frame_seconds : 0;
 
         int w, h;
         glfwGetFramebufferSize(window.handle, &w, &h);
+        fonts.apply(settings.ui_scale * (settings.presentation ? kPresentationScale : 1.0f));
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
+        if (script) {  // scripted runs are hermetic: the pointer, wherever it is, plays no part
+          ImGuiIO& io = ImGui::GetIO();
+          io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+          for (bool& down : io.MouseDown) down = false;
+        }
         ImGui::NewFrame();
-        if (right - left < 200) left = 0, right = static_cast<float>(w);  // panels cover it: use the whole window
-        const Viewport viewport(settings.camera, left, right - left, h);
-        handle_input(lab, settings.camera, viewport, drag);
+        new_marks_frame();
+        const Layout layout = frame_layout(settings, w, h);
+        fit_camera(settings.camera, lab.scene, layout.view);
+        follow_cue_ball(settings.camera, lab);
+        const Viewport viewport(settings.camera, layout.view.x, layout.view.w, h);
+        const ImVec2 mouse = ImGui::GetIO().MousePos;
+        handle_input(lab, settings.camera, viewport, drag, layout.view.contains(mouse.x, mouse.y));
         lab.update(dt);
 
-        left = play_panel(lab, settings.camera);
-        right = std::min(inspector_panel(lab, probes), static_cast<float>(w));
+        settings.panels.left_open = left_panel(lab, settings.camera, layout.left);
+        settings.panels.right_open = inspector_panel(lab, tuning, layout.right);
         help_panel(&settings.view.help);
-        message_banner(lab);
+        message_banner(lab, layout.view);
+        status_line(lab, layout.view, frame_seconds);
         draw_overlay(lab, viewport, ImGui::GetBackgroundDrawList());
 
+        if (!lab.strobe_request.empty()) write_strobe(lab, renderer, viewport, h);
         renderer.begin(viewport.view_proj, viewport.eye, static_cast<int>(viewport.x0), static_cast<int>(viewport.width), h);
         renderer.draw_scene(lab.scene, lab.shot ? lab.shot->sim().model() : lab.table_model);
-        draw_balls(renderer, lab);
+        draw_balls(renderer, lab, lab.frame(), 1.0f);
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-        if (!lab.screenshot_request.empty()) {
-          lab.note = write_png(lab.screenshot_request, w, h) ? "wrote " + lab.screenshot_request
-                                                             : "cannot write " + lab.screenshot_request;
-          lab.screenshot_request.clear();
-        }
+        if (!lab.screenshot_request.empty()) write_screenshot(lab, w, h);
+        const ScreenInfo screen{w, h, layout.view, &viewport, &marks(), &readouts(), host.fps, frame_seconds * 1e3, ++frame};
+        if (dump_requested.exchange(false)) write_state(lab, screen, options.dump_state);
         if (script) {
-          host.screenshot = [w, h](const std::string& path) { return write_png(path, w, h); };
+          host.screen = &screen;
+          host.screenshot = [w, h](const std::string& path) { return write_window_png(path, 0, 0, w, h, h); };
           script->run(host);
+          host.screen = nullptr;
         }
         glfwSwapBuffers(window.handle);
       }
-      if (script) exit_code = script->failures() ? 1 : 0;
-      else save_settings(settings);
+      if (script) {
+        exit_code = script->failures() ? 1 : 0;
+      } else if (std::string error; !save_settings(settings, &error)) {
+        std::cerr << "shotlab: settings not saved: " << error << '\n';
+      }
     }
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();

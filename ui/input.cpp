@@ -1,11 +1,16 @@
-// Mouse: left on a ball selects it and drags it (before the shot); left on the cloth aims the cue there (drag to
-// sweep); shift+left adds a ball; right drag orbits, middle or shift+right drag pans, the wheel zooms.
-// Keys: listed in help_panel (panel_play.cpp), which is the single place the user reads them.
+// Mouse and keys on the 3D view. Aiming and moving are different gestures, so that aiming at a ball never moves it:
+//  - Aim tool (default): left click or drag on the cloth aims the cue there; a click on a ball aims at its centre;
+//    shift+drag turns the aim by 0.01 degree a pixel; ctrl+drag on a ball moves it.
+//  - Move tool: drag a ball to move it, shift+click on the cloth adds one.  Target tool: click sets the target.
+//  - Ball in hand: the cue ball follows the pointer, a click puts it down, Esc puts it back.
+//  - Right drag orbits, middle or shift+right drag pans, the wheel zooms.
+// Keys come from the key queue (keys.hpp) so that a short tap is never lost; help_panel lists them for the user.
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "ui/keys.hpp"
 #include "ui/panels.hpp"
 
 namespace shotlab {
@@ -16,91 +21,144 @@ double ball_height(const Lab& lab) { return lab.scene.balls.empty() ? kPoolBall.
 
 int ball_under(const Lab& lab, const Vec3& p) {
   const Frame& f = lab.frame();
-  for (int i = 0; i < f.state.ball_count(); ++i) {
+  for (int i = 0; i < f.state.ball_count() && i < static_cast<int>(lab.scene.balls.size()); ++i) {
     const Vec3 c = position(f.state.x, i);
-    if (glm::length(Vec3{c.x - p.x, 0, c.z - p.z}) < lab.scene.balls[i].spec.radius * 1.2) return i;
+    if (std::hypot(c.x - p.x, c.z - p.z) < lab.scene.balls[i].spec.radius * 1.2) return i;
   }
   return -1;
 }
 
-void keys(Lab& lab, Camera& camera) {
-  const ImGuiIO& io = ImGui::GetIO();
-  auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
-  auto repeat = [](int key) { return ImGui::IsKeyPressed(key, true); };
-  if (pressed(GLFW_KEY_SPACE)) {
-    if (lab.shot) lab.playing = !lab.playing;
-    else lab.shoot();
+// The aim and speed keys: Left/Right 0.1 degree (shift 1, ctrl 0.01), Up/Down 0.25 m/s (shift 1, ctrl 0.02).
+bool nudge(Lab& lab, const KeyPress& k) {
+  const bool shift = k.mods & GLFW_MOD_SHIFT, ctrl = k.mods & GLFW_MOD_CONTROL;
+  const double deg = shift ? 1.0 : ctrl ? 0.01 : 0.1, mps = shift ? 1.0 : ctrl ? 0.02 : 0.25;
+  switch (k.key) {
+    case GLFW_KEY_LEFT: lab.nudge_aim(deg); return true;
+    case GLFW_KEY_RIGHT: lab.nudge_aim(-deg); return true;
+    case GLFW_KEY_UP: lab.nudge_speed(mps); return true;
+    case GLFW_KEY_DOWN: lab.nudge_speed(-mps); return true;
   }
-  if (pressed(GLFW_KEY_S) || pressed(GLFW_KEY_ENTER)) lab.shoot();
-  if (pressed(GLFW_KEY_R)) lab.replay();
-  if (pressed(GLFW_KEY_U) || (io.KeyCtrl && pressed(GLFW_KEY_Z))) lab.undo();
-  if (pressed(GLFW_KEY_N)) lab.continue_from_rest();
-  if (repeat(GLFW_KEY_PERIOD)) lab.step();
-  if (pressed(GLFW_KEY_LEFT_BRACKET)) lab.settings.slowmo = std::max(1e-3, lab.settings.slowmo / 2);
-  if (pressed(GLFW_KEY_RIGHT_BRACKET)) lab.settings.slowmo = std::min(4.0, lab.settings.slowmo * 2);
-  if (pressed(GLFW_KEY_T)) camera.top_view();
-  if (pressed(GLFW_KEY_HOME)) camera.reset();
-  if (pressed(GLFW_KEY_DELETE)) lab.remove_ball(lab.selected);
-  if (pressed(GLFW_KEY_F1) || pressed(GLFW_KEY_H)) lab.settings.view.help = !lab.settings.view.help;
-  if (pressed(GLFW_KEY_V)) lab.settings.view.velocity = lab.settings.view.spin = !lab.settings.view.velocity;
-  if (pressed(GLFW_KEY_F)) lab.settings.view.forces = !lab.settings.view.forces;
-  if (pressed(GLFW_KEY_F12)) lab.screenshot_request = "shotlab-screenshot.png";
-  if (lab.scene.cue && !lab.shot) {
-    // Fine aim: 0.1 degree a press, shift 1 degree, ctrl 0.01 degree.
-    const double step = (io.KeyShift ? 1.0 : io.KeyCtrl ? 0.01 : 0.1) * M_PI / 180;
-    const int turn = repeat(GLFW_KEY_LEFT) - repeat(GLFW_KEY_RIGHT);
-    const int faster = repeat(GLFW_KEY_UP) - repeat(GLFW_KEY_DOWN);
-    if (turn || faster) {
-      lab.scene.cue->aim += turn * step;
-      lab.scene.cue->speed = std::clamp(lab.scene.cue->speed + 0.1 * faster, 0.05, 15.0);
-      lab.scene_changed();
+  return false;
+}
+
+void toggle(bool& flag) { flag = !flag; }
+
+// Keys that act once per press (auto-repeat ignored), then those that repeat (stepping, aim, speed).
+void key(Lab& lab, Camera& camera, const KeyPress& k) {
+  ViewFlags& v = lab.settings.view;
+  const bool ctrl = k.mods & GLFW_MOD_CONTROL, shift = k.mods & GLFW_MOD_SHIFT;
+  if (k.key == GLFW_KEY_PERIOD) return lab.step(+1);
+  if (k.key == GLFW_KEY_COMMA) return lab.step(-1);
+  if (nudge(lab, k) || k.repeat) return;
+  switch (k.key) {
+    case GLFW_KEY_SPACE:
+      if (lab.shot && !lab.shot_over()) lab.playing = !lab.playing;
+      else if (lab.shot) lab.replay();
+      else lab.shoot();
+      break;
+    case GLFW_KEY_S: case GLFW_KEY_ENTER: case GLFW_KEY_KP_ENTER: lab.shoot(); break;
+    case GLFW_KEY_R: lab.replay(); break;
+    case GLFW_KEY_U: lab.undo(); break;
+    case GLFW_KEY_Z: if (ctrl) shift ? lab.redo() : lab.undo(); break;
+    case GLFW_KEY_Y: if (ctrl) lab.redo(); break;
+    case GLFW_KEY_N: lab.continue_from_rest(); break;
+    case GLFW_KEY_K: lab.keep_shot(); break;
+    case GLFW_KEY_B: lab.pick_up_cue_ball(); break;
+    case GLFW_KEY_P: lab.aim_for_pocket(shift ? -1 : 1); break;
+    case GLFW_KEY_ESCAPE: if (lab.in_hand) lab.undo(); break;
+    case GLFW_KEY_LEFT_BRACKET: lab.settings.slowmo = std::max(1e-3, lab.settings.slowmo / 2); break;
+    case GLFW_KEY_RIGHT_BRACKET: lab.settings.slowmo = std::min(4.0, lab.settings.slowmo * 2); break;
+    case GLFW_KEY_T: camera.top_view(); break;
+    case GLFW_KEY_HOME: camera.reset(); break;
+    case GLFW_KEY_DELETE: lab.remove_ball(lab.selected); break;
+    case GLFW_KEY_F1: case GLFW_KEY_H: toggle(v.help); break;
+    case GLFW_KEY_V: v.velocity = v.spin = !v.velocity; break;
+    case GLFW_KEY_F: toggle(v.forces); break;
+    case GLFW_KEY_L: toggle(v.labels); break;
+    case GLFW_KEY_F2: toggle(lab.settings.panels.left_open); break;
+    case GLFW_KEY_F3: toggle(lab.settings.panels.right_open); break;
+    case GLFW_KEY_F5: toggle(lab.settings.presentation); break;
+    case GLFW_KEY_F12: lab.screenshot_request = export_path(lab, "screenshot", "png"); break;
+  }
+}
+
+// A left press on the table: what it starts depends on the tool, the modifiers and what is under the pointer.
+void left_press(Lab& lab, const Vec3& at, MouseDrag& drag, float x) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (lab.in_hand) return lab.place_cue_ball(at, true);
+  const int ball = ball_under(lab, at);
+  if (lab.tool == Tool::Target) return lab.set_target(at);
+  if (lab.tool == Tool::Move || (io.KeyCtrl && ball >= 0)) {
+    if (ball >= 0) {
+      lab.selected = ball;
+      if (lab.begin_move(ball)) drag = {MouseDrag::Ball, ball};
+    } else if (io.KeyShift) {
+      lab.add_ball(at);
     }
+    return;
+  }
+  if (io.KeyShift && lab.scene.cue) {
+    drag = {MouseDrag::FineAim, -1, lab.scene.cue->aim, x};
+    return;
+  }
+  if (ball >= 0 && !(lab.scene.cue && lab.scene.balls[ball].spec.id == lab.scene.cue->ball)) {
+    lab.selected = ball;
+    lab.aim_at_ball(ball);
+    return;
+  }
+  if (ball >= 0) {  // the cue ball: selected, nothing else
+    lab.selected = ball;
+    return;
+  }
+  drag.kind = MouseDrag::Aim;
+  lab.aim_at(at);
+}
+
+void drag_move(Lab& lab, Camera& camera, const Viewport& vp, MouseDrag& drag, const std::optional<Vec3>& at) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const ImVec2 d = io.MouseDelta;
+  if (d.x == 0 && d.y == 0) return;
+  switch (drag.kind) {
+    case MouseDrag::Orbit: camera.orbit(d.x, d.y); break;
+    case MouseDrag::Pan: camera.pan(d.x, d.y, vp.height); break;
+    case MouseDrag::Ball: if (at) lab.move_ball(drag.ball, *at); break;
+    case MouseDrag::Aim: if (at) lab.aim_at(*at); break;
+    case MouseDrag::FineAim:
+      if (lab.scene.cue) {
+        CueStrike c = *lab.scene.cue;
+        c.aim = drag.aim0 - (io.MousePos.x - drag.x0) * 0.01 * M_PI / 180;
+        lab.set_cue(c, "fine aim");
+      }
+      break;
+    case MouseDrag::None: break;
   }
 }
 
 }  // namespace
 
-void handle_input(Lab& lab, Camera& camera, const Viewport& vp, MouseDrag& drag) {
+void handle_input(Lab& lab, Camera& camera, const Viewport& vp, MouseDrag& drag, bool over_view) {
   const ImGuiIO& io = ImGui::GetIO();
-  if (!io.WantCaptureKeyboard) keys(lab, camera);
+  for (const KeyPress& k : take_key_presses())
+    if (!io.WantTextInput) key(lab, camera, k);
   const glm::dvec2 mouse{io.MousePos.x, io.MousePos.y};
-  const auto on_table = vp.pick_plane(mouse, ball_height(lab));
+  const auto at = vp.pick_plane(mouse, ball_height(lab));
+  const bool free = over_view && !io.WantCaptureMouse;
 
-  if (!io.WantCaptureMouse) {
+  if (lab.in_hand && at && free) lab.place_cue_ball(*at, false);
+  if (free) {
     if (io.MouseWheel != 0) camera.zoom(io.MouseWheel);
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) drag.kind = io.KeyShift ? MouseDrag::Pan : MouseDrag::Orbit;
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) drag.kind = MouseDrag::Pan;
-    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && on_table) {
-      const int ball = ball_under(lab, *on_table);
-      if (io.KeyShift && ball < 0) {
-        lab.add_ball(*on_table);
-      } else if (ball >= 0) {
-        lab.selected = ball;
-        drag = {MouseDrag::Ball, ball};
-      } else {
-        drag.kind = MouseDrag::Aim;
-        lab.aim_at(*on_table);
-      }
-    }
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && at) left_press(lab, *at, drag, io.MousePos.x);
   }
   const bool held = ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Right) ||
                     ImGui::IsMouseDown(ImGuiMouseButton_Middle);
   if (!held) {
+    if (drag.kind != MouseDrag::None) lab.end_gesture();
     drag = {};
     return;
   }
-  const ImVec2 d = io.MouseDelta;
-  switch (drag.kind) {
-    case MouseDrag::Orbit: camera.orbit(d.x, d.y); break;
-    case MouseDrag::Pan: camera.pan(d.x, d.y, vp.height); break;
-    case MouseDrag::Ball:
-      if (on_table && (d.x != 0 || d.y != 0)) lab.move_ball(drag.ball, *on_table);
-      break;
-    case MouseDrag::Aim:
-      if (on_table && (d.x != 0 || d.y != 0)) lab.aim_at(*on_table);
-      break;
-    case MouseDrag::None: break;
-  }
+  drag_move(lab, camera, vp, drag, at);
 }
 
 }  // namespace shotlab

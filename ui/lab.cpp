@@ -1,15 +1,31 @@
 #include "ui/lab.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "engine/io/scene_json.hpp"
-#include "engine/rack.hpp"
 
 namespace shotlab {
 
 namespace {
 constexpr double kTrailSpacing = 0.002;  // m between trail points: long shots stay cheap to draw
+constexpr double kDisplayFrame = 1.0 / 60;  // s of real time a single step shows
+
+std::string fixed(double v, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, v);
+  return text;
+}
+
+// The model's tunable part as the scene format spells it (materials, model options, integrator, gravity).
+nlohmann::json physics_json(const Scene& s) {
+  const nlohmann::json doc = scene_to_json(s);
+  nlohmann::json out;
+  for (const char* key : {"materials", "model", "integrator", "gravity"}) out[key] = doc[key];
+  return out;
+}
 }  // namespace
 
 int scene_ball(const Scene& s, const std::string& id) {
@@ -18,20 +34,28 @@ int scene_ball(const Scene& s, const std::string& id) {
   return -1;
 }
 
+void Lab::say(MessageKind kind, std::string text) {
+  message_kind = kind;
+  message = std::move(text);
+  message_age = 0;
+}
+
 bool Lab::load(const std::string& path) {
   try {
     Scene s = load_scene(path);
     validate(s);
+    loaded = s;
     set_scene(std::move(s));
     scene_path = path;
-    settings.last_scene = path;
+    remember_file(settings, path);
     history.clear();
-    ghost.clear();
-    note = "loaded " + path;
+    ghost.clear(), kept.clear(), compare.clear(), compare_label.clear();
+    target.reset();
+    say(MessageKind::Note, "loaded " + path);
     if (on_load) on_load(scene);
     return true;
   } catch (const std::exception& e) {
-    error = e.what();
+    say(MessageKind::LoadError, e.what());
     return false;
   }
 }
@@ -41,8 +65,9 @@ void Lab::set_scene(Scene s) {
   shot.reset();
   view_time = 0;
   playing = false;
-  selected = 0;
-  if (scene.cue) selected = std::max(0, scene_ball(scene, scene.cue->ball));
+  in_hand = false;
+  tool = Tool::Aim;
+  selected = scene.cue ? std::max(0, scene_ball(scene, scene.cue->ball)) : 0;
   scene_changed();
 }
 
@@ -53,39 +78,88 @@ void Lab::scene_changed() {
   Prepared p = prepare(still);
   table_model = p.model;
   if (!shot) {
-    frame_ = Frame{0, p.state, std::vector<glm::dquat>(scene.balls.size(), glm::dquat(1, 0, 0, 0)), {}, 0};
-    const ContactCache cache(p.model);
-    for (int i = 0; i < p.state.ball_count(); ++i) frame_.motion.push_back(classify(p.model, cache, p.state, p.state.x.data(), i));
+    const Simulation at_start(p.model, p.state);
+    const int n = p.state.ball_count();
+    frame_ = Frame{0, p.state, std::vector<glm::dquat>(n, glm::dquat(1, 0, 0, 0)), {}, at_start.energy()};
+    for (int i = 0; i < n; ++i) frame_.motion.push_back(at_start.motion(i));
   }
-  wanted_ = predictor_.request(scene);
+  wanted_ = predictor_.request(scene, settings.safety_limit);
 }
 
 void Lab::physics_changed() {
+  if (shot && compare.empty() && settings.view.compare) {
+    compare = trails(shot->sim().time());
+    compare_label = "A: the shot before the first change";
+  }
   scene_changed();
   if (!shot) return;
   Scene start = shot->start();
   start.model = scene.model;
-  const bool was_playing = playing;
   start_shot(start);
-  playing = was_playing || shot != nullptr;
+  playing = shot != nullptr;
+}
+
+std::vector<std::string> Lab::physics_changes() const {
+  const nlohmann::json a = physics_json(loaded), b = physics_json(scene);
+  std::vector<std::string> out;
+  for (const auto& op : nlohmann::json::diff(a, b)) {
+    const std::string path = op["path"].get<std::string>();
+    const nlohmann::json::json_pointer ptr(path);
+    std::string name = path.substr(1);
+    std::replace(name.begin(), name.end(), '/', '.');
+    auto text = [](const nlohmann::json& v) {  // numbers as a reader writes them: 5e+08, 0.06
+      if (!v.is_number_float()) return v.dump();
+      char t[32];
+      std::snprintf(t, sizeof t, "%g", v.get<double>());
+      return std::string(t);
+    };
+    const std::string before = a.contains(ptr) ? text(a[ptr]) : "-";
+    const std::string after = op.contains("value") ? text(op["value"]) : "-";
+    out.push_back(name + ": " + before + " -> " + after);
+  }
+  return out;
+}
+
+void Lab::reset_physics() {
+  scene.model.materials = loaded.model.materials;
+  scene.model.options = loaded.model.options;
+  scene.model.integrator = loaded.model.integrator;
+  compare.clear(), compare_label.clear();
+  const bool had_compare = settings.view.compare;
+  settings.view.compare = false;  // the reset shot is the A itself: nothing to compare with
+  physics_changed();
+  settings.view.compare = had_compare;
+  say(MessageKind::Note, "physics reset to the scene file's values");
+}
+
+void Lab::pin_compare() {
+  if (!shot) return;
+  compare = trails(shot->sim().time());
+  const auto changes = physics_changes();
+  compare_label = changes.empty() ? "A: as loaded" : "A: pinned (" + std::to_string(changes.size()) + " changes)";
 }
 
 void Lab::start_shot(const Scene& start) {
   try {
-    shot = std::make_unique<Shot>(start);
+    shot = std::make_unique<Shot>(start, settings.safety_limit);
   } catch (const std::exception& e) {
     shot.reset();
-    error = std::string("cannot simulate this scene: ") + e.what();
+    say(MessageKind::Refused, std::string("cannot simulate this scene: ") + e.what());
   }
+  ++shot_id_;
   view_time = 0;
+  exact_time_ = -1;
+  events_seen_ = 0;
   achieved_speed = 1;
   if (shot) show(0);
   else scene_changed();
 }
 
 void Lab::shoot() {
+  if (in_hand) in_hand = false, history.seal();  // shooting puts the ball in hand down where it is
   if (shot) ghost = trails(shot->sim().time());
-  history.push_back(scene);
+  history.record("shot", scene);
+  if (message_kind != MessageKind::LoadError) say(MessageKind::None, "");
   start_shot(scene);
   playing = shot != nullptr;
 }
@@ -97,34 +171,57 @@ void Lab::replay() {
 }
 
 void Lab::undo() {
-  if (history.empty()) return;
-  Scene previous = std::move(history.back());
-  history.pop_back();
-  previous.model = scene.model;  // undo restores position and aim; tuned physics stays
+  if (in_hand) {  // putting the ball back where it was picked up
+    in_hand = false;
+    if (history.can_undo()) scene = history.undo(scene);
+    scene_changed();
+    return;
+  }
+  if (!history.can_undo()) return say(MessageKind::Note, "nothing to undo");
+  const std::string what = history.undo_label();
+  Scene previous = history.undo(scene);
+  previous.model = scene.model;  // undo restores positions and aim; tuned physics stays (Reset in Tuning)
   if (shot) ghost = trails(shot->sim().time());
   scene = std::move(previous);
   shot.reset();
   playing = false;
   view_time = 0;
-  error.clear();
+  if (message_kind == MessageKind::EngineStop || message_kind == MessageKind::Refused) say(MessageKind::None, "");
+  say(MessageKind::Note, "undone: " + what);
+  scene_changed();
+}
+
+void Lab::redo() {
+  if (!history.can_redo()) return say(MessageKind::Note, "nothing to redo");
+  if (history.redo_label() == "shot") return shoot();  // shooting again records the shot anew
+  const std::string what = history.redo_label();
+  Scene next = history.redo(scene);
+  next.model = scene.model;
+  scene = std::move(next);
+  shot.reset();
+  playing = false;
+  view_time = 0;
+  say(MessageKind::Note, "redone: " + what);
   scene_changed();
 }
 
 void Lab::continue_from_rest() {
   if (!shot) return;
+  if (shot->end() != ShotEnd::Rest)
+    return say(MessageKind::Refused, "Next starts from where the balls stopped: wait until they rest (or Undo).");
   const State& s = shot->sim().state();
   Scene next = scene;
   next.balls = shot->start().balls;
   // Pocketed balls leave the table, except in scenes with rods (their ball indices must stay).
-  std::vector<InitialBall> kept;
+  std::vector<InitialBall> kept_balls;
   for (int i = 0; i < s.ball_count(); ++i) {
     InitialBall b = next.balls[i];
     b.position = position(s.x, i);
     b.position.y = std::max(b.position.y, b.spec.radius);  // back on the bed, off its static sink
     b.velocity = b.angular_velocity = Vec3{0.0};
-    if (s.in_play[i] || !next.model.rods.empty()) kept.push_back(b);
+    if (s.in_play[i] || !next.model.rods.empty()) kept_balls.push_back(b);
   }
-  next.balls = std::move(kept);
+  next.balls = std::move(kept_balls);
   if (next.cue && scene_ball(next, next.cue->ball) < 0) next.cue.reset();  // the cue ball was pocketed
   ghost = trails(shot->sim().time());
   scene = std::move(next);
@@ -136,23 +233,42 @@ void Lab::continue_from_rest() {
 
 void Lab::show(double t) {
   view_time = t;
-  if (shot) frame_ = shot->frame_at(t);
+  if (!shot) return;
+  if (playing || t >= shot->sim().time()) {
+    frame_ = shot->frame_at(t);
+    exact_time_ = -1;
+  } else if (t != exact_time_) {
+    frame_ = shot->exact_frame(t);  // paused between recorded frames: the exact state (a collision shows)
+    exact_time_ = t;
+  }
 }
 
-void Lab::step() {
+void Lab::step(int direction) {
   if (!shot) return;
   playing = false;
-  const double target = view_time + settings.slowmo / 60.0;
-  show(std::min(target, shot->advance(target, 1.0)));
+  const double dt = settings.slowmo * kDisplayFrame;
+  const double target = std::max(0.0, view_time + direction * dt);
+  if (direction > 0 && target > shot->sim().time()) shot->advance(target, 1.0);
+  show(std::min(target, shot->sim().time()));
 }
 
 void Lab::seek(double t) {
   if (!shot) return;
   playing = false;
-  show(std::min(t, shot->advance(t, 10.0)));
+  if (t > shot->sim().time()) shot->advance(t, 10.0);
+  show(std::clamp(t, 0.0, shot->sim().time()));
+}
+
+void Lab::run_on() {
+  if (!shot || shot->end() != ShotEnd::SafetyLimit) return;
+  shot->extend_limit(settings.safety_limit);
+  say(MessageKind::None, "");
+  playing = true;
 }
 
 void Lab::update(double real_dt) {
+  message_age += real_dt;
+  if (message_kind == MessageKind::Note && message_age > kNoteSeconds) say(MessageKind::None, "");
   if (!shot) return;
   if (!playing) {
     show(std::min(view_time, shot->sim().time()));  // scrubbing moves view_time within what is recorded
@@ -166,15 +282,59 @@ void Lab::update(double real_dt) {
   const double reached = target <= shot->sim().time() ? target : shot->advance(target, budget);
   const double got = std::min(target, reached) - view_time;
   if (wanted > 0 && !shot->finished()) achieved_speed = 0.9 * achieved_speed + 0.1 * std::clamp(got / wanted, 0.0, 1.0);
+  const double from = view_time;
   show(std::min(target, reached));
-  if (shot->finished() && view_time >= shot->sim().time()) {
-    playing = false;
-    achieved_speed = 1;
-    const std::string undo_hint = "  Undo (U) returns to the position before the shot.";
-    if (shot->sim().status() != Status::Ok)
-      error = std::string("the simulation stopped (") + status_name(shot->sim().status()) + "): " +
-              shot->sim().diagnostic() + undo_hint;
+  pause_on_events(from, view_time);
+  if (playing && shot_over()) finish_playing();
+}
+
+// Pauses at the first event in (from, to] of a kind the user asked to stop at.
+void Lab::pause_on_events(double from, double to) {
+  const std::vector<Event>& events = shot->sim().events();
+  const PauseOn& p = settings.pause_on;
+  for (; events_seen_ < events.size() && events[events_seen_].time <= to; ++events_seen_) {
+    const Event& e = events[events_seen_];
+    if (e.time <= from) continue;
+    const bool begin = e.kind == "contact_begin" && e.bodies.size() == 2;
+    const bool ball_ball = begin && scene_ball(shot->start(), e.bodies[1]) >= 0;
+    const bool cushion = begin && (e.bodies[1].rfind("cushion", 0) == 0 || e.bodies[1].rfind("jaw", 0) == 0);
+    if ((p.ball_ball && ball_ball) || (p.cushion && cushion) || (p.pocketed && e.kind == "pocketed")) {
+      ++events_seen_;
+      playing = false;
+      show(e.time);
+      std::string who = e.bodies.empty() ? "" : e.bodies[0] + (e.bodies.size() > 1 ? " - " + e.bodies[1] : "");
+      say(MessageKind::Note, "paused at " + e.kind + " " + who + ", t = " + fixed(e.time, 6) + " s");
+      return;
+    }
   }
+}
+
+void Lab::finish_playing() {
+  playing = false;
+  achieved_speed = 1;
+  switch (shot->end()) {
+    case ShotEnd::EngineStop:
+      say(MessageKind::EngineStop, std::string("the simulation stopped (") + status_name(shot->sim().status()) +
+                                       "): " + shot->sim().diagnostic());
+      break;
+    case ShotEnd::SafetyLimit:
+      say(MessageKind::Note, "balls still moving after " + fixed(shot->safety_limit(), 0) +
+                                 " s, the safety limit: Run on continues the shot (Playback)");
+      break;
+    default: break;
+  }
+}
+
+bool Lab::animating() const {
+  const bool tracing = log_job_.valid() && log_job_.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
+  return playing || predicting() || tracing;
+}
+
+bool Lab::contact_on_screen() const {
+  const Model& m = shot ? shot->sim().model() : table_model;
+  for (const Contact& c : contacts(m, frame_.state))
+    if (c.other_ball >= 0 || (c.collider >= 0 && m.colliders[c.collider].name != "bed")) return true;
+  return false;
 }
 
 Trails Lab::trails(double until) const {
@@ -200,73 +360,19 @@ std::optional<Prediction> Lab::prediction() const {
   return p;
 }
 
-void Lab::aim_at(const Vec3& point) {
-  if (!scene.cue || shot) return;
-  const int cue = scene_ball(scene, scene.cue->ball);
-  if (cue < 0) return;
-  const Vec3 d = point - scene.balls[cue].position;
-  if (std::hypot(d.x, d.z) < 1e-4) return;
-  scene.cue->aim = std::atan2(-d.z, d.x);  // CueStrike: 0 = +x, pi/2 = -z
-  scene_changed();
-}
-
-bool Lab::fits(int i, const Vec3& p) const {
-  if (scene.allow_overlap) return true;
-  for (int j = 0; j < static_cast<int>(scene.balls.size()); ++j)
-    if (j != i && glm::length(scene.balls[j].position - p) < scene.balls[j].spec.radius + scene.balls[i].spec.radius)
-      return false;
-  return true;
-}
-
-bool Lab::move_ball(int i, const Vec3& to) {
-  if (shot || i < 0 || i >= static_cast<int>(scene.balls.size())) return false;
-  const Vec3 p{to.x, scene.balls[i].position.y, to.z};
-  if (!fits(i, p)) return false;
-  scene.balls[i].position = p;
-  scene_changed();
-  return true;
-}
-
-void Lab::add_ball(const Vec3& at) {
-  if (shot) return;
-  InitialBall b;
-  b.spec = scene.balls.empty() ? BallSpec{"", kPoolBall.mass, kPoolBall.radius} : scene.balls.back().spec;
-  for (int n = 1;; ++n)  // the smallest free number
-    if (scene_ball(scene, std::to_string(n)) < 0) {
-      b.spec.id = std::to_string(n);
-      break;
-    }
-  b.position = {at.x, b.spec.radius, at.z};
-  scene.balls.push_back(b);
-  if (!fits(static_cast<int>(scene.balls.size()) - 1, b.position)) {
-    scene.balls.pop_back();
-    note = "no room for a ball there";
-    return;
+const ContactLog* Lab::contact_log() {
+  if (!shot) return nullptr;
+  if (log_job_.valid() && log_job_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+    log_ = log_job_.get();
+    log_shot_ = job_shot_;
   }
-  selected = static_cast<int>(scene.balls.size()) - 1;
-  scene_changed();
-}
-
-void Lab::remove_ball(int i) {
-  if (shot || i < 0 || i >= static_cast<int>(scene.balls.size())) return;
-  if (!scene.model.rods.empty()) {
-    note = "this scene's rods hold its balls: they cannot be removed";
-    return;
+  const std::vector<Event>& events = shot->sim().events();
+  const bool stale = log_shot_ != shot_id_ || log_.events != events.size();
+  if (stale && !log_job_.valid()) {
+    job_shot_ = shot_id_;
+    log_job_ = std::async(std::launch::async, trace_contacts, shot->start(), events, shot->sim().time());
   }
-  if (scene.cue && scene.cue->ball == scene.balls[i].spec.id) scene.cue.reset();
-  scene.balls.erase(scene.balls.begin() + i);
-  scene_changed();
-}
-
-void Lab::rack() {
-  if (shot) return;
-  std::vector<InitialBall> balls;
-  for (const InitialBall& b : scene.balls)
-    if (scene.cue && b.spec.id == scene.cue->ball) balls.push_back(b);
-  const BallKind& kind = balls.empty() ? kPoolBall : BallKind{"", balls[0].spec.mass, balls[0].spec.radius};
-  for (InitialBall& b : triangle_rack(RackSpec{}, kind)) balls.push_back(b);
-  scene.balls = std::move(balls);
-  scene_changed();
+  return log_shot_ == shot_id_ ? &log_ : nullptr;
 }
 
 }  // namespace shotlab

@@ -1,81 +1,149 @@
 // The shot lab's state and the actions on it (what the panels, the mouse, the keys and scripts all call):
 //  - `scene` is the position and aim of the next shot: what the user edits, predicts and saves;
 //  - `shot` is the shot being watched (simulated from a copy of the scene taken when it was shot);
-//  - `history` holds the scene before every shot, for undo.
+//  - `history` is one undo stack for edits and shots (history.hpp); tuned physics has its own reset.
+// The actions live in lab.cpp (files, shots, playback) and lab_edit.cpp (aiming and editing the table).
 #pragma once
 #include <functional>
+#include <future>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "engine/scene.hpp"
+#include "ui/contact_log.hpp"
+#include "ui/history.hpp"
+#include "ui/layout.hpp"
 #include "ui/predictor.hpp"
 #include "ui/settings.hpp"
 #include "ui/shot.hpp"
 
 namespace shotlab {
 
-// Index of the ball with this id in scene.balls, -1 when absent (the scene's model gets its balls only when
-// prepared, so Model::ball_index does not apply).
+// Index of the ball with this id in scene.balls, -1 when absent.
 int scene_ball(const Scene& s, const std::string& id);
 
 using Trails = std::vector<std::vector<PathPoint>>;  // per ball
 
+// What a left click or drag on the table does.
+enum class Tool { Aim, Move, Target };
+
+// The banner's message and what it offers: a load error is dismissed (the current scene stayed); an engine stop
+// offers to undo the shot; a refused edit or a note is a line of feedback.
+enum class MessageKind { None, Note, Refused, LoadError, EngineStop };
+
+// A shot kept to compare with later ones: its trails and the cue settings that made it.
+struct KeptShot {
+  std::string label;
+  Trails trails;
+  int colour = 0;
+  bool visible = true;
+};
+inline constexpr size_t kMaxKeptShots = 8;
+
 class Lab {
  public:
-  explicit Lab(Settings& settings) : settings(settings) {}
+  Lab(Settings& settings, std::string data_root) : settings(settings), data_root(std::move(data_root)) {}
 
   Settings& settings;
+  const std::string data_root;  // holds presets/ and assets/
   Scene scene;
   std::string scene_path;
+  Scene loaded;                 // the scene as loaded: physics reset and the list of changes compare with it
   Model table_model;            // prepared model of `scene` (table colliders added): drawing and picking
-  std::vector<Scene> history;
+  History history;
   std::unique_ptr<Shot> shot;
   Trails ghost;                 // the previous shot's trails
+  std::vector<KeptShot> kept;
+  Trails compare;               // "A": the shot's trails before the physics was changed
+  std::string compare_label;
+  std::optional<Vec3> target;   // where the cue ball should stop (players' position play)
+  double target_radius = 0.05;  // m
+  Tool tool = Tool::Aim;
+  bool in_hand = false;         // the cue ball follows the pointer until placed
   double view_time = 0;         // s, the simulated time on screen
   bool playing = false;
   double achieved_speed = 1;    // fraction of the requested clock speed the physics kept up with (smoothed)
   int selected = 0;             // ball index
-  std::string error;            // shown until dismissed: a bad file, an invalid edit, an engine stop
-  std::string note;             // one line of feedback (saved, screenshot written, ...)
-  std::string screenshot_request;  // PNG path: written after the next frame is drawn (gui.cpp)
+  std::string message;
+  MessageKind message_kind = MessageKind::None;
+  double message_age = 0;       // s of real time since the message was set: a note goes after kNoteSeconds
+  static constexpr double kNoteSeconds = 6;
+  std::string screenshot_request;  // PNG path: written after the next frame is drawn
+  std::optional<Rect> screenshot_crop;  // only this part of the window (a plot), else all of it
+  std::string strobe_request;      // PNG path: a multiple exposure of the shot, drawn by the next frame
   std::function<void(const Scene&)> on_load;  // after a scene file loaded (gui.cpp frames the camera)
 
-  bool load(const std::string& path);  // false (and `error` set) when the file is bad; nothing is lost
+  // Files and scenes (lab.cpp).
+  bool load(const std::string& path);  // false (and the message set) when the file is bad; nothing is lost
   void set_scene(Scene s);
+  void say(MessageKind kind, std::string text);
   void scene_changed();    // after editing `scene`'s balls or aim: re-predict
   void physics_changed();  // after editing `scene.model`: re-predict, and re-simulate the current shot from its start
+  std::vector<std::string> physics_changes() const;  // "materials.ball_ball.stiffness: 1e+10 -> 5e+09", ...
+  void reset_physics();    // back to the loaded scene's materials, options and integrator
+  void pin_compare();      // the current shot's trails become the A of the A/B overlay
 
+  // Shots and playback (lab.cpp).
   void shoot();
   void replay();
   void undo();
+  void redo();
   void continue_from_rest();  // the next shot starts where the balls stopped
-  void step();                // one display frame of simulated time while paused
-  void seek(double t);        // pause at simulated time t (simulating up to it if needed: scripts, demos)
+  void step(int direction);   // one display frame of simulated time, forward (+1) or back (-1), paused
+  void seek(double t);        // pause at simulated time t (simulating up to it if needed)
+  void run_on();              // a shot stopped at the safety limit runs on for as long again
   void update(double real_dt);  // advances the clock while playing, on the settings' wall-time budget
+  bool shot_over() const { return shot && shot->finished() && view_time >= shot->sim().time(); }
+  bool animating() const;     // something changes on screen without input: the frame loop keeps drawing
 
-  // The balls as on screen: the shot at view_time, or the scene's start position.
-  const Frame& frame() const { return frame_; }
+  const Frame& frame() const { return frame_; }  // the balls as on screen
+  bool contact_on_screen() const;  // a ball touches another ball or a cushion in the frame shown
   Trails trails(double until) const;  // of the current shot, up to `until`
   std::optional<Prediction> prediction() const;  // the current scene's, when ready
   bool predicting() const { return predictor_.busy(); }
+  // The contacts of the current shot with their force histories, traced on a worker thread; the latest complete
+  // log (possibly older than the shot's events while a new one is being traced).
+  const ContactLog* contact_log();
 
-  void aim_at(const Vec3& point);  // turns the cue towards a point on the table (before the shot)
-
-  // Ball editing (only while no shot is shown); each refuses an overlap unless the scene allows it.
-  bool move_ball(int i, const Vec3& to);
+  // Aiming and editing the table (lab_edit.cpp); each refuses, with a note, while a shot is shown.
+  void aim_at(const Vec3& point);         // the cue towards a point on the table
+  void aim_at_ball(int i);                // full-ball aim at ball i's centre
+  void aim_for_pocket(int step);          // cycles through the pockets the aimed-at ball can be cut into
+  void nudge_aim(double degrees);
+  void nudge_speed(double mps);
+  void set_cue(const CueStrike& cue, const std::string& what);  // any other cue change, merged per `what`
+  bool begin_move(int i);                 // a drag of ball i starts (one undo entry for the whole drag)
+  bool move_ball(int i, const Vec3& to);  // refused on overlap unless the scene allows it
+  void end_gesture() { history.seal(); }
   void add_ball(const Vec3& at);
-  void remove_ball(int i);
-  void rack();  // a 15-ball triangle at the foot spot, keeping the cue ball
+  void remove_ball(int i);                // the cue ball is not removed (untick the cue strike first)
+  void pick_up_cue_ball();                // ball in hand
+  void place_cue_ball(const Vec3& at, bool drop);  // follows the pointer; `drop` puts it down
+  void setup_break();                     // rack, cue ball in hand behind the head string, a cue strike
+  void set_target(const Vec3& at) { target = Vec3{at.x, 0, at.z}; }
+  std::optional<double> target_miss() const;  // m from the cue ball's rest position (or predicted one) to the target
+  void keep_shot();
 
  private:
+  bool editable(const char* what);
   bool fits(int i, const Vec3& p) const;
   void show(double t);
   void start_shot(const Scene& start);
+  void pause_on_events(double from, double to);
+  void finish_playing();
 
   Predictor predictor_;
   long wanted_ = -1;
   Frame frame_;
+  double exact_time_ = -1;  // the paused frame's time, so that the exact state is not worked out every frame
+  size_t events_seen_ = 0;  // of the shot's events, those playback has passed (pause_on_events)
+  int shot_id_ = 0;         // counts shots started: which one the contact log describes
+  ContactLog log_;
+  int log_shot_ = -1;
+  std::future<ContactLog> log_job_;
+  int job_shot_ = -1;
 };
 
 }  // namespace shotlab

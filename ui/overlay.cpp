@@ -1,8 +1,12 @@
+// The 2D overlay over the 3D view (ImGui's background draw list): trails, predicted paths, the aim line with its
+// ghost ball and cut angle, kept shots and the A trails of the A/B comparison, the position target, ball labels, the
+// centre of mass, the ball-in-hand zone, and velocity, spin and contact-force vectors.
 #include <cmath>
 #include <cstdio>
 
-#include "engine/cue.hpp"
+#include "ui/aim.hpp"
 #include "ui/panels.hpp"
+#include "ui/widgets.hpp"
 
 namespace shotlab {
 
@@ -40,56 +44,45 @@ void arrow(ImDrawList* d, const Viewport& vp, const Vec3& from, const Vec3& to, 
   d->AddTriangleFilled(v2(*pb), v2(*pb - u * head + n * head * 0.45), v2(*pb - u * head - n * head * 0.45), color);
 }
 
-void paths(ImDrawList* d, const Viewport& vp, const Trails& trails, float alpha, float width, bool by_motion) {
+// Trails: by motion colour, or in one colour (kept shots, ghost, A trails), dashed when `dashed`.
+void paths(ImDrawList* d, const Viewport& vp, const Trails& trails, float alpha, float width, bool by_motion,
+           ImU32 colour = IM_COL32(220, 220, 220, 255), bool dashed = false) {
+  const ImU32 plain = (colour & ~IM_COL32_A_MASK) | (static_cast<ImU32>(alpha * 255) << IM_COL32_A_SHIFT);
   for (const auto& path : trails)
     for (size_t k = 1; k < path.size(); ++k) {
-      const ImU32 c = by_motion ? motion_color(path[k].motion, alpha) : IM_COL32(220, 220, 220, int(alpha * 255));
-      line(d, vp, path[k - 1].position, path[k].position, c, width);
+      if (dashed && k % 2) continue;
+      line(d, vp, path[k - 1].position, path[k].position, by_motion ? motion_color(path[k].motion, alpha) : plain, width);
     }
 }
 
-// Aim line from the cue ball to the first ball it would hit (the ghost ball: where the cue ball's centre is at
-// contact), the object ball's line of departure, the cut angle, and the cue stick behind the ball.
 void aim(ImDrawList* d, const Viewport& vp, const Lab& lab) {
+  const auto a = aim_line(lab.scene);
+  if (!a) return;
   const CueStrike& cue = *lab.scene.cue;
-  const int c = scene_ball(lab.scene, cue.ball);
-  if (c < 0) return;
-  const Vec3 p = lab.scene.balls[c].position;
-  const double r = lab.scene.balls[c].spec.radius;
+  const double r = lab.scene.balls[scene_ball(lab.scene, cue.ball)].spec.radius;
   const Vec3 dir = aim_direction(cue.aim);
-  double best = 4.0;  // m: the line's length when it hits no ball
-  int hit = -1;
-  for (int j = 0; j < static_cast<int>(lab.scene.balls.size()); ++j) {
-    if (j == c) continue;
-    // Where the centre line comes within r_c + r_j of ball j: |p + s dir - q| = R.
-    const Vec3 q = lab.scene.balls[j].position, w = p - q;
-    const double R = r + lab.scene.balls[j].spec.radius;
-    const double b = glm::dot(w, dir), disc = b * b - (glm::dot(w, w) - R * R);
-    if (disc < 0) continue;
-    const double s = -b - std::sqrt(disc);
-    if (s > 0 && s < best) best = s, hit = j;
-  }
-  if (lab.scene.table) {  // stop the line at the cushion noses
-    const double hx = lab.scene.table->length / 2 - r, hz = lab.scene.table->width / 2 - r;
-    if (dir.x != 0) best = std::min(best, ((dir.x > 0 ? hx : -hx) - p.x) / dir.x);
-    if (dir.z != 0) best = std::min(best, ((dir.z > 0 ? hz : -hz) - p.z) / dir.z);
-  }
-  const Vec3 ghost = p + dir * std::max(best, 0.0);
-  line(d, vp, p, ghost, IM_COL32(255, 255, 255, 200), 1.5f);
+  line(d, vp, a->from, a->ghost, IM_COL32(255, 255, 255, 200), 1.5f);
   // Cue stick: behind the ball along the aim, raised by the elevation.
   const Vec3 back = -dir * std::cos(cue.elevation) + Vec3{0, std::sin(cue.elevation), 0};
-  line(d, vp, p + back * (r * 1.6), p + back * (r * 1.6 + 1.0), IM_COL32(200, 160, 100, 230), 5.0f);
-  const auto g = vp.project(ghost);
+  line(d, vp, a->from + back * (r * 1.6), a->from + back * (r * 1.6 + 1.0), IM_COL32(200, 160, 100, 230), 5.0f);
+  const auto g = vp.project(a->ghost);
   if (!g) return;
-  d->AddCircle(v2(*g), static_cast<float>(vp.screen_radius(ghost, r)), IM_COL32(255, 255, 255, 220), 32, 1.5f);
-  if (hit < 0) return;
-  const Vec3 q = lab.scene.balls[hit].position;
-  const Vec3 out = glm::normalize(Vec3{q.x - ghost.x, 0, q.z - ghost.z});
-  line(d, vp, q, q + out * 0.4, IM_COL32(255, 230, 120, 220), 1.5f);
-  const double cut = std::acos(std::clamp(glm::dot(out, dir), -1.0, 1.0)) * 180 / M_PI;
+  d->AddCircle(v2(*g), static_cast<float>(vp.screen_radius(a->ghost, r)), IM_COL32(255, 255, 255, 220), 32, 1.5f);
+  if (a->hit < 0) return;
+  const Vec3 q = lab.scene.balls[a->hit].position;
+  line(d, vp, q, q + a->object_dir * 0.4, IM_COL32(255, 230, 120, 220), 1.5f);
   char text[32];
-  std::snprintf(text, sizeof text, "cut %.1f deg", cut);
-  d->AddText(ImVec2(static_cast<float>(g->x) + 14, static_cast<float>(g->y) - 20), IM_COL32(255, 255, 255, 255), text);
+  std::snprintf(text, sizeof text, "cut %.2f deg", a->cut_deg);
+  d->AddText(ImVec2(static_cast<float>(g->x) + 14, static_cast<float>(g->y) - em(20)), IM_COL32(255, 255, 255, 255), text);
+}
+
+// A contact worth drawing: not a ball simply resting on the bed (its force within 20 % of its weight), which would
+// put a dot under every ball.
+bool notable(const Model& model, const Contact& c) {
+  if (c.other_ball >= 0 || c.collider < 0) return true;
+  if (model.colliders[c.collider].material != kBallCloth) return true;
+  const double weight = model.balls[c.ball].mass * glm::length(model.options.gravity);
+  return std::abs(c.force.normal - weight) > 0.2 * weight;
 }
 
 // Velocity (white, 0.15 m per m/s), spin (yellow, 2 mm per rad/s, right-hand rule), contact forces (red, length
@@ -104,26 +97,99 @@ void vectors(ImDrawList* d, const Viewport& vp, const Lab& lab) {
     if (v.spin) arrow(d, vp, p, p + 0.002 * spin(f.state.x, i), IM_COL32(255, 230, 40, 255), 2.5f);
   }
   if (!v.forces) return;
-  for (const Contact& c : contacts(lab.shot ? lab.shot->sim().model() : lab.table_model, f.state)) {
+  const Model& model = lab.shot ? lab.shot->sim().model() : lab.table_model;
+  for (const Contact& c : contacts(model, f.state)) {
+    if (!notable(model, c)) continue;
     const double len = 0.03 * std::log1p(c.force.normal);
-    const Vec3 dir = unit_or_zero(c.force.force);
-    arrow(d, vp, c.point, c.point + dir * len, IM_COL32(255, 60, 60, 255), 2.5f);
-    if (const auto s = vp.project(c.point)) {
-      d->AddCircleFilled(v2(*s), 3.5f, IM_COL32(255, 60, 60, 255));
-      if (c.other_ball >= 0) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.0f N", c.force.normal);
-        d->AddText(ImVec2(static_cast<float>(s->x) + 6, static_cast<float>(s->y) + 4), IM_COL32(255, 120, 120, 255), text);
-      }
+    arrow(d, vp, c.point, c.point + unit_or_zero(c.force.force) * len, IM_COL32(255, 60, 60, 255), 2.5f);
+    const auto s = vp.project(c.point);
+    if (!s) continue;
+    d->AddCircleFilled(v2(*s), 3.5f, IM_COL32(255, 60, 60, 255));
+    char text[32];
+    std::snprintf(text, sizeof text, "%.0f N", c.force.normal);
+    d->AddText(ImVec2(static_cast<float>(s->x) + 6, static_cast<float>(s->y) + 4), IM_COL32(255, 120, 120, 255), text);
+  }
+}
+
+void labels_and_centre(ImDrawList* d, const Viewport& vp, const Lab& lab) {
+  const Frame& f = lab.frame();
+  const ViewFlags& v = lab.settings.view;
+  Vec3 sum{0.0};
+  double mass = 0;
+  for (int i = 0; i < f.state.ball_count() && i < static_cast<int>(lab.scene.balls.size()); ++i) {
+    if (!f.state.in_play[i]) continue;
+    const Vec3 p = position(f.state.x, i);
+    const BallSpec& b = lab.scene.balls[i].spec;
+    sum += b.mass * p, mass += b.mass;
+    if (!v.labels) continue;
+    if (const auto s = vp.project(p + Vec3{0, b.radius * 1.3, 0})) {
+      const ImVec2 size = ImGui::CalcTextSize(b.id.c_str());
+      const ImVec2 at(static_cast<float>(s->x) - size.x / 2, static_cast<float>(s->y) - size.y);
+      d->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + size.x + 3, at.y + size.y + 1), IM_COL32(0, 0, 0, 170), 3);
+      d->AddText(at, IM_COL32(255, 255, 255, 255), b.id.c_str());
     }
   }
+  if (!v.centre_of_mass || mass <= 0) return;
+  if (const auto s = vp.project(sum / mass)) {  // a cross in a circle, as in the textbooks
+    const float r = em(7);
+    d->AddCircle(v2(*s), r, IM_COL32(255, 255, 255, 255), 24, 2.0f);
+    d->AddLine(ImVec2(v2(*s).x - r, v2(*s).y), ImVec2(v2(*s).x + r, v2(*s).y), IM_COL32(255, 255, 255, 255), 2.0f);
+    d->AddLine(ImVec2(v2(*s).x, v2(*s).y - r), ImVec2(v2(*s).x, v2(*s).y + r), IM_COL32(255, 255, 255, 255), 2.0f);
+    d->AddText(ImVec2(v2(*s).x + r + 3, v2(*s).y - r), IM_COL32(255, 255, 255, 255), "centre of mass");
+  }
+}
+
+void target(ImDrawList* d, const Viewport& vp, const Lab& lab) {
+  if (!lab.target) return;
+  const Vec3 t = *lab.target + Vec3{0, 0.001, 0};
+  const ImU32 c = IM_COL32(255, 90, 200, 255);
+  Vec3 prev = t + Vec3{lab.target_radius, 0, 0};
+  for (int k = 1; k <= 32; ++k) {
+    const double a = 2 * M_PI * k / 32;
+    const Vec3 p = t + lab.target_radius * Vec3{std::cos(a), 0, std::sin(a)};
+    line(d, vp, prev, p, c, 2.0f);
+    prev = p;
+  }
+  line(d, vp, t - Vec3{0.02, 0, 0}, t + Vec3{0.02, 0, 0}, c, 2.0f);
+  line(d, vp, t - Vec3{0, 0, 0.02}, t + Vec3{0, 0, 0.02}, c, 2.0f);
+  if (const auto miss = lab.target_miss(); miss && vp.project(t)) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%s %.1f cm", lab.shot ? "missed by" : "predicted miss", *miss * 100);
+    d->AddText(ImVec2(v2(*vp.project(t)).x + em(12), v2(*vp.project(t)).y), c, text);
+  }
+}
+
+void hand_zone_outline(ImDrawList* d, const Viewport& vp, const Lab& lab) {
+  if (!lab.in_hand || !lab.scene.table || !lab.scene.cue) return;
+  const int c = scene_ball(lab.scene, lab.scene.cue->ball);
+  if (c < 0) return;
+  const Zone z = hand_zone(*lab.scene.table, lab.scene.balls[c].spec.radius, break_position(lab.scene));
+  const double y = 0.001;
+  const Vec3 a{z.lo_x, y, z.lo_z}, b{z.hi_x, y, z.lo_z}, e{z.hi_x, y, z.hi_z}, f{z.lo_x, y, z.hi_z};
+  const ImU32 col = IM_COL32(255, 255, 255, 150);
+  line(d, vp, a, b, col, 1.5f), line(d, vp, b, e, col, 1.5f), line(d, vp, e, f, col, 1.5f), line(d, vp, f, a, col, 1.5f);
 }
 
 }  // namespace
 
+namespace {
+void draw_all(const Lab& lab, const Viewport& vp, ImDrawList* d);
+}
+
 void draw_overlay(const Lab& lab, const Viewport& vp, ImDrawList* d) {
+  d->PushClipRect(ImVec2(static_cast<float>(vp.x0), 0), ImVec2(static_cast<float>(vp.x0 + vp.width), static_cast<float>(vp.height)));
+  draw_all(lab, vp, d);
+  d->PopClipRect();
+}
+
+namespace {
+
+void draw_all(const Lab& lab, const Viewport& vp, ImDrawList* d) {
   const ViewFlags& v = lab.settings.view;
   if (v.ghost) paths(d, vp, lab.ghost, 0.35f, 1.5f, false);
+  for (const KeptShot& k : lab.kept)
+    if (k.visible) paths(d, vp, k.trails, 0.8f, 2.0f, false, kept_colour(k.colour));
+  if (v.compare && !lab.compare.empty()) paths(d, vp, lab.compare, 0.8f, 2.0f, false, IM_COL32(255, 255, 255, 255), true);
   if (lab.shot) {
     if (v.trails) paths(d, vp, lab.trails(lab.view_time), 0.9f, 2.5f, true);
   } else {
@@ -131,17 +197,22 @@ void draw_overlay(const Lab& lab, const Viewport& vp, ImDrawList* d) {
       if (const auto p = lab.prediction()) paths(d, vp, p->paths, 0.7f, 2.0f, true);
     if (v.aim && lab.scene.cue) aim(d, vp, lab);
   }
-  for (const Rod& rod : lab.scene.model.rods)
-    if (rod.ball < lab.frame().state.ball_count())
-      line(d, vp, rod.anchor, position(lab.frame().state.x, rod.ball), IM_COL32(180, 180, 190, 255), 1.5f);
   const Frame& f = lab.frame();
-  if (lab.selected < f.state.ball_count()) {
+  for (const Rod& rod : lab.scene.model.rods)
+    if (rod.ball < f.state.ball_count())
+      line(d, vp, rod.anchor, position(f.state.x, rod.ball), IM_COL32(180, 180, 190, 255), 1.5f);
+  if (lab.selected >= 0 && lab.selected < f.state.ball_count() && lab.selected < static_cast<int>(lab.scene.balls.size())) {
     const Vec3 p = position(f.state.x, lab.selected);
     if (const auto s = vp.project(p))
       d->AddCircle(v2(*s), static_cast<float>(vp.screen_radius(p, lab.scene.balls[lab.selected].spec.radius)) + 4,
                    IM_COL32(120, 255, 120, 200), 32, 2.0f);
   }
+  target(d, vp, lab);
+  hand_zone_outline(d, vp, lab);
+  labels_and_centre(d, vp, lab);
   vectors(d, vp, lab);
 }
+
+}  // namespace
 
 }  // namespace shotlab

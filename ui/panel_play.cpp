@@ -1,236 +1,229 @@
-// The left panel (for players and coaches, and the teacher's presets): scenes and files, playback, aim, ball
-// editing; the help panel; the message banner.
+// The left panel (players and coaches, and the teacher's presets): scene, playback, aim, practice, balls and view;
+// the help panel; the message banner; the status line.
 #include <imgui.h>
-#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 
-#include "app/paths.hpp"
-#include "engine/io/result_json.hpp"
-#include "engine/io/scene_json.hpp"
+#include "engine/cue.hpp"
+#include "ui/aim.hpp"
 #include "ui/panels.hpp"
+#include "ui/ticks.hpp"
+#include "ui/widgets.hpp"
 
 namespace shotlab {
 
 namespace {
 
-struct PresetEntry {
-  std::string path, name, description;
-};
-
-// The presets directory, read once: a preset's name and its "what to look for" line.
-const std::vector<PresetEntry>& presets() {
-  static const std::vector<PresetEntry> list = [] {
-    std::vector<PresetEntry> out;
-    std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator(preset_path(""), ec)) {
-      if (e.path().extension() != ".json") continue;
-      PresetEntry p{e.path().string(), e.path().stem().string(), ""};
-      try {
-        const Scene s = load_scene(p.path);
-        p.name = s.name.empty() ? p.name : s.name;
-        p.description = s.description;
-      } catch (const std::exception& err) {
-        p.description = err.what();
-      }
-      out.push_back(p);
-    }
-    std::sort(out.begin(), out.end(), [](const PresetEntry& a, const PresetEntry& b) { return a.path < b.path; });
-    return out;
-  }();
-  return list;
+const char* end_text(const Shot& s) {
+  switch (s.end()) {
+    case ShotEnd::Rest: return "every ball at rest";
+    case ShotEnd::SafetyLimit: return "stopped at the safety limit, balls still moving";
+    case ShotEnd::EngineStop: return "the simulation stopped";
+    case ShotEnd::Running: break;
+  }
+  return "";
 }
 
-// A drawn ball face: click or drag to put the cue tip. Right is the shooter's right, up is follow, down is draw;
-// the dashed ring is the miscue limit.
-bool tip_widget(CueStrike& cue) {
-  const float size = 110, r = size / 2 - 6;
-  const ImVec2 origin = ImGui::GetCursorScreenPos();
-  const ImVec2 c{origin.x + size / 2, origin.y + size / 2};
-  ImGui::InvisibleButton("tip", ImVec2(size, size));
-  ImDrawList* d = ImGui::GetWindowDrawList();
-  d->AddCircleFilled(c, r, IM_COL32(240, 238, 225, 255), 48);
-  for (int k = 0; k < 24; k += 2) {
-    const float a0 = k * 2 * float(M_PI) / 24, a1 = (k + 1) * 2 * float(M_PI) / 24;
-    const float m = r * static_cast<float>(cue.miscue_limit);
-    d->AddLine({c.x + m * std::cos(a0), c.y + m * std::sin(a0)}, {c.x + m * std::cos(a1), c.y + m * std::sin(a1)},
-               IM_COL32(200, 60, 60, 255), 1.5f);
+void transport_buttons(Lab& lab) {
+  const char* main = lab.shot ? (lab.playing ? "Pause" : "Play") : "Shoot";
+  if (ImGui::Button(main)) {
+    if (!lab.shot) lab.shoot();
+    else if (lab.shot_over() && !lab.playing) lab.replay();
+    else lab.playing = !lab.playing;
   }
-  d->AddLine({c.x - r, c.y}, {c.x + r, c.y}, IM_COL32(150, 150, 150, 255));
-  d->AddLine({c.x, c.y - r}, {c.x, c.y + r}, IM_COL32(150, 150, 150, 255));
-  const ImVec2 tip{c.x + r * float(cue.side), c.y - r * float(cue.height)};
-  d->AddCircleFilled(tip, 6, IM_COL32(40, 90, 220, 255));
-  if (!ImGui::IsItemActive()) return false;
-  const ImVec2 m = ImGui::GetIO().MousePos;
-  double side = (m.x - c.x) / r, height = -(m.y - c.y) / r;
-  const double len = std::hypot(side, height);
-  if (len > 0.9) side *= 0.9 / len, height *= 0.9 / len;  // keep the tip on the ball
-  cue.side = side;
-  cue.height = height;
-  return true;
-}
-
-void scenes_section(Lab& lab) {
-  for (const PresetEntry& p : presets()) {
-    if (ImGui::Selectable(p.name.c_str(), lab.scene_path == p.path)) lab.load(p.path);
-    if (ImGui::IsItemHovered() && !p.description.empty()) ImGui::SetTooltip("%s", p.description.c_str());
-  }
-  static std::string path;  // the text being typed, not program state
-  ImGui::InputText("##path", &path);
-  ImGui::SameLine();
-  if (ImGui::Button("Load")) lab.load(path);
-  ImGui::SameLine();
-  if (ImGui::Button("Save")) {
-    const std::string to = path.empty() ? lab.scene_path : path;
-    try {
-      save_scene(to, lab.scene);
-      lab.note = "saved " + to;
-    } catch (const std::exception& e) {
-      lab.error = e.what();
-    }
-  }
-  if (ImGui::Button("Screenshot (F12)")) lab.screenshot_request = "shotlab-screenshot.png";
-  ImGui::SameLine();
-  if (ImGui::Button("Export CSV") && lab.shot) {
-    try {
-      export_trajectory(lab, "shotlab-trajectory.csv");
-      lab.note = "wrote shotlab-trajectory.csv";
-    } catch (const std::exception& e) {
-      lab.error = e.what();
-    }
-  }
+  mark(lab.shot ? "Play" : "Shoot");
+  same_line_if_fits("<");
+  if (ImGui::ArrowButton("back", ImGuiDir_Left)) lab.step(-1);
+  mark("Step back");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("step back one frame of simulated time (,)");
+  same_line_if_fits(">");
+  if (ImGui::ArrowButton("forward", ImGuiDir_Right)) lab.step(+1);
+  mark("Step");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("step forward one frame of simulated time (.)");
+  same_line_if_fits("Replay");
+  if (ImGui::Button("Replay")) lab.replay();
+  same_line_if_fits("Undo");
+  ImGui::BeginDisabled(!lab.history.can_undo() && !lab.in_hand);
+  if (ImGui::Button("Undo")) lab.undo();
+  mark("Undo");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("undo %s (U, Ctrl+Z)", lab.history.undo_label().c_str());
+  ImGui::EndDisabled();
+  same_line_if_fits("Redo");
+  ImGui::BeginDisabled(!lab.history.can_redo());
+  if (ImGui::Button("Redo")) lab.redo();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("redo %s (Ctrl+Y)", lab.history.redo_label().c_str());
+  ImGui::EndDisabled();
+  same_line_if_fits("Next");
+  ImGui::BeginDisabled(!lab.shot || lab.shot->end() != ShotEnd::Rest);
+  if (ImGui::Button("Next")) lab.continue_from_rest();
+  mark("Next");
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("next shot from where the balls stopped (N); once every ball rests");
+  ImGui::EndDisabled();
 }
 
 void playback_section(Lab& lab) {
-  if (ImGui::Button(lab.shot ? (lab.playing ? "Pause" : "Play") : "Shoot")) {
-    if (lab.shot) lab.playing = !lab.playing;
-    else lab.shoot();
-  }
-  ImGui::SameLine();
-  if (ImGui::Button("Step")) lab.step();
-  ImGui::SameLine();
-  if (ImGui::Button("Replay")) lab.replay();
-  ImGui::SameLine();
-  if (ImGui::Button("Undo")) lab.undo();
-  ImGui::SameLine();
-  if (ImGui::Button("Next")) lab.continue_from_rest();
-  slider("speed##clock", lab.settings.slowmo, 1e-3, 4.0, "%.3gx real time", true);
-  if (lab.shot) {
+  transport_buttons(lab);
+  const Fields f({"clock", "time", "safety limit"});
+  f.label("clock");
+  slider("##clock", lab.settings.slowmo, 1e-3, 4.0, "%.3gx real time", true);
+  mark("clock slider");
+  if (!lab.shot) {
+    ImGui::TextDisabled("aiming: S or Space shoots");
+  } else {
     double t = lab.view_time;
-    if (slider("time##scrub", t, 0.0, std::max(lab.shot->sim().time(), 1e-9), "%.4f s")) {
+    f.label("time");
+    if (slider("##time", t, 0.0, std::max(lab.shot->sim().time(), 1e-9), lab.contact_on_screen() ? "%.6f s" : "%.4f s")) {
       lab.playing = false;
       lab.view_time = t;
     }
-    ImGui::Text("t = %.4f s%s", lab.view_time, lab.shot->finished() ? "  (shot over)" : "");
+    mark("time slider");
+    const bool fine = lab.contact_on_screen();
+    ImGui::Text("t = %s%s", format_time(lab.view_time, fine).c_str(), fine ? "  (a contact: to the microsecond)" : "");
+    if (lab.shot->finished())
+      ImGui::TextColored(lab.shot->end() == ShotEnd::Rest ? ImVec4(0.6f, 0.9f, 0.6f, 1) : ImVec4(1, 0.7f, 0.3f, 1),
+                         "%s after %.2f s", end_text(*lab.shot), lab.shot->sim().time());
+    if (lab.shot->end() == ShotEnd::SafetyLimit && lab.shot_over()) {
+      if (ImGui::Button("Run on")) lab.run_on();
+      ImGui::SameLine();
+      ImGui::TextDisabled("for another %.0f s", lab.settings.safety_limit);
+    }
     if (lab.playing && lab.achieved_speed < 0.95)
       ImGui::TextColored(ImVec4(1, 0.7f, 0.2f, 1), "physics behind: clock slowed to %.0f%% of the set speed",
                          100 * lab.achieved_speed);
-  } else {
-    ImGui::TextDisabled("aiming: S or Space shoots");
   }
+  f.label("safety limit");
+  slider("##limit", lab.settings.safety_limit, 5.0, 600.0, "%.0f s simulated", true);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("a shot runs until every ball rests, or this long (the next shot)");
+}
+
+void tool_buttons(Lab& lab) {
+  const struct {
+    Tool tool;
+    const char* name;
+    const char* tip;
+  } tools[] = {{Tool::Aim, "Aim", "click the cloth to aim there, click a ball to aim at its centre; shift+drag aims finely"},
+               {Tool::Move, "Move balls", "drag a ball to move it; shift+click the cloth adds one (also Ctrl+drag in Aim)"},
+               {Tool::Target, "Target", "click where the cue ball should stop: the miss shows after the shot"}};
+  for (const auto& t : tools) {
+    if (ImGui::RadioButton(t.name, lab.tool == t.tool)) lab.tool = t.tool;
+    mark(std::string("tool ") + t.name);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.tip);
+    ImGui::SameLine();
+  }
+  ImGui::NewLine();
+}
+
+void aim_readouts(const Lab& lab, const CueStrike& cue) {
+  const int c = scene_ball(lab.scene, cue.ball);
+  if (c < 0) return;
+  const StrikeResult r = strike(cue, lab.scene.balls[c].spec.mass, lab.scene.balls[c].spec.radius);
+  ImGui::Text("cue ball leaves at %.2f m/s", glm::length(r.velocity));
+  if (const auto line = aim_line(lab.scene); line && line->hit >= 0)
+    ImGui::Text("first ball %s, cut %.1f deg", lab.scene.balls[line->hit].spec.id.c_str(), line->cut_deg);
+  if (const auto miss = lab.target_miss())
+    ImGui::Text("%s miss of the target: %.0f mm", lab.shot ? "cue ball's" : "predicted", *miss * 1e3);
 }
 
 void aim_section(Lab& lab) {
   if (lab.scene.balls.empty()) return;
   bool has_cue = lab.scene.cue.has_value();
-  if (ImGui::Checkbox("cue strike", &has_cue)) {
+  if (ImGui::Checkbox("cue strike", &has_cue) && !lab.shot) {
+    lab.history.record(has_cue ? "add cue strike" : "remove cue strike", lab.scene);
     if (has_cue) lab.scene.cue = CueStrike{lab.scene.balls[lab.selected].spec.id};
     else lab.scene.cue.reset();
     lab.scene_changed();
   }
   if (!lab.scene.cue) return;
-  CueStrike& cue = *lab.scene.cue;
-  bool changed = false;
-  ImGui::Text("cue ball: %s", cue.ball.c_str());
-  changed |= slider("speed m/s", cue.speed, 0.05, 15.0, "%.2f");
-  double aim = cue.aim * 180 / M_PI, elevation = cue.elevation * 180 / M_PI;
-  if (ImGui::DragScalar("aim deg", ImGuiDataType_Double, &aim, 0.01f, nullptr, nullptr, "%.2f")) {
-    cue.aim = aim * M_PI / 180;
-    changed = true;
-  }
-  if (slider("elevation deg", elevation, 0.0, 85.0, "%.1f")) {
-    cue.elevation = elevation * M_PI / 180;
-    changed = true;
-  }
-  changed |= tip_widget(cue);
+  CueStrike cue = *lab.scene.cue;
   ImGui::SameLine();
-  ImGui::Text("side %+.2f R\n%s %.2f R%s", cue.side, cue.height >= 0 ? "follow" : "draw", std::abs(cue.height),
-              std::hypot(cue.side, cue.height) > cue.miscue_limit ? "\nMISCUE risk" : "");
-  if (changed) lab.scene_changed();
+  ImGui::TextDisabled("on %s", cue.ball.c_str());
+  tool_buttons(lab);
+  if (ImGui::Button(lab.in_hand ? "Put down (click)" : "Ball in hand (B)")) lab.pick_up_cue_ball();
+  mark("Ball in hand");
+  ImGui::SameLine();
+  if (ImGui::Button("< pocket")) lab.aim_for_pocket(-1);
+  ImGui::SameLine();
+  if (ImGui::Button("pocket >")) lab.aim_for_pocket(+1);
+  mark("pocket aim");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("aim the ball you aim at into the next pocket (P, Shift+P)");
+  const Fields f({"cue speed", "aim", "elevation"});
+  f.label("cue speed");
+  if (slider("##speed", cue.speed, 0.05, 15.0, "%.2f m/s")) lab.set_cue(cue, "speed");
+  mark("speed slider");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Up/Down 0.25 m/s, Shift 1 m/s, Ctrl 0.02 m/s");
+  double aim = cue.aim * 180 / M_PI, elevation = cue.elevation * 180 / M_PI;
+  f.label("aim");
+  if (ImGui::DragScalar("##aim", ImGuiDataType_Double, &aim, 0.01f, nullptr, nullptr, "%.2f deg")) {
+    cue.aim = aim * M_PI / 180;
+    lab.set_cue(cue, "aim");
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("drag: 0.01 deg a pixel; Left/Right 0.1 deg, Shift 1, Ctrl 0.01");
+  f.label("elevation");
+  if (slider("##elevation", elevation, 0.0, 85.0, "%.1f deg")) {
+    cue.elevation = elevation * M_PI / 180;
+    lab.set_cue(cue, "elevation");
+  }
+  if (tip_widget(cue, em(104))) lab.set_cue(cue, "tip");
+  if (ImGui::IsItemDeactivated()) lab.end_gesture();
+  ImGui::SameLine();
+  ImGui::BeginGroup();
+  ImGui::Text("side %+.2f R", cue.side);
+  ImGui::Text("%s %.2f R", cue.height >= 0 ? "follow" : "draw", std::abs(cue.height));
+  if (std::hypot(cue.side, cue.height) > cue.miscue_limit) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "MISCUE risk");
+  if (ImGui::SmallButton("centre")) cue.side = cue.height = 0, lab.set_cue(cue, "tip");
+  ImGui::EndGroup();
+  aim_readouts(lab, cue);
+}
+
+void balls_section(Lab& lab) {
+  ImGui::TextWrapped("With the Move tool, drag a ball to move it and shift+click the cloth to add one; Del removes "
+                     "the selected ball. Every edit can be undone.");
+  if (ImGui::Button("Remove selected")) lab.remove_ball(lab.selected);
+  if (ImGui::Checkbox("allow overlaps", &lab.scene.allow_overlap)) lab.scene_changed();
 }
 
 }  // namespace
 
-void export_trajectory(const Lab& lab, const std::string& path) {
-  // Re-simulates the shot from its start, a row set every 1/240 s up to the time reached (the result does not
-  // depend on how time is sliced, so it is the shot that was watched).
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path);
-  write_trajectory_header(out);
-  Prepared p = prepare(lab.shot->start());
-  Simulation sim(std::move(p.model), std::move(p.state));
-  write_trajectory_rows(out, sim);
-  while (sim.time() < lab.shot->sim().time() - 1e-12 && sim.status() == Status::Ok) {
-    sim.advance(std::min(1.0 / 240, lab.shot->sim().time() - sim.time()));
-    write_trajectory_rows(out, sim);
+bool left_panel(Lab& lab, Camera& camera, const Rect& where) {
+  static bool shown = true;
+  place_side_panel(where, lab.settings.panels.left_open, shown);
+  if (ImGui::Begin("Shot lab", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize)) {
+    ImGui::TextWrapped("%s", lab.scene.name.c_str());
+    if (!lab.scene.description.empty() && ImGui::CollapsingHeader("What to look for", ImGuiTreeNodeFlags_DefaultOpen))
+      ImGui::TextWrapped("%s", lab.scene.description.c_str());
+    if (ImGui::CollapsingHeader("Scene and files", ImGuiTreeNodeFlags_DefaultOpen)) scene_section(lab);
+    if (ImGui::CollapsingHeader("Playback", ImGuiTreeNodeFlags_DefaultOpen)) playback_section(lab);
+    if (ImGui::CollapsingHeader("Aim", ImGuiTreeNodeFlags_DefaultOpen)) aim_section(lab);
+    if (ImGui::CollapsingHeader("Practice")) practice_section(lab);
+    if (ImGui::CollapsingHeader("Balls")) balls_section(lab);
+    if (ImGui::CollapsingHeader("View")) view_section(lab, camera);
   }
-}
-
-float play_panel(Lab& lab, Camera& camera) {
-  ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(320, ImGui::GetIO().DisplaySize.y), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Shot lab");
-  ImGui::TextWrapped("%s", lab.scene.name.c_str());
-  if (!lab.scene.description.empty()) {
-    ImGui::TextColored(ImVec4(0.7f, 0.9f, 1, 1), "What to look for:");
-    ImGui::TextWrapped("%s", lab.scene.description.c_str());
-  }
-  if (ImGui::CollapsingHeader("Scenes and files")) scenes_section(lab);
-  if (ImGui::CollapsingHeader("Playback", ImGuiTreeNodeFlags_DefaultOpen)) playback_section(lab);
-  if (ImGui::CollapsingHeader("Aim", ImGuiTreeNodeFlags_DefaultOpen)) aim_section(lab);
-  if (ImGui::CollapsingHeader("View")) {
-    ViewFlags& v = lab.settings.view;
-    ImGui::Checkbox("trails", &v.trails), ImGui::SameLine(), ImGui::Checkbox("ghost", &v.ghost), ImGui::SameLine(),
-        ImGui::Checkbox("predicted", &v.predicted);
-    ImGui::Checkbox("aim line", &v.aim), ImGui::SameLine(), ImGui::Checkbox("velocity", &v.velocity), ImGui::SameLine(),
-        ImGui::Checkbox("spin", &v.spin);
-    ImGui::Checkbox("contact forces", &v.forces);
-    ImGui::SameLine(), ImGui::Checkbox("inspector", &v.inspector);
-    if (ImGui::Button("Top view (T)")) camera.top_view();
-    ImGui::SameLine();
-    if (ImGui::Button("Reset view")) camera.reset();
-    ImGui::SameLine();
-    if (ImGui::Button("Help (H)")) v.help = true;
-  }
-  if (ImGui::CollapsingHeader("Balls")) {
-    ImGui::TextWrapped("Drag a ball to move it, shift+click the cloth to add one, Del removes the selected ball.");
-    if (ImGui::Button("Rack 15 balls")) lab.rack();
-    ImGui::SameLine();
-    if (ImGui::Button("Remove selected")) lab.remove_ball(lab.selected);
-    ImGui::Checkbox("allow overlaps", &lab.scene.allow_overlap);
-  }
-  const float right = ImGui::IsWindowCollapsed() ? 0.0f : ImGui::GetWindowPos().x + ImGui::GetWindowWidth();
+  shown = end_side_panel("panel Shot lab");
   ImGui::End();
-  return right;
+  return shown;
 }
 
 void help_panel(bool* open) {
   if (!*open) return;
-  ImGui::SetNextWindowPos(ImVec2(400, 120), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Help", open, ImGuiWindowFlags_AlwaysAutoResize);
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y / 2), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::Begin("Help", open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
   static const char* rows[][2] = {
-      {"Left click cloth / drag", "aim the cue there"}, {"Left drag a ball", "move it (before the shot)"},
-      {"Shift + left click", "add a ball"}, {"Del", "remove the selected ball"},
+      {"Left click cloth / drag", "aim the cue there (Aim tool)"}, {"Left click a ball", "aim at its centre"},
+      {"Shift + left drag", "fine aim (0.01 deg a pixel)"}, {"Ctrl + left drag a ball", "move it"},
+      {"Move tool: drag / shift+click", "move a ball / add one"}, {"B", "ball in hand (click puts it down, Esc back)"},
+      {"P / Shift+P", "aim the next / previous pocket"}, {"Del", "remove the selected ball"},
       {"Right drag / shift+right, middle", "orbit / pan the camera"}, {"Wheel", "zoom"},
-      {"T / Home", "top view / reset view"}, {"Left, Right (shift, ctrl)", "fine aim 0.1 deg (1, 0.01)"},
-      {"Up, Down", "cue speed +-0.1 m/s"}, {"S or Enter", "shoot"}, {"Space", "play / pause (shoot when aiming)"},
-      {".", "single step (one frame of simulated time)"}, {"[ ]", "slower / faster clock (1/1000 to 4x)"},
-      {"R", "replay the shot"}, {"U or Ctrl+Z", "undo: back to the position and aim before the shot"},
-      {"N", "next shot from where the balls stopped"}, {"V / F", "velocity and spin vectors / contact forces"},
-      {"F12", "screenshot (shotlab-screenshot.png)"}, {"H or F1", "this help"}};
+      {"T / Home", "top view / fit the table"}, {"Left, Right (Shift, Ctrl)", "aim 0.1 deg (1, 0.01)"},
+      {"Up, Down (Shift, Ctrl)", "cue speed 0.25 m/s (1, 0.02)"}, {"S or Enter", "shoot"},
+      {"Space", "play / pause (shoot when aiming)"}, {", and .", "step back / forward one frame"},
+      {"[ ]", "slower / faster clock (1/1000 to 4x)"}, {"R", "replay the shot"},
+      {"U or Ctrl+Z, Ctrl+Y", "undo (edits and shots), redo"}, {"N", "next shot from where the balls stopped"},
+      {"K", "keep this shot's trails to compare"}, {"V / F / L", "vectors / contact forces / ball labels"},
+      {"F2 / F3", "show or hide the left / right panel"}, {"F5", "presentation mode (large fonts)"},
+      {"F12", "screenshot"}, {"H or F1", "this help"}};
   if (ImGui::BeginTable("keys", 2)) {
     for (const auto& r : rows) {
       ImGui::TableNextColumn();
@@ -244,28 +237,41 @@ void help_panel(bool* open) {
   ImGui::End();
 }
 
-void message_banner(Lab& lab) {
-  if (lab.error.empty() && lab.note.empty()) return;
-  const ImVec2 size = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(size.x / 2, 8), ImGuiCond_Always, ImVec2(0.5f, 0));
-  ImGui::SetNextWindowSizeConstraints(ImVec2(200, 0), ImVec2(size.x * 0.55f, 300));
+void message_banner(Lab& lab, const Rect& view) {
+  if (lab.message_kind == MessageKind::None || lab.message.empty()) return;
+  ImGui::SetNextWindowPos(ImVec2(view.x + view.w / 2, view.y + em(8)), ImGuiCond_Always, ImVec2(0.5f, 0));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(em(200), 0), ImVec2(std::max(view.w * 0.9f, em(200)), em(300)));
   ImGui::Begin("##message", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                          ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
-  if (!lab.error.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.4f, 1));
-    ImGui::TextWrapped("%s", lab.error.c_str());
-    ImGui::PopStyleColor();
-    if (ImGui::Button("Dismiss")) lab.error.clear();
-    if (!lab.history.empty()) {
-      ImGui::SameLine();
-      if (ImGui::Button("Undo")) lab.undo();
-    }
-  } else {
-    ImGui::TextUnformatted(lab.note.c_str());
+  mark("banner");
+  const bool problem = lab.message_kind == MessageKind::LoadError || lab.message_kind == MessageKind::EngineStop;
+  ImGui::PushStyleColor(ImGuiCol_Text, problem ? ImVec4(1, 0.45f, 0.4f, 1)
+                                               : lab.message_kind == MessageKind::Refused ? ImVec4(1, 0.8f, 0.4f, 1)
+                                                                                          : ImVec4(1, 1, 1, 1));
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + std::max(view.w * 0.85f, em(200)));
+  ImGui::TextUnformatted(lab.message.c_str());
+  ImGui::PopTextWrapPos();
+  ImGui::PopStyleColor();
+  if (lab.message_kind == MessageKind::LoadError) ImGui::TextDisabled("The scene you had is still loaded.");
+  if (ImGui::SmallButton("Dismiss")) lab.say(MessageKind::None, "");
+  mark("Dismiss");
+  if (lab.message_kind == MessageKind::EngineStop) {
     ImGui::SameLine();
-    if (ImGui::SmallButton("x")) lab.note.clear();
+    if (ImGui::SmallButton("Undo the shot")) lab.undo();
   }
   ImGui::End();
+}
+
+void status_line(const Lab& lab, const Rect& view, double frame_seconds) {
+  char text[160];
+  const double physics = lab.shot && lab.playing ? lab.shot->last_wall() * 1e3 : 0.0;
+  std::snprintf(text, sizeof text, "frame %.1f ms (%.0f fps)   physics %.2f ms/frame", frame_seconds * 1e3,
+                frame_seconds > 0 ? 1 / frame_seconds : 0.0, physics);
+  ImDrawList* d = ImGui::GetBackgroundDrawList();
+  const ImVec2 size = ImGui::CalcTextSize(text);
+  const ImVec2 at{view.x + view.w - size.x - em(8), view.bottom() - size.y - em(6)};
+  d->AddRectFilled({at.x - 4, at.y - 2}, {at.x + size.x + 4, at.y + size.y + 2}, IM_COL32(0, 0, 0, 140));
+  d->AddText(at, IM_COL32(220, 220, 220, 255), text);
 }
 
 }  // namespace shotlab

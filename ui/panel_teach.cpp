@@ -1,42 +1,172 @@
-// The teaching panel: what each ball does (speed, spin, motion state), the system's energy and momentum, and time
-// plots of the selected ball, the total energy and the contact force of the last collision.
+// The inspector (right panel) and its Teaching tab: what each ball does at the time on screen (a table that exports
+// as CSV), energy and momentum as bar charts, the centre of mass, the shot's events (click one to go there), and
+// the plots (panel_plots.cpp).
+#include <imgui.h>
+
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
+#include "ui/files.hpp"
 #include "ui/panels.hpp"
+#include "ui/ticks.hpp"
+#include "ui/widgets.hpp"
 
 namespace shotlab {
 
 namespace {
 
-void plot(const char* label, const std::vector<float>& values, const char* overlay) {
-  if (values.empty()) return;
-  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-  ImGui::PlotLines(label, values.data(), static_cast<int>(values.size()), 0, overlay, *lo, *hi + 1e-6f * (1 + *hi),
-                   ImVec2(0, 70));
+const Model& shown_model(const Lab& lab) { return lab.shot ? lab.shot->sim().model() : lab.table_model; }
+
+std::string table_csv(const Lab& lab) {
+  const Frame& f = lab.frame();
+  const Model& m = shown_model(lab);
+  std::ostringstream out;
+  out.precision(9);
+  out << "time_s,ball,x_m,y_m,z_m,vx_m_s,vy_m_s,vz_m_s,wx_rad_s,wy_rad_s,wz_rad_s,kinetic_J,state\n";
+  for (int i = 0; i < f.state.ball_count(); ++i) {
+    const Vec3 p = position(f.state.x, i), v = velocity(f.state.x, i), w = spin(f.state.x, i);
+    const BallMotion b = ball_motion(m, f.state, i);
+    out << f.time << ",\"" << lab.scene.balls[i].spec.id << "\"," << p.x << ',' << p.y << ',' << p.z << ',' << v.x << ','
+        << v.y << ',' << v.z << ',' << w.x << ',' << w.y << ',' << w.z << ',' << b.translation + b.rotation << ','
+        << (f.state.in_play[i] ? motion_name(f.motion[i]) : "pocketed") << '\n';
+  }
+  return out.str();
 }
 
-void ball_table(Lab& lab, const Frame& f) {
-  if (!ImGui::BeginTable("balls", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV,
-                         ImVec2(0, 150)))
+void ball_table(Lab& lab) {
+  const Frame& f = lab.frame();
+  const Model& m = shown_model(lab);
+  const float rows = std::min(f.state.ball_count(), 8) + 1.5f;
+  if (!ImGui::BeginTable("balls", 6, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX |
+                                         ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit,
+                         ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * rows)))
     return;
   ImGui::TableSetupScrollFreeze(0, 1);
-  for (const char* h : {"ball", "speed m/s", "spin rad/s", "state"}) ImGui::TableSetupColumn(h);
+  for (const char* h : {"ball", "x, z (m)", "v (m/s)", "w (rad/s)", "KE (J)", "state"}) ImGui::TableSetupColumn(h);
   ImGui::TableHeadersRow();
   for (int i = 0; i < f.state.ball_count(); ++i) {
+    const Vec3 p = position(f.state.x, i);
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     if (ImGui::Selectable(lab.scene.balls[i].spec.id.c_str(), lab.selected == i, ImGuiSelectableFlags_SpanAllColumns))
       lab.selected = i;
     ImGui::TableNextColumn();
+    ImGui::Text("%.3f, %.3f", p.x, p.z);
+    ImGui::TableNextColumn();
     ImGui::Text("%.3f", glm::length(velocity(f.state.x, i)));
     ImGui::TableNextColumn();
     ImGui::Text("%.1f", glm::length(spin(f.state.x, i)));
     ImGui::TableNextColumn();
-    const Motion m = i < static_cast<int>(f.motion.size()) ? f.motion[i] : Motion::Stationary;
-    ImGui::PushStyleColor(ImGuiCol_Text, motion_color(m));
-    ImGui::TextUnformatted(f.state.in_play[i] ? motion_name(m) : "pocketed");
+    const BallMotion b = ball_motion(m, f.state, i);
+    ImGui::Text("%.4f", b.translation + b.rotation);
+    ImGui::TableNextColumn();
+    const Motion mo = i < static_cast<int>(f.motion.size()) ? f.motion[i] : Motion::Stationary;
+    ImGui::PushStyleColor(ImGuiCol_Text, motion_color(mo));
+    ImGui::TextUnformatted(f.state.in_play[i] ? motion_name(mo) : "pocketed");
     ImGui::PopStyleColor();
+  }
+  ImGui::EndTable();
+  if (ImGui::SmallButton("Export table (CSV)")) try {
+      const std::string path = export_path(lab, "table", "csv");
+      write_file_atomic(path, table_csv(lab));
+      lab.say(MessageKind::Note, "wrote " + path);
+    } catch (const std::exception& e) {
+      lab.say(MessageKind::Refused, e.what());
+    }
+}
+
+// Energy as bars that always add up to what the shot started with: what moves, what is stored in contacts, what
+// gravity holds (relative to the start) and what friction and damping have turned into heat and sound.
+void energy_bars(const Lab& lab) {
+  const Frame& f = lab.frame();
+  const Model& m = shown_model(lab);
+  const Energy start = lab.shot ? lab.shot->frames().front().energy : f.energy;
+  double translation = 0, rotation = 0;
+  for (int i = 0; i < f.state.ball_count(); ++i)
+    if (f.state.in_play[i]) {
+      const BallMotion b = ball_motion(m, f.state, i);
+      translation += b.translation, rotation += b.rotation;
+    }
+  const double potential = f.energy.potential - start.potential;
+  const double lost = start.total() - f.energy.total();
+  double scale = start.kinetic + start.elastic;  // the largest motion energy of the shot spans the bars
+  if (lab.shot)
+    for (const Frame& fr : lab.shot->frames()) scale = std::max(scale, fr.energy.kinetic + fr.energy.elastic);
+  scale = std::max(scale, 1e-6);
+  ImGui::TextWrapped("Energy (J): the bars add up to the energy at the start");
+  bar_chart("energy", {{"moving", translation, IM_COL32(80, 170, 255, 255)},
+                       {"spinning", rotation, IM_COL32(255, 220, 80, 255)},
+                       {"in contacts", f.energy.elastic, IM_COL32(120, 230, 120, 255)},
+                       {"height", potential, IM_COL32(200, 140, 255, 255)},
+                       {"heat, sound", lost, IM_COL32(255, 110, 90, 255)}},
+            scale, "J");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("height: gravity's potential energy since the start (a ball sinks into the cloth, hops, falls "
+                      "into a pocket);\nheat, sound: what friction and contact damping have taken out of the motion");
+}
+
+void momentum_bars(const Lab& lab) {
+  const Frame& f = lab.frame();
+  const Model& m = shown_model(lab);
+  std::vector<Bar> bars;
+  Vec3 total{0.0};
+  double scale = 1e-9;
+  for (int i = 0; i < f.state.ball_count(); ++i) {
+    if (!f.state.in_play[i]) continue;
+    const Vec3 p = ball_motion(m, f.state, i).momentum;
+    total += p;
+    scale = std::max(scale, glm::length(p));
+    if (bars.size() < 8 && (glm::length(p) > 1e-6 || i == lab.selected))
+      bars.push_back({lab.scene.balls[i].spec.id, glm::length(p), IM_COL32(80, 170, 255, 255)});
+  }
+  bars.push_back({"total", glm::length(total), IM_COL32(255, 255, 255, 255)});
+  scale = std::max(scale, glm::length(total));
+  ImGui::Text("Momentum (kg m/s), total (%.3f, %.3f) along x, z", total.x, total.z);
+  bar_chart("momentum", bars, scale, "kg m/s");
+}
+
+void centre_of_mass(const Lab& lab) {
+  const Frame& f = lab.frame();
+  const Model& m = shown_model(lab);
+  double mass = 0;
+  Vec3 p{0.0}, v{0.0};
+  for (int i = 0; i < f.state.ball_count(); ++i)
+    if (f.state.in_play[i]) {
+      mass += m.balls[i].mass;
+      p += m.balls[i].mass * position(f.state.x, i);
+      v += ball_motion(m, f.state, i).momentum;
+    }
+  if (mass <= 0) return;
+  ImGui::Text("centre of mass (%.3f, %.3f) m, moving %.3f m/s", p.x / mass, p.z / mass, glm::length(v) / mass);
+  ImGui::SameLine();
+  ImGui::Checkbox("show", &lab.settings.view.centre_of_mass);
+}
+
+void events_list(Lab& lab) {
+  static bool bed = false;
+  ImGui::Checkbox("with the bed's contacts", &bed);
+  const auto& events = lab.shot->sim().events();
+  if (!ImGui::BeginTable("events", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp,
+                         ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * 8)))
+    return;
+  for (size_t k = 0; k < events.size(); ++k) {
+    const Event& e = events[k];
+    if (!bed && e.bodies.size() == 2 && e.bodies[1] == "bed") continue;
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::PushID(static_cast<int>(k));
+    if (ImGui::Selectable(format_time(e.time, true).c_str(), std::abs(e.time - lab.view_time) < 1e-9,
+                          ImGuiSelectableFlags_SpanAllColumns))
+      lab.seek(e.time);
+    mark("event " + std::to_string(k));
+    ImGui::PopID();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(e.kind.c_str());
+    ImGui::TableNextColumn();
+    std::string who;
+    for (const std::string& b : e.bodies) who += (who.empty() ? "" : " - ") + b;
+    ImGui::TextUnformatted(who.c_str());
   }
   ImGui::EndTable();
 }
@@ -44,79 +174,50 @@ void ball_table(Lab& lab, const Frame& f) {
 }  // namespace
 
 void teach_panel(Lab& lab) {
-  const Frame& f = lab.frame();
-  ball_table(lab, f);
-  const Model& model = lab.shot ? lab.shot->sim().model() : lab.table_model;
-  const Energy e = energy(model, f.state);
-  const Vec3 p = momentum(model, f.state);
-  ImGui::Text("kinetic %.4f J   elastic %.2e J", e.kinetic, e.elastic);
-  ImGui::Text("momentum (%.3f, %.3f, %.3f) kg m/s", p.x, p.y, p.z);
+  ImGui::Text("at t = %s", format_time(lab.view_time, lab.contact_on_screen()).c_str());
+  ball_table(lab);
+  energy_bars(lab);
+  momentum_bars(lab);
+  centre_of_mass(lab);
   ImGui::Checkbox("velocity", &lab.settings.view.velocity), ImGui::SameLine();
   ImGui::Checkbox("spin", &lab.settings.view.spin), ImGui::SameLine();
-  ImGui::Checkbox("contact forces", &lab.settings.view.forces);
+  ImGui::Checkbox("forces", &lab.settings.view.forces), ImGui::SameLine();
+  ImGui::Checkbox("labels", &lab.settings.view.labels);
   if (!lab.shot || lab.scene.balls.empty()) {
-    ImGui::TextDisabled("Plots appear once a shot runs.");
+    ImGui::TextDisabled("Plots and events appear once a shot runs.");
     return;
   }
-  // Time plots over the recorded frames up to the time on screen.
-  std::vector<float> speed, spin_rate, total;
-  const int i = lab.selected;
-  for (const Frame& fr : lab.shot->frames()) {
-    if (fr.time > lab.view_time) break;
-    speed.push_back(static_cast<float>(glm::length(velocity(fr.state.x, i))));
-    spin_rate.push_back(static_cast<float>(glm::length(spin(fr.state.x, i))));
-    total.push_back(static_cast<float>(fr.energy));
-  }
-  const std::string id = lab.scene.balls[i].spec.id;
-  char text[64];
-  std::snprintf(text, sizeof text, "%s: %.3f m/s", id.c_str(), speed.empty() ? 0.0 : speed.back());
-  plot("speed", speed, text);
-  std::snprintf(text, sizeof text, "%s: %.1f rad/s", id.c_str(), spin_rate.empty() ? 0.0 : spin_rate.back());
-  plot("spin", spin_rate, text);
-  std::snprintf(text, sizeof text, "total %.4f J", total.empty() ? 0.0 : total.back());
-  plot("energy", total, text);
-  std::vector<float> force;
-  double peak = 0, first = 0, last = 0;
-  for (const Sample& s : lab.shot->collision_force())
-    if (s.time <= lab.view_time) {
-      if (force.empty()) first = s.time;
-      force.push_back(static_cast<float>(s.value));
-      peak = std::max(peak, s.value);
-      last = s.time;
-    }
-  std::snprintf(text, sizeof text, "peak %.0f N, %.3f ms", peak, (last - first) * 1e3);
-  if (force.empty()) ImGui::TextDisabled("no ball-ball collision yet");
-  else plot("collision", force, text);
-  ImGui::TextDisabled("collision: force at each integrator step");
+  const bool events_open = ImGui::CollapsingHeader("Events (click one to go there)");
+  mark("Events");
+  if (events_open) events_list(lab);
+  teach_plots(lab);
 }
 
-
-
-float inspector_panel(Lab& lab, ProbeReadouts& probes) {
+bool inspector_panel(Lab& lab, Tuning& tuning, const Rect& where) {
   ViewFlags& v = lab.settings.view;
-  const ImVec2 size = ImGui::GetIO().DisplaySize;
-  if (!v.inspector) return size.x;
-  ImGui::SetNextWindowPos(ImVec2(size.x - 350, 0), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(350, size.y), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Inspector", &v.inspector);
-  // v.tab may be set elsewhere (a script, saved settings): then select that tab once; otherwise follow the clicks.
-  static int shown = -1;
-  const int wanted = v.tab;
-  if (ImGui::BeginTabBar("tabs")) {
-    const char* names[2] = {"Teaching", "Tuning"};
-    for (int i = 0; i < 2; ++i)
-      if (ImGui::BeginTabItem(names[i], nullptr, wanted != shown && wanted == i ? ImGuiTabItemFlags_SetSelected : 0)) {
-        if (wanted == shown) v.tab = i;
-        shown = i;
+  static bool shown = true;
+  place_side_panel(where, lab.settings.panels.right_open, shown);
+  static bool first = true;  // the saved tab is selected once; after that the tab bar follows the clicks
+  if (first) v.tab_request = v.tab, first = false;
+  if (ImGui::Begin("Inspector", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize)) {
+    if (ImGui::BeginTabBar("tabs")) {
+      const char* names[2] = {"Teaching", "Tuning"};
+      for (int i = 0; i < 2; ++i) {
+        const bool open = ImGui::BeginTabItem(names[i], nullptr, v.tab_request == i ? ImGuiTabItemFlags_SetSelected : 0);
+        mark(std::string("tab ") + names[i]);
+        if (!open) continue;
+        v.tab = i;
         if (i == 0) teach_panel(lab);
-        else tune_panel(lab, probes);
+        else tune_panel(lab, tuning);
         ImGui::EndTabItem();
       }
-    ImGui::EndTabBar();
+      v.tab_request = -1;
+      ImGui::EndTabBar();
+    }
   }
-  const float left = ImGui::IsWindowCollapsed() ? size.x : ImGui::GetWindowPos().x;
+  shown = end_side_panel("panel Inspector");
   ImGui::End();
-  return left;
+  return shown;
 }
 
 }  // namespace shotlab

@@ -1,13 +1,16 @@
-// The tuning panel (for developers): every contact parameter of the three material pairs, the friction sharpness
-// and gravity, the integrator and its tolerances. Any change re-simulates the current shot from its start. Next to
-// the sliders: what the stiffness and damping give in one collision at a chosen impact speed, measured by
-// probe_collision (a short engine run, in the background), and the integrator's diagnostics.
+// The Tuning tab (developers): what changed from the scene file (with a reset and the A/B overlay), every contact
+// parameter of the three material pairs with an elasticity control, what one collision does at a chosen impact speed
+// (measured by probe_collision on a worker thread, with its force-time curve), the world and integrator, pause on
+// events, integrator diagnostics and the per-contact inspector. Any change re-simulates the current shot.
+#include <imgui.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <future>
+#include <cstdio>
 
 #include "ui/panels.hpp"
+#include "ui/widgets.hpp"
 
 namespace shotlab {
 
@@ -20,38 +23,25 @@ bool same(const ContactMaterial& a, const ContactMaterial& b) {
          a.damping_law == b.damping_law;
 }
 
-bool material_editor(ContactMaterial& m) {
-  bool c = false;
-  c |= slider("stiffness", m.stiffness, 1e4, 1e12, "%.3g N/m^m", true);
-  int law = static_cast<int>(m.damping_law);
-  if (ImGui::Combo("damping law", &law, "linear (thesis)\0Hunt-Crossley\0")) {
-    m.damping_law = static_cast<DampingLaw>(law);
-    c = true;
-  }
-  c |= slider("damping", m.damping, 0.0, m.damping_law == DampingLaw::Linear ? 1e5 : 10.0,
-              m.damping_law == DampingLaw::Linear ? "%.4g N s/m" : "%.4g s/m", true);
-  c |= slider("exponent", m.exponent, 1.0, 2.0, "%.2f", false);
-  c |= slider("friction", m.friction, 0.0, 1.0, "%.3f", false);
-  c |= slider("rolling resistance", m.rolling_resistance, 0.0, 0.1, "%.4f", false);
-  c |= slider("spin friction", m.spin_friction, 0.0, 0.2, "%.4f", false);
-  return c;
+template <class T> bool ready(const std::future<T>& f) {
+  return f.valid() && f.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
 }
 
-// Runs the three probes on a worker thread whenever their inputs change; a probe at an absurd stiffness can take a
-// while and must not stall the window.
-void update_probes(const Lab& lab, ProbeReadouts& p) {
-  static std::future<ProbeReadouts> job;  // the one probe run in flight
-  if (job.valid() && job.wait_for(std::chrono::seconds(0)) == std::future_status::ready) p = job.get();
-  bool stale = p.speed != lab.settings.impact_speed;
-  for (int k = 0; k < 3; ++k) stale |= !same(p.material[k], lab.scene.model.material(kPairs[k]));
-  if (!stale || job.valid()) return;
+BallSpec probe_ball(const Lab& lab) {
+  return lab.scene.balls.empty() ? BallSpec{"", kPoolBall.mass, kPoolBall.radius} : lab.scene.balls[0].spec;
+}
+
+void update_probes(const Lab& lab, Tuning& t) {
+  if (ready(t.probe_job)) t.probes = t.probe_job.get();
+  bool stale = t.probes.speed != lab.settings.impact_speed;
+  for (int k = 0; k < 3; ++k) stale |= !same(t.probes.material[k], lab.scene.model.material(kPairs[k]));
+  if (!stale || t.probe_job.valid()) return;
   ProbeReadouts next;
   next.speed = lab.settings.impact_speed;
   next.integrator = lab.scene.model.integrator;
   next.integrator.max_steps_per_call = 200000;
   for (int k = 0; k < 3; ++k) next.material[k] = lab.scene.model.material(kPairs[k]);
-  const BallSpec ball = lab.scene.balls.empty() ? BallSpec{"", kPoolBall.mass, kPoolBall.radius} : lab.scene.balls[0].spec;
-  job = std::async(std::launch::async, [next, ball]() mutable {
+  t.probe_job = std::async(std::launch::async, [next, ball = probe_ball(lab)]() mutable {
     for (int k = 0; k < 3; ++k) try {
         next.result[k] = probe_collision(next.material[k], ball.mass, ball.radius, next.speed, k == 0, next.integrator);
         next.valid[k] = std::isfinite(next.result[k].restitution);
@@ -62,18 +52,147 @@ void update_probes(const Lab& lab, ProbeReadouts& p) {
   });
 }
 
-void diagnostics(const Lab& lab) {
-  if (!lab.shot) {
-    ImGui::TextDisabled("Shoot to see the integrator at work.");
-    return;
+// The elasticity control: the restitution wanted at the probe speed, turned into the damping that gives it.
+bool elasticity(Lab& lab, Tuning& t, int k, ContactMaterial& m) {
+  bool changed = false;
+  if (ready(t.damping_job)) {
+    const auto [pair, damping] = t.damping_job.get();
+    lab.scene.model.materials[kPairs[pair]].damping = damping;
+    changed = true;
   }
+  double e = t.restitution[k] >= 0 ? t.restitution[k] : t.probes.valid[k] ? t.probes.result[k].restitution : 0.9;
+  char format[48];
+  std::snprintf(format, sizeof format, "%%.3f at %.2f m/s", lab.settings.impact_speed);
+  if (slider("##elasticity", e, 0.05, 0.999, format)) t.restitution[k] = e;
+  mark(std::string("elasticity ") + kPairs[k]);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("restitution: the share of the approach speed a head-on hit gives "
+                                                "back; sets the damping that does it (at the probe speed)");
+  if (ImGui::IsItemDeactivatedAfterEdit() && !t.damping_job.valid()) {
+    const BallSpec ball = probe_ball(lab);
+    const double speed = lab.settings.impact_speed;
+    const IntegratorOptions integ = lab.scene.model.integrator;
+    t.damping_job = std::async(std::launch::async, [=] {
+      return std::make_pair(k, damping_for_restitution(m, ball.mass, ball.radius, speed, k == 0, e, integ));
+    });
+  }
+  return changed;
+}
+
+bool material_editor(Lab& lab, Tuning& t, int k) {
+  ContactMaterial& m = lab.scene.model.materials[kPairs[k]];
+  bool c = false;
+  const Fields f({"elasticity e", "stiffness", "damping law", "damping", "exponent", "friction", "rolling resist.",
+                  "spin friction"});
+  f.label("elasticity e");
+  c |= elasticity(lab, t, k, m);
+  char unit[32];
+  std::snprintf(unit, sizeof unit, "%%.3g N/m^%g", m.exponent);
+  f.label("stiffness");
+  c |= slider("##stiffness", m.stiffness, 1e4, 1e12, unit, true);
+  mark(std::string("stiffness ") + kPairs[k]);
+  int law = static_cast<int>(m.damping_law);
+  f.label("damping law");
+  if (ImGui::Combo("##law", &law, "linear (thesis)\0Hunt-Crossley\0")) m.damping_law = static_cast<DampingLaw>(law), c = true;
+  const bool linear = m.damping_law == DampingLaw::Linear;
+  f.label("damping");
+  c |= slider("##damping", m.damping, 0.0, linear ? 1e5 : 10.0, linear ? "%.4g N s/m" : "%.4g s/m", true);
+  f.label("exponent");
+  c |= slider("##exponent", m.exponent, 1.0, 2.0, "%.2f");
+  f.label("friction");
+  c |= slider("##friction", m.friction, 0.0, 1.0, "%.3f");
+  f.label("rolling resist.");
+  c |= slider("##rolling", m.rolling_resistance, 0.0, 0.1, "%.4f");
+  f.label("spin friction");
+  c |= slider("##spin", m.spin_friction, 0.0, 0.2, "%.4f");
+  if (c) t.restitution[k] = -1;  // the slider shows the measured value again
+  return c;
+}
+
+void probe_readout(Lab& lab, const Tuning& t, int k) {
+  if (!t.probes.valid[k]) return ImGui::TextDisabled("measuring...");
+  const CollisionProbe& p = t.probes.result[k];
+  ImGui::TextColored(ImVec4(0.6f, 0.9f, 1, 1), "contact %.3f ms, penetration %.3f mm,\nrestitution %.3f, peak %.0f N",
+                     p.contact_time * 1e3, p.peak_penetration * 1e3, p.restitution, p.peak_force);
+  mark(std::string("probe ") + kPairs[k]);
+  readout(std::string("contact_time ") + kPairs[k], p.contact_time);
+  readout(std::string("restitution ") + kPairs[k], p.restitution);
+  PlotSpec spec{"probe force", "N", -1, 0, std::max(p.contact_time, 1e-9)};
+  lab_plot(lab, (std::string("probe_") + kPairs[k]).c_str(), spec, {{"normal force", IM_COL32(255, 110, 90, 255), p.time, p.force}},
+           em(110));
+}
+
+void changes_section(Lab& lab) {
+  const auto changes = lab.physics_changes();
+  if (changes.empty()) ImGui::TextDisabled("the scene file's values (nothing changed)");
+  for (const std::string& c : changes) {
+    ImGui::Bullet();
+    ImGui::TextWrapped("%s", c.c_str());
+  }
+  ImGui::BeginDisabled(changes.empty());
+  if (ImGui::Button("Reset to the scene's values")) lab.reset_physics();
+  mark("Reset physics");
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!lab.shot);
+  if (ImGui::Button("Pin as A")) lab.pin_compare();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("keep this shot's trails as A: later changes are drawn as B over it");
+  ImGui::EndDisabled();
+  ImGui::Checkbox("A/B overlay", &lab.settings.view.compare);
+  if (!lab.compare.empty()) ImGui::TextDisabled("%s (dashed grey)", lab.compare_label.c_str());
+}
+
+bool world_section(Lab& lab) {
+  Options& o = lab.scene.model.options;
+  IntegratorOptions& in = lab.scene.model.integrator;
+  bool changed = false;
+  const Fields f({"friction sharpness", "rate limit", "gravity", "method", "abs tol", "rel tol", "fixed step",
+                  "max steps/call", "physics/frame"});
+  f.label("friction sharpness");
+  changed |= slider("##sharpness", o.friction_sharpness, 1.0, 1e6, "%.4g s/m", true);
+  // 0 (no limit) is off the log scale: a checkbox switches the limit off and back to the default.
+  bool limited = o.friction_rate_limit > 0;
+  f.label("rate limit");
+  if (ImGui::Checkbox("##rate_limited", &limited)) o.friction_rate_limit = limited ? Options{}.friction_rate_limit : 0.0, changed = true;
+  ImGui::SameLine();
+  if (limited) changed |= slider("##rate", o.friction_rate_limit, 1e3, 1e9, "%.3g 1/s", true);
+  else ImGui::TextDisabled("off");
+  double g = -o.gravity.y;
+  f.label("gravity");
+  if (slider("##gravity", g, 0.0, 30.0, "%.2f m/s^2")) o.gravity.y = -g, changed = true;
+  int method = static_cast<int>(in.method);
+  f.label("method");
+  if (ImGui::Combo("##method", &method, "Euler\0RK4\0Cash-Karp 54\0Dormand-Prince 5\0Bulirsch-Stoer\0Rosenbrock 4\0"))
+    in.method = static_cast<Method>(method), changed = true;
+  if (is_adaptive(in.method)) {
+    f.label("abs tol");
+    changed |= slider("##abs", in.abs_tol, 1e-12, 1e-2, "%.1e", true);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("error allowed per step: m for positions, m/s for velocities and, with Cash-Karp and "
+                        "Dormand-Prince, for the speed R|w| a spin gives the ball's surface (rad/s with the others)");
+    f.label("rel tol");
+    changed |= slider("##rel", in.rel_tol, 1e-12, 1e-2, "%.1e", true);
+  } else {
+    f.label("fixed step");
+    changed |= slider("##step", in.fixed_step, 1e-7, 1e-2, "%.1e s", true);
+  }
+  f.label("max steps/call");
+  changed |= ImGui::SliderInt("##maxsteps", &in.max_steps_per_call, 100, 1000000, "%d",
+                              ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  f.label("physics/frame");
+  slider("##budget", lab.settings.budget_ms, 1.0, 50.0, "%.0f ms");  // display only: no re-run
+  return changed;
+}
+
+void diagnostics(const Lab& lab) {
+  if (!lab.shot) return ImGui::TextDisabled("Shoot to see the integrator at work.");
   const Simulation& sim = lab.shot->sim();
   const Stats& s = sim.stats();
   ImGui::Text("%s: %ld steps, %ld rejected, %ld rhs", method_name(sim.model().integrator.method), s.steps,
               s.rejected_steps, s.rhs_evaluations);
-  ImGui::Text("this frame: %ld steps, %ld rhs", lab.shot->last_steps(), lab.shot->last_rhs());
-  ImGui::Text("last step %.3g s   real-time factor %.2f", s.last_step, lab.shot->realtime_factor());
-  // Islands integrate apart (engine/partition.hpp): how the scene is split right now.
+  ImGui::Text("last frame: %ld steps, %ld rhs, %.2f ms", lab.shot->last_steps(), lab.shot->last_rhs(),
+              lab.shot->last_wall() * 1e3);
+  ImGui::Text("last step %.3g s   real-time factor %.1f", s.last_step, lab.shot->realtime_factor());
   size_t largest = 0;
   for (const auto& island : sim.islands()) largest = std::max(largest, island->balls().size());
   ImGui::Text("islands: %zu (largest %zu balls)", sim.islands().size(), largest);
@@ -81,67 +200,49 @@ void diagnostics(const Lab& lab) {
     ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "STEP LIMIT HIT: raise max steps or loosen the model");
   else if (sim.status() != Status::Ok)
     ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "stopped: %s", status_name(sim.status()));
-  std::vector<float> log_h;
-  for (const Sample& x : lab.shot->step_sizes())
-    if (x.time <= lab.view_time || !lab.shot->finished()) log_h.push_back(static_cast<float>(std::log10(x.value)));
-  if (!log_h.empty())
-    ImGui::PlotLines("log10 step", log_h.data(), static_cast<int>(log_h.size()), 0, "step size (s), per step", -8.0f,
-                     -1.0f, ImVec2(0, 70));
+}
+
+void step_plot(Lab& lab) {
+  if (!lab.shot || lab.shot->step_sizes().empty()) return;
+  PlotSeries h{"accepted steps", IM_COL32(120, 200, 255, 255), {}, {}};
+  for (const Sample& x : lab.shot->step_sizes()) h.time.push_back(x.time), h.value.push_back(std::log10(x.value));
+  PlotSpec spec{"step size, log10", "log10 s", lab.view_time, 0, std::max(lab.shot->sim().time(), 1e-6), false};
+  if (const auto t = lab_plot(lab, "steps", spec, {h}, em(110))) lab.seek(*t);
 }
 
 }  // namespace
 
-void tune_panel(Lab& lab, ProbeReadouts& probes) {
-  update_probes(lab, probes);
+bool Tuning::busy() const {
+  return (probe_job.valid() && !ready(probe_job)) || (damping_job.valid() && !ready(damping_job));
+}
+
+void tune_panel(Lab& lab, Tuning& tuning) {
+  update_probes(lab, tuning);
+  if (ImGui::CollapsingHeader("Changes from the scene file", ImGuiTreeNodeFlags_DefaultOpen)) changes_section(lab);
   bool changed = false;
-  slider("probe impact speed", lab.settings.impact_speed, 0.01, 20.0, "%.2f m/s", true);
+  const Fields f({"probe impact speed"});
+  f.label("probe impact speed");
+  slider("##probe speed", lab.settings.impact_speed, 0.01, 20.0, "%.2f m/s", true);
   for (int k = 0; k < 3; ++k) {
     ImGui::PushID(k);
     if (ImGui::CollapsingHeader(kPairs[k], k == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
-      changed |= material_editor(lab.scene.model.materials[kPairs[k]]);
-      if (probes.valid[k])
-        ImGui::TextColored(ImVec4(0.6f, 0.9f, 1, 1), "contact %.3f ms, penetration %.3f mm,\nrestitution %.3f, peak %.0f N",
-                           probes.result[k].contact_time * 1e3, probes.result[k].peak_penetration * 1e3,
-                           probes.result[k].restitution, probes.result[k].peak_force);
-      else
-        ImGui::TextDisabled("measuring...");
+      changed |= material_editor(lab, tuning, k);
+      probe_readout(lab, tuning, k);
     }
     ImGui::PopID();
   }
-  if (ImGui::CollapsingHeader("World and integrator", ImGuiTreeNodeFlags_DefaultOpen)) {
-    Options& o = lab.scene.model.options;
-    IntegratorOptions& in = lab.scene.model.integrator;
-    changed |= slider("friction sharpness", o.friction_sharpness, 1.0, 1e6, "%.4g s/m", true);
-    // 0 (no limit) is off the log scale: a checkbox switches the limit off and back to the default.
-    bool limited = o.friction_rate_limit > 0;
-    if (ImGui::Checkbox("##rate_limited", &limited)) {
-      o.friction_rate_limit = limited ? Options{}.friction_rate_limit : 0.0;
-      changed = true;
-    }
-    ImGui::SameLine();
-    if (limited) changed |= slider("friction rate limit", o.friction_rate_limit, 1e3, 1e9, "%.3g 1/s", true);
-    else ImGui::TextDisabled("friction rate limit: off");
-    double g = -o.gravity.y;
-    if (slider("gravity", g, 0.0, 30.0, "%.2f m/s^2", false)) o.gravity.y = -g, changed = true;
-    int method = static_cast<int>(in.method);
-    if (ImGui::Combo("method", &method, "Euler\0RK4\0Cash-Karp 54\0Dormand-Prince 5\0Bulirsch-Stoer\0Rosenbrock 4\0")) {
-      in.method = static_cast<Method>(method);
-      changed = true;
-    }
-    if (is_adaptive(in.method)) {
-      changed |= slider("abs tol", in.abs_tol, 1e-12, 1e-2, "%.1e", true);
-      if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("error allowed per step: m for positions, m/s for velocities and, with Cash-Karp and "
-                          "Dormand-Prince, for the speed R|w| a spin gives the ball's surface (rad/s with the others)");
-      changed |= slider("rel tol", in.rel_tol, 1e-12, 1e-2, "%.1e", true);
-    } else {
-      changed |= slider("fixed step", in.fixed_step, 1e-7, 1e-2, "%.1e s", true);
-    }
-    changed |= ImGui::SliderInt("max steps/call", &in.max_steps_per_call, 100, 1000000, "%d",
-                                ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-    slider("physics per frame", lab.settings.budget_ms, 1.0, 50.0, "%.0f ms", false);  // display only: no re-run
+  if (ImGui::CollapsingHeader("World and integrator")) changed |= world_section(lab);
+  if (ImGui::CollapsingHeader("Pause on events")) {
+    PauseOn& p = lab.settings.pause_on;
+    ImGui::Checkbox("ball-ball contact", &p.ball_ball), ImGui::SameLine();
+    ImGui::Checkbox("cushion contact", &p.cushion), ImGui::SameLine();
+    ImGui::Checkbox("pocketed", &p.pocketed);
   }
-  if (ImGui::CollapsingHeader("Integrator diagnostics", ImGuiTreeNodeFlags_DefaultOpen)) diagnostics(lab);
+  if (ImGui::CollapsingHeader("Integrator diagnostics", ImGuiTreeNodeFlags_DefaultOpen)) {
+    diagnostics(lab);
+    step_plot(lab);
+  }
+  if (ImGui::CollapsingHeader("Contacts of the shot")) contacts_section(lab);
   if (changed) lab.physics_changed();
 }
 

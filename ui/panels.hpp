@@ -1,32 +1,22 @@
-// The ImGui panels and the 3D overlay: plain functions over the Lab they edit (values are edited in place).
+// The ImGui panels: plain functions over the Lab they edit (values are edited in place). The left panel (players
+// and coaches: scenes, playback, aim, practice) and the right one (the inspector: Teaching and Tuning tabs) sit at
+// the window's edges where layout.hpp puts them.
 #pragma once
 #include <imgui.h>
+
+#include <future>
+#include <string>
 
 #include "engine/collision_probe.hpp"
 #include "ui/camera.hpp"
 #include "ui/lab.hpp"
+#include "ui/layout.hpp"
+#include "ui/plot.hpp"
 
 namespace shotlab {
 
-// A slider over a double, clamped to its range (typed values too: no out-of-range value reaches the engine);
-// logarithmic where the range spans decades.
-inline bool slider(const char* label, double& v, double lo, double hi, const char* format, bool log = false) {
-  return ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &lo, &hi, format,
-                             ImGuiSliderFlags_AlwaysClamp | (log ? ImGuiSliderFlags_Logarithmic : 0));
-}
-
-// Each side panel returns the edge it leaves free for the 3D view (window pixels).
-float play_panel(Lab& lab, Camera& camera);  // panel_play.cpp: scenes, files, playback, aim, edit; its right edge
-struct ProbeReadouts;
-// The inspector window on the right: a Teaching and a Tuning tab (panel_teach.cpp).
-float inspector_panel(Lab& lab, ProbeReadouts& probes);  // its left edge
-void teach_panel(Lab& lab);                 // panel_teach.cpp: per-ball readouts, energy, momentum, plots
-void help_panel(bool* open);                // panel_play.cpp: shortcuts
-void message_banner(Lab& lab);              // panel_play.cpp: errors and notes
-// The current shot's trajectory as CSV (engine/io format); throws std::runtime_error. panel_play.cpp.
-void export_trajectory(const Lab& lab, const std::string& path);
-
-// The tuning panel's collision probes, re-measured only when their inputs change (panel_tune.cpp).
+// The tuning panel's collision probes and the elasticity control's solver, run on a worker thread whenever their
+// inputs change: a probe at an absurd stiffness can take a while and must not stall the window.
 struct ProbeReadouts {
   ContactMaterial material[3];
   double speed = -1;
@@ -34,18 +24,51 @@ struct ProbeReadouts {
   CollisionProbe result[3];
   bool valid[3] = {false, false, false};
 };
-void tune_panel(Lab& lab, ProbeReadouts& probes);
+struct Tuning {
+  ProbeReadouts probes;
+  std::future<ProbeReadouts> probe_job;
+  double restitution[3] = {-1, -1, -1};  // the elasticity control's wanted e per pair, < 0: not set
+  std::future<std::pair<int, double>> damping_job;  // pair index and the damping that gives the wanted e
+  bool busy() const;
+};
 
-// Trails, predicted paths, aim line and ghost ball, vectors and contact forces, drawn over the 3D view
-// (overlay.cpp).
+// Each returns the panel's collapsed state as the user left it (true: open).
+bool left_panel(Lab& lab, Camera& camera, const Rect& where);   // panel_play.cpp
+bool inspector_panel(Lab& lab, Tuning& tuning, const Rect& where);  // panel_teach.cpp
+
+void scene_section(Lab& lab);         // panel_files.cpp: presets, recent files, open, save
+void practice_section(Lab& lab);      // panel_practice.cpp: position target, kept shots, camera follow
+void view_section(Lab& lab, Camera& camera);  // panel_practice.cpp: drawing aids, UI scale, pictures
+void teach_panel(Lab& lab);           // panel_teach.cpp
+void teach_plots(Lab& lab);           // panel_plots.cpp
+void tune_panel(Lab& lab, Tuning& tuning);  // panel_tune.cpp
+void contacts_section(Lab& lab);      // panel_contacts.cpp: every contact of the shot, its force history
+void help_panel(bool* open);          // panel_play.cpp: shortcuts
+void message_banner(Lab& lab, const Rect& view);  // panel_play.cpp: errors and notes over the 3D view
+// The frame's timing in the view's corner: frame time and rate, physics time this frame (developers).
+void status_line(const Lab& lab, const Rect& view, double frame_seconds);
+
+// A plot with its exports handled (files named after the scene, in the export folder); returns the picked time.
+std::optional<double> lab_plot(Lab& lab, const char* id, const PlotSpec& spec, const std::vector<PlotSeries>& series,
+                               float height);
+// Where an export goes: a new file in the export folder, named after the scene and `what`.
+std::string export_path(const Lab& lab, const std::string& what, const std::string& ext);
+// The current shot's trajectory as CSV (engine/io format); throws std::runtime_error. panel_files.cpp.
+void export_trajectory(const Lab& lab, const std::string& path);
+
+// Trails, predicted paths, aim line and ghost ball, vectors and contact forces, targets, labels, drawn over the 3D
+// view (overlay.cpp).
 void draw_overlay(const Lab& lab, const Viewport& viewport, ImDrawList* draw);
 ImU32 motion_color(Motion m, float alpha = 1.0f);
+ImU32 kept_colour(int k, float alpha = 1.0f);
 
 // Mouse and keyboard on the 3D view (input.cpp).
 struct MouseDrag {
-  enum Kind { None, Ball, Aim, Orbit, Pan } kind = None;
+  enum Kind { None, Ball, Aim, FineAim, Orbit, Pan } kind = None;
   int ball = -1;
+  double aim0 = 0;     // rad, the aim when a fine-aim drag began
+  float x0 = 0;        // pixels, where it began
 };
-void handle_input(Lab& lab, Camera& camera, const Viewport& viewport, MouseDrag& drag);
+void handle_input(Lab& lab, Camera& camera, const Viewport& viewport, MouseDrag& drag, bool over_view);
 
 }  // namespace shotlab

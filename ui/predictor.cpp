@@ -23,9 +23,15 @@ Predictor::~Predictor() {
   thread_.join();
 }
 
-long Predictor::request(const Scene& scene) {
+void Predictor::set_notify(std::function<void()> notify) {
+  std::lock_guard lock(mutex_);
+  notify_ = std::move(notify);
+}
+
+long Predictor::request(const Scene& scene, double limit) {
   std::lock_guard lock(mutex_);
   pending_ = scene;
+  limit_ = limit;
   wanted_ = ++generation_;
   busy_ = true;
   wake_.notify_one();
@@ -41,6 +47,7 @@ void Predictor::run() {
   for (;;) {
     Scene scene;
     long generation;
+    double limit;
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] { return quit_ || pending_; });
@@ -48,17 +55,22 @@ void Predictor::run() {
       scene = std::move(*pending_);
       pending_.reset();
       generation = generation_;
+      limit = limit_;
     }
-    Prediction p = predict(scene, generation);
-    std::lock_guard lock(mutex_);
-    if (p.generation == generation_) {  // not superseded while it ran
+    Prediction p = predict(scene, limit, generation);
+    std::function<void()> notify;
+    {
+      std::lock_guard lock(mutex_);
+      if (p.generation != generation_) continue;  // superseded while it ran
       done_ = std::move(p);
       busy_ = false;
+      notify = notify_;
     }
+    if (notify) notify();
   }
 }
 
-Prediction Predictor::predict(const Scene& scene, long generation) {
+Prediction Predictor::predict(const Scene& scene, double limit, long generation) {
   Prediction out;
   out.generation = generation;
   try {
@@ -73,7 +85,7 @@ Prediction Predictor::predict(const Scene& scene, long generation) {
           out.paths[i].push_back({position(sim.state().x, i), sim.motion(i)});
     };
     sample();
-    while (sim.time() < scene.duration && !(sim.time() > 0 && sim.at_rest())) {
+    while (sim.time() < limit && !(sim.time() > 0 && sim.at_rest())) {
       if (wanted_ != generation) return out;  // superseded: the result is dropped by run()
       if (sim.advance(kSample) != Status::Ok) {
         out.problem = std::string(status_name(sim.status())) + ": " + sim.diagnostic();

@@ -1,9 +1,10 @@
-// Predicted paths before the shot: a background thread runs its own Simulation of the scene as it would be shot
-// and hands back each ball's path. A newer request supersedes a running one (the thread checks between chunks), so
+// Predicted paths before the shot: a background thread runs its own Simulation of the scene as it would be shot,
+// until its balls rest, and hands back each ball's path. A newer request supersedes a running one (the thread checks between chunks), so
 // dragging the aim never queues work.
 #pragma once
 #include <atomic>
 #include <condition_variable>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -34,19 +35,24 @@ class Predictor {
   Predictor(const Predictor&) = delete;
   Predictor& operator=(const Predictor&) = delete;
 
-  // Starts predicting `scene` (abandoning any older request); returns the request's generation.
-  long request(const Scene& scene);
+  // Starts predicting `scene` until its balls rest or `limit` s (abandoning any older request); returns the
+  // request's generation.
+  long request(const Scene& scene, double limit);
+  // Called on the worker thread when a prediction is ready (the window's event loop wakes up to draw it).
+  void set_notify(std::function<void()> notify);
   // The latest finished prediction, if any.
   std::optional<Prediction> latest() const;
   bool busy() const { return busy_; }
 
  private:
   void run();
-  Prediction predict(const Scene& scene, long generation);
+  Prediction predict(const Scene& scene, double limit, long generation);
 
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::optional<Scene> pending_;
+  double limit_ = 0;
+  std::function<void()> notify_;
   std::optional<Prediction> done_;
   long generation_ = 0;
   std::atomic<long> wanted_{0};

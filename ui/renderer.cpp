@@ -9,23 +9,27 @@
 #include <stdexcept>
 #include <vector>
 
-#include "app/paths.hpp"
+#include "ui/fonts.hpp"
 #include "ui/gl.hpp"
+
+#include <stb_truetype.h>
+#include <iterator>
 
 namespace shotlab {
 
 namespace {
 
-std::string read_asset(const std::string& name) {
-  std::ifstream in(asset_path(name));
-  if (!in) throw std::runtime_error("cannot read " + asset_path(name));
+std::string read_asset(const std::string& root, const std::string& name) {
+  const std::string path = root + "/assets/" + name;
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
 }
 
-unsigned compile(GLenum kind, const std::string& name) {
-  const std::string text = read_asset(name);
+unsigned compile(GLenum kind, const std::string& root, const std::string& name) {
+  const std::string text = read_asset(root, name);
   const char* src = text.c_str();
   const unsigned shader = glCreateShader(kind);
   glShaderSource(shader, 1, &src, nullptr);
@@ -109,14 +113,15 @@ BallLook ball_look(const std::string& id) {
   char* end = nullptr;
   const long number = std::strtol(id.c_str(), &end, 10);
   if (end != id.c_str() && *end == '\0' && number >= 1 && number <= 15)
-    return {number == 8 ? pool[0] : pool[number % 8], number > 8 ? 2 : 1};
+    return {number == 8 ? pool[0] : pool[number % 8], number > 8 ? 2 : 1, static_cast<int>(number)};
   const size_t h = std::hash<std::string>{}(id);
   return {{0.3f + (h % 7) * 0.1f, 0.2f + (h / 7 % 7) * 0.1f, 0.3f + (h / 49 % 7) * 0.1f}, 1};
 }
 
-Renderer::Renderer() {
+Renderer::Renderer(const std::string& data_root) {
   program_ = glCreateProgram();
-  const unsigned vs = compile(GL_VERTEX_SHADER, "shaders/mesh.vert"), fs = compile(GL_FRAGMENT_SHADER, "shaders/mesh.frag");
+  const unsigned vs = compile(GL_VERTEX_SHADER, data_root, "shaders/mesh.vert");
+  const unsigned fs = compile(GL_FRAGMENT_SHADER, data_root, "shaders/mesh.frag");
   glAttachShader(program_, vs);
   glAttachShader(program_, fs);
   glLinkProgram(program_);
@@ -132,6 +137,8 @@ Renderer::Renderer() {
   loc_alpha_ = glGetUniformLocation(program_, "u_alpha");
   loc_pattern_ = glGetUniformLocation(program_, "u_pattern");
   loc_eye_ = glGetUniformLocation(program_, "u_eye");
+  loc_number_ = glGetUniformLocation(program_, "u_number");
+  build_digits();
   sphere_ = upload(sphere_mesh(40, 20));
   cube_ = upload(cube_mesh());
   cylinder_ = upload(cylinder_mesh(32));
@@ -142,7 +149,36 @@ Renderer::~Renderer() {
     glDeleteBuffers(1, &m->vbo);
     glDeleteVertexArrays(1, &m->vao);
   }
+  glDeleteTextures(1, &digits_);
   glDeleteProgram(program_);
+}
+
+void Renderer::build_digits() {
+  std::ifstream in(kNumeralFont, std::ios::binary);
+  const std::vector<unsigned char> ttf((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  stbtt_fontinfo font;
+  if (ttf.empty() || !stbtt_InitFont(&font, ttf.data(), stbtt_GetFontOffsetForIndex(ttf.data(), 0))) return;
+  constexpr int kCellW = 32, kCellH = 48;  // each glyph centred in its cell (the shader assumes this aspect)
+  std::vector<unsigned char> atlas(10 * kCellW * kCellH, 0);
+  const float scale = stbtt_ScaleForPixelHeight(&font, 46);
+  for (int d = 0; d < 10; ++d) {
+    int w = 0, h = 0, xoff = 0, yoff = 0;
+    unsigned char* glyph = stbtt_GetCodepointBitmap(&font, 0, scale, '0' + d, &w, &h, &xoff, &yoff);
+    const int x0 = d * kCellW + (kCellW - w) / 2, y0 = (kCellH - h) / 2;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if (x0 + x >= d * kCellW && x0 + x < (d + 1) * kCellW && y0 + y >= 0 && y0 + y < kCellH)
+          atlas[(y0 + y) * 10 * kCellW + x0 + x] = glyph[y * w + x];
+    stbtt_FreeBitmap(glyph, nullptr);
+  }
+  glGenTextures(1, &digits_);
+  glBindTexture(GL_TEXTURE_2D, digits_);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, 10 * kCellW, kCellH, 0, GL_RED, GL_UNSIGNED_BYTE, atlas.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
 Renderer::Mesh Renderer::upload(const std::vector<float>& data) {
@@ -172,6 +208,9 @@ void Renderer::begin(const glm::dmat4& view_proj, const glm::dvec3& eye, int x0,
   glUseProgram(program_);
   glUniformMatrix4fv(loc_view_proj_, 1, GL_FALSE, glm::value_ptr(glm::mat4(view_proj)));
   glUniform3fv(loc_eye_, 1, glm::value_ptr(glm::vec3(eye)));
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, digits_);
+  glUniform1i(glGetUniformLocation(program_, "u_digits"), 0);
 }
 
 void Renderer::draw(const Mesh& mesh, const glm::dmat4& model, const glm::vec3& color, int pattern, float alpha) {
@@ -182,6 +221,7 @@ void Renderer::draw(const Mesh& mesh, const glm::dmat4& model, const glm::vec3& 
   glUniform3fv(loc_color_, 1, glm::value_ptr(color));
   glUniform1f(loc_alpha_, alpha);
   glUniform1i(loc_pattern_, pattern);
+  glUniform1i(loc_number_, digits_ ? number_ : 0);
   glBindVertexArray(mesh.vao);
   glDrawArrays(GL_TRIANGLES, 0, mesh.count);
 }
@@ -189,7 +229,9 @@ void Renderer::draw(const Mesh& mesh, const glm::dmat4& model, const glm::vec3& 
 void Renderer::draw_ball(const glm::dvec3& p, const glm::dquat& q, double r, const BallLook& look, float alpha) {
   const glm::dmat4 m = glm::translate(glm::dmat4(1.0), p) * glm::mat4_cast(q) * glm::scale(glm::dmat4(1.0), glm::dvec3(r));
   if (alpha < 1) glDepthMask(GL_FALSE);  // a see-through ghost must not hide what is behind it
+  number_ = look.number;
   draw(sphere_, m, look.color, look.pattern, alpha);
+  number_ = 0;
   glDepthMask(GL_TRUE);
 }
 
@@ -231,10 +273,12 @@ void Renderer::draw_table(const TableSpec& t, const Model& model) {
       for (double z : {-p - w / 2, p + w / 2}) diamond(k * t.length / 8, z);
   for (int k = -1; k <= 1; ++k)
     for (double x : {-o - w / 2, o + w / 2}) diamond(x, k * t.width / 4);
+  // Pockets: a black disc on the cloth and one cut into the rail top (flat, so nothing sticks up through the rail).
   for (const Pocket& pk : model.pockets)
-    draw(cylinder_, glm::translate(glm::dmat4(1.0), {pk.center.x, -0.015, pk.center.z}) *
-                        glm::scale(glm::dmat4(1.0), {pk.radius, rail_top + 0.016, pk.radius}),
-         {0.02f, 0.02f, 0.02f}, 0, 1);
+    for (double y : {0.0005, rail_top + 0.0005})
+      draw(cylinder_, glm::translate(glm::dmat4(1.0), {pk.center.x, y - 0.0005, pk.center.z}) *
+                          glm::scale(glm::dmat4(1.0), {pk.radius, 0.001, pk.radius}),
+           {0.02f, 0.02f, 0.02f}, 0, 1);
 }
 
 void Renderer::draw_colliders(const Model& model) {

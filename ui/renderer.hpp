@@ -12,14 +12,17 @@ namespace shotlab {
 
 struct BallLook {
   glm::vec3 color;
-  int pattern;  // as in assets/shaders/mesh.frag
+  int pattern;     // as in assets/shaders/mesh.frag
+  int number = 0;  // printed in the number circles, 0: none
 };
 // Pool colours by number, the cue ball by id "cue", carom balls by their names; anything else by a hash of the id.
 BallLook ball_look(const std::string& id);
 
 class Renderer {
  public:
-  Renderer();  // needs a current OpenGL 3.3 context; throws std::runtime_error when a shader does not build
+  // Needs a current OpenGL 3.3 context; reads its shaders from data_root/assets; throws std::runtime_error when a
+  // shader cannot be read or built.
+  explicit Renderer(const std::string& data_root);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
@@ -40,10 +43,13 @@ class Renderer {
   void draw(const Mesh& mesh, const glm::dmat4& model, const glm::vec3& color, int pattern, float alpha);
   void draw_table(const TableSpec& table, const Model& model);
   void draw_colliders(const Model& model);
+  void build_digits();  // the numerals' glyph atlas (none when the font is missing)
 
   unsigned program_ = 0;
   Mesh sphere_, cube_, cylinder_;
-  int loc_view_proj_, loc_model_, loc_normal_, loc_color_, loc_alpha_, loc_pattern_, loc_eye_;
+  unsigned digits_ = 0;  // texture
+  int number_ = 0;       // of the ball being drawn
+  int loc_view_proj_, loc_model_, loc_normal_, loc_color_, loc_alpha_, loc_pattern_, loc_eye_, loc_number_;
 };
 
 }  // namespace shotlab

@@ -3,20 +3,32 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
-#include <nlohmann/json.hpp>
-#include <sstream>
 
-#include "app/paths.hpp"
 #include "engine/io/scene_json.hpp"
+#include "ui/files.hpp"
 #include "ui/panels.hpp"
 
 namespace shotlab {
 
 namespace {
+
 constexpr int kMaxWaitFrames = 3000;  // a wait-* that takes longer fails the script instead of hanging the test
+
+double number(std::istringstream& in) {
+  double v = NAN;
+  in >> v;
+  return v;
 }
 
-Script::Script(const std::string& path) {
+std::string word(std::istringstream& in) {
+  std::string w;
+  in >> w;
+  return w;
+}
+
+}  // namespace
+
+Script::Script(const std::string& path, std::string data_root) : data_root_(std::move(data_root)) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read script " + path);
   for (std::string line; std::getline(in, line);) {
@@ -44,38 +56,127 @@ void Script::run(ScriptHost& host) {
   }
 }
 
+void Script::fail(const std::string& line, const std::string& why) {
+  std::cerr << "script: " << line << ": " << why << '\n';
+  ++failures_;
+}
+
+// Editing the table and the cue, as the mouse and the panels do.
+bool Script::edit(ScriptHost& host, const std::string& cmd, std::istringstream& in) {
+  Lab& lab = host.lab;
+  if (cmd == "aim" || cmd == "speed" || cmd == "elevation" || cmd == "tip") {
+    if (!lab.scene.cue) return fail(line_, "the scene has no cue strike"), true;
+    CueStrike c = *lab.scene.cue;
+    if (cmd == "aim") c.aim = number(in) * M_PI / 180;
+    if (cmd == "speed") c.speed = number(in);
+    if (cmd == "elevation") c.elevation = number(in) * M_PI / 180;
+    if (cmd == "tip") c.side = number(in), c.height = number(in);
+    lab.set_cue(c, cmd);
+    lab.end_gesture();
+  } else if (cmd == "aim-at") {  // aim-at X Z: as a click on the cloth
+    const double x = number(in), z = number(in);
+    lab.aim_at({x, 0, z});
+    lab.end_gesture();
+  } else if (cmd == "aim-ball") {  // aim-ball ID: as a click on the ball
+    const int i = scene_ball(lab.scene, word(in));
+    if (i < 0) return fail(line_, "no such ball"), true;
+    lab.aim_at_ball(i);
+  } else if (cmd == "pocket") {
+    lab.aim_for_pocket(1);
+  } else if (cmd == "place") {  // place ID X Z: as a drag of the ball
+    const int i = scene_ball(lab.scene, word(in));
+    const double x = number(in), z = number(in);
+    if (i < 0) return fail(line_, "no such ball"), true;
+    if (!lab.begin_move(i) || !lab.move_ball(i, {x, 0, z}))
+      fail(line_, "cannot place it there (a shot is shown, or it would overlap)");
+    lab.end_gesture();
+  } else if (cmd == "remove") {
+    const int i = scene_ball(lab.scene, word(in));
+    if (i < 0) return fail(line_, "no such ball"), true;
+    lab.remove_ball(i);
+  } else if (cmd == "add") {  // add X Z: as a shift+click with the Move tool
+    const double x = number(in), z = number(in);
+    lab.add_ball({x, 0, z});
+  } else if (cmd == "select") {
+    if (const int i = scene_ball(lab.scene, word(in)); i >= 0) lab.selected = i;
+    else fail(line_, "no such ball");
+  } else if (cmd == "break") {
+    lab.setup_break();
+  } else if (cmd == "hand") {  // hand X Z: ball in hand, put down at X Z
+    if (!lab.in_hand) lab.pick_up_cue_ball();
+    const double x = number(in), z = number(in);
+    lab.place_cue_ball({x, 0, z}, true);
+  } else if (cmd == "target") {
+    const double x = number(in), z = number(in);
+    lab.set_target({x, 0, z});
+  } else if (cmd == "material") {  // material PAIR FIELD VALUE
+    const std::string pair = word(in), field = word(in);
+    ContactMaterial& m = lab.scene.model.materials[pair];
+    const double v = number(in);
+    if (field == "stiffness") m.stiffness = v;
+    else if (field == "damping") m.damping = v;
+    else if (field == "friction") m.friction = v;
+    else return fail(line_, "unknown material field"), true;
+    lab.physics_changed();
+  } else if (cmd == "integrator") {  // integrator METHOD [FIXED_STEP]
+    if (!parse_method(word(in), lab.scene.model.integrator.method)) return fail(line_, "unknown method"), true;
+    if (const double step = number(in); std::isfinite(step)) lab.scene.model.integrator.fixed_step = step;
+    lab.physics_changed();
+  } else if (cmd == "reset-physics") {
+    lab.reset_physics();
+  } else {
+    return false;
+  }
+  return true;
+}
+
+bool Script::view(ScriptHost& host, const std::string& cmd, std::istringstream& in) {
+  Lab& lab = host.lab;
+  if (cmd == "view") {  // view NAME on|off
+    const std::string name = word(in), state = word(in);
+    ViewFlags& v = lab.settings.view;
+    bool* flag = name == "trails" ? &v.trails : name == "ghost" ? &v.ghost : name == "predicted" ? &v.predicted
+               : name == "aim" ? &v.aim : name == "velocity" ? &v.velocity : name == "spin" ? &v.spin
+               : name == "forces" ? &v.forces : name == "labels" ? &v.labels : name == "centre" ? &v.centre_of_mass
+               : name == "help" ? &v.help : name == "left" ? &lab.settings.panels.left_open
+               : name == "right" ? &lab.settings.panels.right_open : nullptr;
+    if (!flag) return fail(line_, "unknown view flag"), true;
+    *flag = state == "on";
+  } else if (cmd == "panel") {  // panel teach|tune: the inspector's tab, as a click on it
+    const std::string name = word(in);
+    if (name != "teach" && name != "tune") return fail(line_, "unknown panel"), true;
+    lab.settings.view.tab_request = name == "tune";
+    lab.settings.panels.right_open = true;
+  } else if (cmd == "presentation") {
+    lab.settings.presentation = word(in) == "on";
+  } else if (cmd == "camera") {
+    const std::string what = word(in);
+    if (what == "top") host.camera.top_view();
+    else if (what == "reset") host.camera.reset();
+    else if (what == "orbit") {  // camera orbit YAW_DEG PITCH_DEG DISTANCE [TARGET_X TARGET_Z]
+      host.camera.yaw = number(in) * M_PI / 180;
+      host.camera.pitch = number(in) * M_PI / 180;
+      host.camera.distance = number(in);
+      host.camera.auto_fit = false;
+      const double x = number(in), z = number(in);
+      if (std::isfinite(x) && std::isfinite(z)) host.camera.target = {x, 0, z};
+    } else fail(line_, "unknown camera command");
+  } else {
+    return false;
+  }
+  return true;
+}
+
 bool Script::execute(ScriptHost& host, const std::string& line) {
   Lab& lab = host.lab;
+  line_ = line;
   std::istringstream in(line);
-  std::string cmd, arg;
-  in >> cmd;
-  auto number = [&] {
-    double v = NAN;
-    in >> v;
-    return v;
-  };
-  auto fail = [&](const std::string& why) {
-    std::cerr << "script: " << line << ": " << why << '\n';
-    ++failures_;
-  };
-  auto cue = [&]() -> CueStrike* {
-    if (!lab.scene.cue) fail("the scene has no cue strike");
-    return lab.scene.cue ? &*lab.scene.cue : nullptr;
-  };
+  const std::string cmd = word(in);
+  if (edit(host, cmd, in) || view(host, cmd, in)) return true;
   if (cmd == "preset") {
-    in >> arg;
-    lab.load(preset_path(arg + ".json"));
+    lab.load(data_root_ + "/presets/" + word(in) + ".json");
   } else if (cmd == "load") {
-    in >> arg;
-    lab.load(arg);  // a bad file sets lab.error, which `dump` reports
-  } else if (cmd == "aim" || cmd == "speed" || cmd == "elevation" || cmd == "tip") {
-    CueStrike* c = cue();
-    if (!c) return true;
-    if (cmd == "aim") c->aim = number() * M_PI / 180;
-    if (cmd == "speed") c->speed = number();
-    if (cmd == "elevation") c->elevation = number() * M_PI / 180;
-    if (cmd == "tip") c->side = number(), c->height = number();
-    lab.scene_changed();
+    lab.load(word(in));  // a bad file sets the message, which `dump` reports
   } else if (cmd == "shoot") {
     lab.shoot();
   } else if (cmd == "play") {
@@ -83,140 +184,53 @@ bool Script::execute(ScriptHost& host, const std::string& line) {
   } else if (cmd == "pause") {
     lab.playing = false;
   } else if (cmd == "seek") {
-    lab.seek(number());
-  } else if (cmd == "step") {
-    lab.step();
+    lab.seek(number(in));
+  } else if (cmd == "step") {  // step [-1]
+    const double d = number(in);
+    lab.step(std::isfinite(d) && d < 0 ? -1 : 1);
   } else if (cmd == "replay") {
     lab.replay();
   } else if (cmd == "undo") {
     lab.undo();
+  } else if (cmd == "redo") {
+    lab.redo();
   } else if (cmd == "next") {
     lab.continue_from_rest();
+  } else if (cmd == "keep") {
+    lab.keep_shot();
+  } else if (cmd == "run-on") {
+    lab.run_on();
   } else if (cmd == "slowmo") {
-    lab.settings.slowmo = number();
+    lab.settings.slowmo = number(in);
+  } else if (cmd == "safety-limit") {
+    lab.settings.safety_limit = number(in);
   } else if (cmd == "clock") {
-    in >> arg;
-    host.real_clock = arg == "real";
-  } else if (cmd == "material") {  // material PAIR FIELD VALUE
-    std::string pair, field;
-    in >> pair >> field;
-    ContactMaterial& m = lab.scene.model.materials[pair];
-    const double v = number();
-    if (field == "stiffness") m.stiffness = v;
-    else if (field == "damping") m.damping = v;
-    else if (field == "friction") m.friction = v;
-    else return fail("unknown material field"), true;
-    lab.physics_changed();
-  } else if (cmd == "integrator") {  // integrator METHOD [FIXED_STEP]
-    in >> arg;
-    if (!parse_method(arg, lab.scene.model.integrator.method)) return fail("unknown method"), true;
-    if (const double step = number(); std::isfinite(step)) lab.scene.model.integrator.fixed_step = step;
-    lab.physics_changed();
-  } else if (cmd == "aim-at") {  // aim-at X Z: as a click on the cloth
-    const double x = number(), z = number();
-    lab.aim_at({x, 0, z});
-  } else if (cmd == "place" || cmd == "remove") {  // place ID X Z (as a drag) / remove ID
-    in >> arg;
-    const int i = scene_ball(lab.scene, arg);
-    if (i < 0) return fail("no such ball"), true;
-    if (cmd == "remove") {
-      lab.remove_ball(i);
-    } else {
-      const double x = number(), z = number();
-      if (!lab.move_ball(i, {x, 0, z})) fail("cannot place it there (a shot is shown, or it would overlap)");
-    }
-  } else if (cmd == "add") {  // add X Z: as a shift+click on the cloth
-    const double x = number(), z = number();
-    lab.add_ball({x, 0, z});
-  } else if (cmd == "select") {
-    in >> arg;
-    if (const int i = scene_ball(lab.scene, arg); i >= 0) lab.selected = i;
-    else fail("no such ball");
-  } else if (cmd == "view" || cmd == "panel") {  // view NAME on|off
-    std::string name, state;
-    in >> name >> state;
-    ViewFlags& v = lab.settings.view;
-    bool* flag = name == "trails" ? &v.trails : name == "ghost" ? &v.ghost : name == "predicted" ? &v.predicted
-               : name == "aim" ? &v.aim : name == "velocity" ? &v.velocity : name == "spin" ? &v.spin
-               : name == "forces" ? &v.forces : name == "inspector" ? &v.inspector
-               : name == "help" ? &v.help : nullptr;
-    if (name == "teach" || name == "tune") v.tab = name == "tune";  // panel teach|tune: the inspector's tab
-    else if (flag) *flag = state == "on";
-    else fail("unknown view flag");
-  } else if (cmd == "camera") {
-    in >> arg;
-    if (arg == "top") host.camera.top_view();
-    else if (arg == "reset") host.camera.reset();
-    else if (arg == "orbit") {  // camera orbit YAW_DEG PITCH_DEG DISTANCE [TARGET_X TARGET_Z]
-      host.camera.yaw = number() * M_PI / 180;
-      host.camera.pitch = number() * M_PI / 180;
-      host.camera.distance = number();
-      const double x = number(), z = number();
-      if (std::isfinite(x) && std::isfinite(z)) host.camera.target = {x, 0, z};
-    } else fail("unknown camera command");
+    host.real_clock = word(in) == "real";
   } else if (cmd == "frames") {
-    wait_frames_ = std::max(1, static_cast<int>(number()));
+    wait_frames_ = std::max(1, static_cast<int>(number(in)));
   } else if (cmd == "wait-prediction") {
     return lab.shot || lab.prediction().has_value();
   } else if (cmd == "wait-rest") {
-    return !lab.shot || (lab.shot->finished() && lab.view_time >= lab.shot->sim().time());
+    return !lab.shot || lab.shot_over();
   } else if (cmd == "screenshot") {
-    in >> arg;
-    if (!host.screenshot(arg)) fail("cannot write " + arg);
+    const std::string path = word(in);
+    if (!host.screenshot(path)) fail(line, "cannot write " + path);
   } else if (cmd == "dump") {
-    in >> arg;
-    dump(host, arg);
+    const std::string path = word(in);
+    nlohmann::json j = state_json(lab, host.screen ? *host.screen : ScreenInfo{});
+    j["script_frame"] = frame_;
+    write_file_atomic(path, j.dump(2) + "\n");
   } else if (cmd == "save") {
-    in >> arg;
-    save_scene(arg, lab.scene);
+    save_scene(word(in), lab.scene);
   } else if (cmd == "export") {
-    in >> arg;
-    if (lab.shot) export_trajectory(lab, arg);
-    else fail("no shot to export");
+    if (lab.shot) export_trajectory(lab, word(in));
+    else fail(line, "no shot to export");
   } else if (cmd == "quit") {
     next_ = lines_.size();
   } else {
-    fail("unknown command");
+    fail(line, "unknown command");
   }
   return true;
-}
-
-// The program's own state as JSON, for the GUI test's assertions.
-void Script::dump(const ScriptHost& host, const std::string& path) const {
-  const Lab& lab = host.lab;
-  const Frame& f = lab.frame();
-  nlohmann::json balls = nlohmann::json::array();
-  const Trails trails = lab.trails(lab.view_time);
-  for (int i = 0; i < f.state.ball_count(); ++i) {
-    const Vec3 p = position(f.state.x, i);
-    balls.push_back({{"id", lab.scene.balls[i].spec.id},
-                     {"position", {p.x, p.y, p.z}},
-                     {"speed", glm::length(velocity(f.state.x, i))},
-                     {"in_play", f.state.in_play[i] != 0},
-                     {"trail_points", i < static_cast<int>(trails.size()) ? trails[i].size() : 0}});
-  }
-  const auto prediction = lab.prediction();
-  size_t moving_paths = 0;
-  if (prediction)
-    for (const auto& p : prediction->paths) moving_paths += p.size() > 1 && glm::length(p.back().position - p.front().position) > 1e-3;
-  nlohmann::json j{{"frame", frame_},
-                   {"scene", lab.scene.name},
-                   {"view_time", lab.view_time},
-                   {"playing", lab.playing},
-                   {"has_shot", lab.shot != nullptr},
-                   {"sim_time", lab.shot ? lab.shot->sim().time() : 0.0},
-                   {"status", lab.shot ? status_name(lab.shot->sim().status()) : "none"},
-                   {"finished", lab.shot && lab.shot->finished()},
-                   {"history", lab.history.size()},
-                   {"ghost_balls", lab.ghost.size()},
-                   {"prediction_ready", prediction.has_value()},
-                   {"predicted_moving_balls", moving_paths},
-                   {"error", lab.error},
-                   {"fps", host.fps},
-                   {"achieved_speed", lab.achieved_speed},
-                   {"balls", balls}};
-  if (lab.scene.cue) j["cue"] = {{"ball", lab.scene.cue->ball}, {"aim_deg", lab.scene.cue->aim * 180 / M_PI}, {"speed", lab.scene.cue->speed}};
-  std::ofstream(path) << j.dump(2) << '\n';
 }
 
 }  // namespace shotlab

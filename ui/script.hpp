@@ -2,11 +2,13 @@
 // script runs once per frame after the frame is drawn, so `screenshot` captures what the previous commands led to.
 #pragma once
 #include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "ui/camera.hpp"
 #include "ui/lab.hpp"
+#include "ui/state_dump.hpp"
 
 namespace shotlab {
 
@@ -14,13 +16,15 @@ struct ScriptHost {
   Lab& lab;
   Camera& camera;
   std::function<bool(const std::string&)> screenshot;  // writes the frame just drawn as PNG
+  const ScreenInfo* screen = nullptr;  // the frame just drawn: where things are, for `dump`
   double fps = 0;              // frames per second over the last second of wall time
   bool real_clock = false;     // false: each frame advances the clock by exactly 1/60 s of real time
 };
 
 class Script {
  public:
-  explicit Script(const std::string& path);  // throws std::runtime_error when the file cannot be read
+  // Throws std::runtime_error when the file cannot be read; `preset NAME` reads data_root/presets/NAME.json.
+  Script(const std::string& path, std::string data_root);
 
   // Runs commands until one asks to let frames pass (frames, wait-*) or the script ends.
   void run(ScriptHost& host);
@@ -29,7 +33,12 @@ class Script {
 
  private:
   bool execute(ScriptHost& host, const std::string& line);  // false: wait (come back next frame)
-  void dump(const ScriptHost& host, const std::string& path) const;
+  bool edit(ScriptHost& host, const std::string& cmd, std::istringstream& in);  // table edits; false: not one
+  bool view(ScriptHost& host, const std::string& cmd, std::istringstream& in);  // view and camera; false: not one
+  void fail(const std::string& line, const std::string& why);
+
+  std::string data_root_;
+  std::string line_;  // being executed
 
   std::vector<std::string> lines_;
   size_t next_ = 0;

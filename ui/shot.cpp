@@ -8,59 +8,48 @@ namespace shotlab {
 namespace {
 constexpr double kFrameStep = 1.0 / 240;  // s of simulated time between recorded frames at normal speed
 constexpr double kMinFrameGap = 2e-5;      // s: in deep slow motion, frames closer than this are not recorded
-constexpr size_t kMaxSamples = 20000;      // step-size samples kept (a break takes ~10k steps)
+constexpr size_t kMaxSamples = 20000;      // step-size samples kept (a break takes ~5k steps)
+
+std::unique_ptr<Simulation> simulation_of(const Scene& scene) {
+  Prepared p = prepare(scene);
+  return std::make_unique<Simulation>(std::move(p.model), std::move(p.state));
+}
+
+// Turns each ball by its mean angular velocity over dt (exact for the linear spin decay on the cloth).
+void turn(std::vector<glm::dquat>& q, const State& from, const State& to, double dt) {
+  for (int i = 0; i < to.ball_count(); ++i) {
+    const Vec3 w = 0.5 * (spin(to.x, i) + spin(from.x, i));
+    const double angle = glm::length(w) * dt;
+    if (angle > 0) q[i] = glm::normalize(glm::angleAxis(angle, glm::normalize(w)) * q[i]);
+  }
+}
 }  // namespace
 
-Shot::Shot(const Scene& start) : start_(start), chunk_(kFrameStep) {
+Shot::Shot(const Scene& start, double safety_limit) : start_(start), limit_(safety_limit), chunk_(kFrameStep) {
   validate(start_);
-  Prepared p = prepare(start_);
-  sim_ = std::make_unique<Simulation>(std::move(p.model), std::move(p.state));
-  sim_->set_observer([this](const Island& island) { observe(island); });
+  sim_ = simulation_of(start_);
+  sim_->set_observer([this](const Island& island) {
+    const StepSpan& span = island.span();
+    if (step_sizes_.size() < kMaxSamples) step_sizes_.push_back({span.t1, span.t1 - span.t0});
+  });
   record();
 }
 
-void Shot::observe(const Island& island) {
-  const StepSpan& span = island.span();
-  if (step_sizes_.size() < kMaxSamples) step_sizes_.push_back({span.t1, span.t1 - span.t0});
-  // Largest ball-ball normal force at the end of the step; a gap of 5 ms without one starts a new collision.
-  // Most steps have no touching pair: a distance check keeps the full contact evaluation off them.
-  const auto& in_play = island.state().in_play;
-  const auto& balls = island.model().balls;
-  bool touching = false;
-  for (size_t i = 0; i < balls.size() && !touching; ++i)
-    for (size_t j = i + 1; j < balls.size() && !touching; ++j)
-      touching = in_play[i] && in_play[j] &&
-                 glm::length(position(span.x1, i) - position(span.x1, j)) < balls[i].radius + balls[j].radius;
-  if (!touching) return;
-  const State probe{span.t1, span.x1, in_play, {}, {}, {}, {}};
-  double force = 0;
-  for (const Contact& c : contacts(island.model(), probe))
-    if (c.other_ball >= 0) force = std::max(force, c.force.normal);
-  if (force <= 0) return;
-  if (span.t1 - last_contact_time_ > 5e-3) collision_force_.clear();
-  last_contact_time_ = span.t1;
-  if (collision_force_.size() < kMaxSamples) collision_force_.push_back({span.t1, force});
+Frame Shot::frame_from(const Simulation& sim, double t) const {
+  const State& s = sim.state();
+  Frame f{t, s, {}, {}, sim.energy()};
+  for (int i = 0; i < s.ball_count(); ++i) f.motion.push_back(sim.motion(i));
+  return f;
 }
 
 void Shot::record() {
-  const State& s = sim_->state();
-  Frame f{s.time, s, {}, {}, 0};
-  const int n = s.ball_count();
+  Frame f = frame_from(*sim_, sim_->time());
   if (frames_.empty()) {
-    f.orientation.assign(n, glm::dquat(1, 0, 0, 0));
+    f.orientation.assign(f.state.ball_count(), glm::dquat(1, 0, 0, 0));
   } else {
-    // Turn by the mean angular velocity over the frame (exact for the linear spin decay on the cloth).
-    const Frame& prev = frames_.back();
-    const double dt = s.time - prev.time;
-    f.orientation = prev.orientation;
-    for (int i = 0; i < n; ++i) {
-      const Vec3 w = 0.5 * (spin(s.x, i) + spin(prev.state.x, i));
-      const double angle = glm::length(w) * dt;
-      if (angle > 0) f.orientation[i] = glm::normalize(glm::angleAxis(angle, glm::normalize(w)) * prev.orientation[i]);
-    }
+    f.orientation = frames_.back().orientation;
+    turn(f.orientation, frames_.back().state, f.state, f.time - frames_.back().time);
   }
-  for (int i = 0; i < n; ++i) f.motion.push_back(sim_->motion(i));
-  f.energy = sim_->energy().total();
   frames_.push_back(std::move(f));
 }
 
@@ -68,6 +57,7 @@ double Shot::advance(double target, double budget) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   const Stats before = sim_->stats();
+  target = std::min(target, limit_);
   while (sim_->time() < target && !finished()) {
     // One advance() cannot be interrupted, so when the integrator crawls (thousands of tiny steps in a pile-up)
     // the chunks shrink to keep each frame within its budget; they grow back once steps are cheap again.
@@ -82,13 +72,16 @@ double Shot::advance(double target, double budget) {
   }
   last_steps_ = sim_->stats().steps - before.steps;
   last_rhs_ = sim_->stats().rhs_evaluations - before.rhs_evaluations;
+  last_wall_ = std::chrono::duration<double>(clock::now() - start).count();
   return sim_->time();
 }
 
-bool Shot::finished() const {
-  return sim_->status() != Status::Ok || sim_->time() >= start_.duration || (sim_->time() > 0 && sim_->at_rest());
+ShotEnd Shot::end() const {
+  if (sim_->status() != Status::Ok) return ShotEnd::EngineStop;
+  if (sim_->time() > 0 && sim_->at_rest()) return ShotEnd::Rest;
+  if (sim_->time() >= limit_) return ShotEnd::SafetyLimit;
+  return ShotEnd::Running;
 }
-
 
 double Shot::realtime_factor() const {
   const double wall = sim_->stats().wall_seconds;
@@ -109,6 +102,15 @@ Frame Shot::frame_at(double t) const {
     out.orientation[i] = glm::slerp(a.orientation[i], b.orientation[i], s);
   }
   return out;
+}
+
+Frame Shot::exact_frame(double t) {
+  t = std::clamp(t, 0.0, sim_->time());
+  if (!scrub_ || scrub_->time() > t) scrub_ = simulation_of(start_);  // the clock only runs forward: start again
+  if (t > scrub_->time()) scrub_->advance(t - scrub_->time());
+  Frame f = frame_from(*scrub_, t);
+  f.orientation = frame_at(t).orientation;
+  return f;
 }
 
 }  // namespace shotlab

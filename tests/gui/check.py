@@ -83,17 +83,21 @@ check(stepped["view_time"] > p2["view_time"] and not stepped["playing"], "single
 moved = math.dist(ball(rest, "cue")["position"], ball(aim, "cue")["position"])
 check(moved > 0.1, f"the cue ball moved ({moved:.3f} m)")
 check(math.dist(ball(rest, "1")["position"], ball(aim, "1")["position"]) > 0.1, "the object ball moved")
-check(rest["finished"] and rest["status"] == "ok", "the shot ran to rest without an engine stop")
+check(rest["shot_over"] and rest["shot"]["end"] == "rest" and rest["shot"]["status"] == "ok",
+      "the shot ran until every ball rested, without an engine stop")
+check(rest["shot"]["sim_time"] > 4.0, f"past the scene's 4 s duration ({rest['shot']['sim_time']:.2f} s)")
 check(all(b["trail_points"] > 10 for b in rest["balls"]), "trails exist for every ball")
 check(not undone["has_shot"] and undone["ghost_balls"] == 2, "undo left the shot, its trails kept as a ghost")
 check(math.dist(ball(undone, "cue")["position"], ball(aim, "cue")["position"]) < 1e-12
       and undone["cue"] == aim["cue"], "undo restored the exact pre-shot position and aim")
-check("bad_scene.json" in bad["error"] and "balls[0]" in bad["error"], "a bad scene file shows the loader's message")
+check(bad["message_kind"] == "load_error" and "bad_scene.json" in bad["message"] and "balls[0]" in bad["message"],
+      "a bad scene file shows the loader's message")
 check(bad["scene"] == aim["scene"], "a bad scene file loses nothing")
 unstable, recovered = load("unstable.json"), load("recovered.json")
-check("unstable" in unstable["error"] and not unstable["playing"], "a blown-up simulation stops with a message")
+check(unstable["message_kind"] == "engine_stop" and "unstable" in unstable["message"] and not unstable["playing"],
+      "a blown-up simulation stops with a message")
 # (x and z only: undo keeps the tuned physics, and the stiffer cloth changes how deep the ball sits)
-check(not recovered["has_shot"] and recovered["error"] == ""
+check(not recovered["has_shot"] and recovered["message_kind"] in ("none", "note")
       and ball(recovered, "cue")["position"][::2] == ball(aim, "cue")["position"][::2], "undo recovers from it")
 added, edited = load("added.json"), load("edited.json")
 check([b["id"] for b in added["balls"]] == ["cue", "1", "2"] and ball(added, "2")["position"][::2] == [0.0, 0.0],

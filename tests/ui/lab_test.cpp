@@ -1,0 +1,195 @@
+// The shot lab's actions without a window (the Lab the panels, mouse and keys call): shots run until the balls rest,
+// a paused frame shows a collision exactly, aiming never moves a ball, every edit undoes, and a break is one action.
+// Physics numbers come from ../shared/reference/VALIDATION.md and the presets' own descriptions.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/collision_probe.hpp"
+#include "tests/engine/support.hpp"
+#include "ui/aim.hpp"
+#include "ui/contact_log.hpp"
+#include "ui/lab.hpp"
+#include "ui/shot.hpp"
+
+namespace shotlab {
+namespace {
+
+using test::kR;
+
+void run_to_end(Shot& shot) {
+  while (!shot.finished()) shot.advance(shot.sim().time() + 1.0, 60.0);
+}
+
+struct LabTest : ::testing::Test {
+  Settings settings;
+  Lab lab{settings, SHOTLAB_SOURCE_DIR};
+  void load(const std::string& preset) { ASSERT_TRUE(lab.load(test::preset(preset))) << lab.message; }
+  Vec3 ball(const std::string& id) const { return lab.scene.balls[scene_ball(lab.scene, id)].position; }
+};
+
+// VALIDATION.md R3: a ball rolling at 1 m/s with mu_r = 0.01 stops after 10.194 s. The scene's duration (4 s, for
+// headless runs) does not cut the shot: it runs until the ball rests and says so.
+TEST(Shot, RunsUntilEveryBallRestsPastTheScenesDuration) {
+  auto doc = test::cloth_scene({{{"id", "cue"}, {"position", {0, kR, 0}}, {"velocity", {1, 0, 0}},
+                                 {"angular_velocity", {0, 0, -1 / kR}}}},
+                               {{"rolling_resistance", 0.01}, {"spin_friction", 0}});
+  doc["duration"] = 4.0;
+  Shot shot(test::scene(doc));
+  run_to_end(shot);
+  EXPECT_EQ(shot.end(), ShotEnd::Rest);
+  EXPECT_NEAR(shot.sim().time(), 10.194, 0.005 * 10.194 + 0.05);  // rest is seen within a few display frames
+  EXPECT_NEAR(position(shot.sim().state().x, 0).x, 5.097, 0.005 * 5.097);
+}
+
+// A Newton's cradle swings for minutes: the shot stops at the safety limit and says so instead of running forever.
+TEST(Shot, StopsAtTheSafetyLimitWhenBallsKeepMoving) {
+  Shot shot(load_scene(test::preset("cradle.json")), 3.0);
+  run_to_end(shot);
+  EXPECT_EQ(shot.end(), ShotEnd::SafetyLimit);
+  EXPECT_NEAR(shot.sim().time(), 3.0, 0.02);
+  shot.extend_limit(1.0);
+  EXPECT_FALSE(shot.finished());
+}
+
+// Frames are recorded 1/240 s apart and the cue ball's hit on the object ball lasts a fraction of a millisecond; a
+// paused view at a time inside the collision shows the balls in contact.
+TEST(Shot, APausedFrameInsideACollisionShowsTheContact) {
+  Scene s = load_scene(test::preset("cut.json"));
+  Shot shot(s);
+  run_to_end(shot);
+  double begin = -1;
+  for (const Event& e : shot.sim().events())
+    if (begin < 0 && e.kind == "contact_begin" && e.bodies == std::vector<std::string>{"cue", "1"}) begin = e.time;
+  ASSERT_GT(begin, 0);
+  const Frame exact = shot.exact_frame(begin + 1e-4);
+  EXPECT_NEAR(exact.time, begin + 1e-4, 1e-12);
+  double force = 0;
+  for (const Contact& c : contacts(shot.sim().model(), exact.state))
+    if (c.other_ball >= 0) force = std::max(force, c.force.normal);
+  EXPECT_GT(force, 100.0);  // N: a 2 m/s hit peaks near 1.7 kN
+  // The recorded frames either side show no contact.
+  const Frame before = shot.frame_at(begin - 1e-3);
+  for (const Contact& c : contacts(shot.sim().model(), before.state)) EXPECT_LT(c.other_ball, 0);
+}
+
+// The contact log traces the cut shot's ball-ball collision: a smooth force curve of a fraction of a millisecond
+// (pool balls touch for 0.2 to 0.4 ms at these speeds).
+TEST(Shot, ContactLogTracesTheCollisionForce) {
+  Scene s = load_scene(test::preset("cut.json"));
+  Shot shot(s);
+  run_to_end(shot);
+  const ContactLog log = trace_contacts(s, shot.sim().events(), shot.sim().time());
+  const ContactTrace* hit = nullptr;
+  for (const ContactTrace& c : log.contacts)
+    if (c.label() == "cue - 1") hit = &c;
+  ASSERT_NE(hit, nullptr);
+  EXPECT_GT(hit->end - hit->begin, 1e-4);
+  EXPECT_LT(hit->end - hit->begin, 1e-3);
+  EXPECT_GT(hit->time.size(), 20u);
+  EXPECT_GT(hit->peak_force(), 500.0);
+}
+
+// The elasticity control: the damping it finds gives the wanted restitution in the probe it was solved on.
+TEST(Elasticity, DampingForRestitutionHitsTheWantedValue) {
+  const Scene s = load_scene(test::preset("cradle.json"));
+  const ContactMaterial m = s.model.materials.at(kBallBall);
+  for (double e : {0.95, 0.8}) {
+    ContactMaterial tuned = m;
+    tuned.damping = damping_for_restitution(m, test::kM, kR, 2.0, true, e);
+    EXPECT_NEAR(probe_collision(tuned, test::kM, kR, 2.0, true).restitution, e, 0.002);
+  }
+}
+
+// The cut preset is "a 30 degree cut into the right front corner pocket" at aim -75 degrees: the pocket aims offer
+// that pocket at that cut and heading.
+TEST_F(LabTest, PocketAimsFindThePresetsCut) {
+  load("cut.json");
+  const auto aims = pocket_aims(lab.scene, lab.table_model.pockets, 0, 1);
+  ASSERT_FALSE(aims.empty());
+  bool found = false;
+  for (const PocketAim& a : aims)
+    found |= std::abs(a.cut_deg - 30) < 1.0 && std::abs(a.aim * 180 / M_PI + 75) < 0.5;
+  EXPECT_TRUE(found);
+  const auto line = aim_line(lab.scene);
+  ASSERT_TRUE(line);
+  EXPECT_EQ(line->hit, 1);
+  EXPECT_NEAR(line->cut_deg, 30.0, 0.5);
+}
+
+// Issue 28, item 6: a click on the object ball aims at it and moves nothing.
+TEST_F(LabTest, AimingAtABallDoesNotMoveIt) {
+  load("cut.json");
+  const Vec3 before = ball("1");
+  lab.aim_at_ball(1);
+  EXPECT_EQ(ball("1"), before);
+  EXPECT_NEAR(aim_line(lab.scene)->cut_deg, 0.0, 1e-6);  // full ball
+  lab.undo();
+  EXPECT_NEAR(lab.scene.cue->aim * 180 / M_PI, -75.0, 1e-9);
+}
+
+TEST_F(LabTest, MovesAddsAndRemovalsUndo) {
+  load("cut.json");
+  const Vec3 start = ball("1");
+  ASSERT_TRUE(lab.begin_move(1));
+  EXPECT_TRUE(lab.move_ball(1, {0.2, 0, 0.1}));
+  EXPECT_TRUE(lab.move_ball(1, {0.3, 0, 0.1}));
+  lab.end_gesture();
+  lab.add_ball({-0.5, 0, 0.3});
+  EXPECT_EQ(lab.scene.balls.size(), 3u);
+  lab.remove_ball(1);
+  EXPECT_EQ(lab.scene.balls.size(), 2u);
+  lab.undo();
+  EXPECT_EQ(lab.scene.balls.size(), 3u);
+  lab.undo();
+  EXPECT_EQ(lab.scene.balls.size(), 2u);
+  EXPECT_NEAR(ball("1").x, 0.3, 1e-12);
+  lab.undo();  // the whole drag in one
+  EXPECT_EQ(ball("1"), start);
+  lab.redo();
+  EXPECT_NEAR(ball("1").x, 0.3, 1e-12);
+}
+
+TEST_F(LabTest, TheCueBallIsNotDeleted) {
+  load("cut.json");
+  lab.remove_ball(scene_ball(lab.scene, "cue"));
+  EXPECT_EQ(lab.scene.balls.size(), 2u);
+  EXPECT_TRUE(lab.scene.cue.has_value());
+  EXPECT_EQ(lab.message_kind, MessageKind::Refused);
+}
+
+// One undo stack for edits and shots: undo after a shot brings back the aim before it, with its trails as ghost.
+TEST_F(LabTest, ShotsAndEditsShareOneUndoStack) {
+  load("cut.json");
+  lab.nudge_aim(1.0);
+  lab.shoot();
+  ASSERT_TRUE(lab.shot);
+  lab.seek(1.0);
+  lab.undo();
+  EXPECT_FALSE(lab.shot);
+  EXPECT_FALSE(lab.ghost.empty());
+  EXPECT_NEAR(lab.scene.cue->aim * 180 / M_PI, -74.0, 1e-9);
+  lab.undo();
+  EXPECT_NEAR(lab.scene.cue->aim * 180 / M_PI, -75.0, 1e-9);
+}
+
+// A break in one action: rack, cue ball in hand behind the head string, a centre-ball cue strike at the apex.
+TEST_F(LabTest, SetUpBreakRacksAndGivesBallInHand) {
+  load("cut.json");
+  lab.setup_break();
+  EXPECT_EQ(lab.scene.balls.size(), 16u);
+  ASSERT_TRUE(lab.scene.cue);
+  EXPECT_TRUE(lab.in_hand);
+  EXPECT_TRUE(break_position(lab.scene));
+  const double head_string = -lab.scene.table->length / 4;
+  lab.place_cue_ball({0.5, 0, 0.2}, true);  // past the head string: held behind it
+  EXPECT_FALSE(lab.in_hand);
+  EXPECT_LE(ball("cue").x, head_string + 1e-12);
+  EXPECT_NEAR(ball("cue").z, 0.2, 1e-12);
+  lab.undo();
+  lab.undo();
+  EXPECT_EQ(lab.scene.balls.size(), 2u);  // back to the cut shot
+}
+
+}  // namespace
+}  // namespace shotlab

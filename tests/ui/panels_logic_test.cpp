@@ -1,0 +1,129 @@
+// The logic under the panels, without a window: the undo stack, the panel layout, plot ticks and time readouts, and
+// files written atomically.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "ui/files.hpp"
+#include "ui/history.hpp"
+#include "ui/layout.hpp"
+#include "ui/ticks.hpp"
+
+namespace shotlab {
+namespace {
+
+Scene named(const std::string& name) {
+  Scene s;
+  s.name = name;
+  return s;
+}
+
+TEST(History, UndoRedoWalkTheEditsInOrder) {
+  History h;
+  h.record("move 1", named("a"));
+  h.record("remove 2", named("b"));
+  EXPECT_EQ(h.undo_label(), "remove 2");
+  EXPECT_EQ(h.undo(named("c")).name, "b");
+  EXPECT_EQ(h.undo(named("b")).name, "a");
+  EXPECT_FALSE(h.can_undo());
+  EXPECT_EQ(h.redo(named("a")).name, "b");
+  EXPECT_EQ(h.redo(named("b")).name, "c");
+  EXPECT_FALSE(h.can_redo());
+}
+
+TEST(History, AGestureIsOneEntryAndANewEditClearsRedo) {
+  History h;
+  h.record("aim", named("before drag"), "aim");
+  h.record("aim", named("mid drag"), "aim");
+  h.record("aim", named("late drag"), "aim");
+  EXPECT_EQ(h.size(), 1u);
+  h.seal();
+  h.record("aim", named("second drag"), "aim");
+  EXPECT_EQ(h.size(), 2u);
+  h.undo(named("now"));
+  EXPECT_TRUE(h.can_redo());
+  h.record("move cue", named("x"));
+  EXPECT_FALSE(h.can_redo());
+  EXPECT_EQ(h.undo(named("y")).name, "x");
+  EXPECT_EQ(h.undo(named("x")).name, "before drag");
+}
+
+// Issue 28: at 1280x720, 1920x1080 and 1024x600 the panels stay at the window's edges and the 3D view keeps the
+// middle, never less than kMinViewShare of the width.
+TEST(Layout, PanelsStayAtTheEdgesAtEveryWindowSize) {
+  for (auto [w, h] : {std::pair{1280.f, 720.f}, {1920.f, 1080.f}, {1024.f, 600.f}, {1600.f, 900.f}, {640.f, 480.f}}) {
+    const Layout l = layout_panels(w, h, {true, 330, 20}, {true, 360, 20});
+    SCOPED_TRACE(w);
+    EXPECT_EQ(l.left.x, 0);
+    EXPECT_FLOAT_EQ(l.right.right(), w);
+    EXPECT_FLOAT_EQ(l.view.x, l.left.right());
+    EXPECT_FLOAT_EQ(l.view.right(), l.right.x);
+    EXPECT_GE(l.view.w, kMinViewShare * w - 0.5f);
+    EXPECT_EQ(l.left.h, h);
+  }
+  const Layout wide = layout_panels(1920, 1080, {true, 330, 20}, {true, 360, 20});
+  EXPECT_EQ(wide.left.w, 330);  // room for both at their preferred widths
+  EXPECT_EQ(wide.right.w, 360);
+}
+
+TEST(Layout, ACollapsedPanelGivesItsWidthToTheView) {
+  const Layout l = layout_panels(1280, 720, {false, 330, 20}, {true, 360, 20});
+  EXPECT_EQ(l.view.x, 0);
+  EXPECT_EQ(l.left.h, 20);  // its title bar only
+  const Layout both = layout_panels(1280, 720, {false, 330, 20}, {false, 360, 20});
+  EXPECT_EQ(both.view.w, 1280);
+}
+
+TEST(Ticks, OneTwoFiveStepsInsideTheRange) {
+  const Ticks t = nice_ticks(0, 6.05, 8);
+  EXPECT_DOUBLE_EQ(t.step, 1);
+  ASSERT_EQ(t.values.size(), 7u);
+  EXPECT_DOUBLE_EQ(t.values.front(), 0);
+  EXPECT_DOUBLE_EQ(t.values.back(), 6);
+  const Ticks small = nice_ticks(-0.013, 0.021, 5);
+  EXPECT_NEAR(small.step, 0.01, 1e-15);
+  EXPECT_EQ(small.decimals, 2);
+  EXPECT_EQ(format_tick(small.values[0], small), "-0.01");
+  const Ticks big = nice_ticks(0, 1758, 5);
+  EXPECT_DOUBLE_EQ(big.step, 500);
+  for (double v : big.values) EXPECT_TRUE(v >= 0 && v <= 1758);
+  EXPECT_FALSE(nice_ticks(3, 3, 5).values.empty());  // a flat line still gets an axis
+}
+
+// A 0.35 ms collision needs microseconds: the readouts and plot axes switch unit with the span shown.
+TEST(Ticks, TimeUnitsResolveACollision) {
+  EXPECT_STREQ(time_unit(3.5e-4).name, "us");
+  EXPECT_STREQ(time_unit(0.05).name, "ms");
+  EXPECT_STREQ(time_unit(6.0).name, "s");
+  EXPECT_EQ(format_time(0.11105234, true), "0.111052 s");
+  EXPECT_EQ(format_time(0.11105234, false), "0.1111 s");
+}
+
+std::string read(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(Files, AtomicWriteReplacesWholeAndLeavesNoTemporaries) {
+  const auto dir = std::filesystem::temp_directory_path() / ("shotlab-files-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto file = dir / "scene.json";
+  write_file_atomic(file.string(), "first");
+  write_file_atomic(file.string(), "second, longer");
+  EXPECT_EQ(read(file), "second, longer");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);
+  EXPECT_THROW(write_file_atomic((dir / "missing" / "x.json").string(), "x"), std::runtime_error);
+  EXPECT_EQ(unique_path(dir.string(), "cut shot", "png"), (dir / "cut-shot-1.png").string());
+  write_file_atomic((dir / "cut-shot-1.png").string(), "");
+  EXPECT_EQ(unique_path(dir.string(), "cut shot", "png"), (dir / "cut-shot-2.png").string());
+  EXPECT_TRUE(inside(file.string(), dir.string()));
+  EXPECT_FALSE(inside(dir.string() + "/../x.json", dir.string()));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace shotlab

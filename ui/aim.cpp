@@ -1,0 +1,121 @@
+#include "ui/aim.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/rack.hpp"
+
+namespace shotlab {
+
+namespace {
+constexpr double kNoHitLength = 4.0;   // m: an aim line that meets no ball or cushion stops here
+constexpr double kMaxCutDeg = 85.0;    // thinner cuts are not offered as pocket aims
+constexpr double kBreakSpeed = 8.0;    // m/s of the cue: the ball leaves at about 10.6 m/s
+
+int cue_index(const Scene& s) {
+  if (!s.cue) return -1;
+  for (size_t i = 0; i < s.balls.size(); ++i)
+    if (s.balls[i].spec.id == s.cue->ball) return static_cast<int>(i);
+  return -1;
+}
+}  // namespace
+
+double heading(const Vec3& a, const Vec3& b) { return std::atan2(-(b.z - a.z), b.x - a.x); }
+
+std::optional<AimLine> aim_line(const Scene& scene) {
+  const int c = cue_index(scene);
+  if (c < 0) return std::nullopt;
+  AimLine out;
+  out.from = scene.balls[c].position;
+  const double r = scene.balls[c].spec.radius;
+  const Vec3 dir = aim_direction(scene.cue->aim);
+  double best = kNoHitLength;
+  for (int j = 0; j < static_cast<int>(scene.balls.size()); ++j) {
+    if (j == c) continue;
+    // Where the centre line comes within r_c + r_j of ball j: |p + s dir - q| = R.
+    const Vec3 w = out.from - scene.balls[j].position;
+    const double R = r + scene.balls[j].spec.radius;
+    const double b = glm::dot(w, dir), disc = b * b - (glm::dot(w, w) - R * R);
+    if (disc < 0) continue;
+    const double s = -b - std::sqrt(disc);
+    if (s > 0 && s < best) best = s, out.hit = j;
+  }
+  if (scene.table) {  // stop the line at the cushion noses
+    const double hx = scene.table->length / 2 - r, hz = scene.table->width / 2 - r;
+    double wall = kNoHitLength;
+    if (dir.x != 0) wall = std::min(wall, ((dir.x > 0 ? hx : -hx) - out.from.x) / dir.x);
+    if (dir.z != 0) wall = std::min(wall, ((dir.z > 0 ? hz : -hz) - out.from.z) / dir.z);
+    if (wall < best) best = wall, out.hit = -1;
+  }
+  out.ghost = out.from + dir * std::max(best, 0.0);
+  if (out.hit >= 0) {
+    const Vec3 q = scene.balls[out.hit].position;
+    out.object_dir = glm::normalize(Vec3{q.x - out.ghost.x, 0, q.z - out.ghost.z});
+    out.cut_deg = std::acos(std::clamp(glm::dot(out.object_dir, dir), -1.0, 1.0)) * 180 / M_PI;
+  }
+  return out;
+}
+
+std::vector<PocketAim> pocket_aims(const Scene& scene, const std::vector<Pocket>& pockets, int cue_ball, int object) {
+  std::vector<PocketAim> out;
+  const int n = static_cast<int>(scene.balls.size());
+  if (cue_ball < 0 || object < 0 || cue_ball >= n || object >= n || cue_ball == object) return out;
+  const Vec3 c = scene.balls[cue_ball].position, o = scene.balls[object].position;
+  const double reach = scene.balls[cue_ball].spec.radius + scene.balls[object].spec.radius;
+  for (const Pocket& p : pockets) {
+    const Vec3 to_pocket{p.center.x - o.x, 0, p.center.z - o.z};
+    if (glm::length(to_pocket) < 1e-6) continue;
+    const Vec3 ghost = o - glm::normalize(to_pocket) * reach;
+    const Vec3 travel{ghost.x - c.x, 0, ghost.z - c.z};
+    if (glm::length(travel) < 1e-6) continue;
+    const double cut = std::acos(std::clamp(glm::dot(glm::normalize(travel), glm::normalize(to_pocket)), -1.0, 1.0));
+    const double cut_deg = cut * 180 / M_PI;
+    if (cut_deg < kMaxCutDeg) out.push_back({p.name, heading(c, ghost), cut_deg});
+  }
+  std::sort(out.begin(), out.end(), [](const PocketAim& a, const PocketAim& b) { return a.cut_deg < b.cut_deg; });
+  return out;
+}
+
+Vec3 Zone::clamp(const Vec3& p) const { return {std::clamp(p.x, lo_x, hi_x), p.y, std::clamp(p.z, lo_z, hi_z)}; }
+
+Zone hand_zone(const TableSpec& t, double radius, bool behind_head_string) {
+  const double hx = t.length / 2 - radius, hz = t.width / 2 - radius;
+  return {-hx, behind_head_string ? -t.length / 4 : hx, -hz, hz};
+}
+
+bool break_position(const Scene& s) {
+  const int c = cue_index(s);
+  if (!s.table || s.table->kind != TableKind::Pool || c < 0 || s.balls.size() < 4) return false;
+  for (size_t i = 0; i < s.balls.size(); ++i)
+    if (static_cast<int>(i) != c && s.balls[i].position.x < s.table->length / 4 - 2 * s.balls[i].spec.radius) return false;
+  return true;
+}
+
+Scene break_scene(const Scene& from) {
+  Scene s = from;
+  const TableSpec t = from.table.value_or(pool_table());
+  s.table = t;
+  const int c = cue_index(from);
+  InitialBall cue = c >= 0 ? from.balls[c] : InitialBall{{"cue", kPoolBall.mass, kPoolBall.radius}};
+  const BallKind kind{"", cue.spec.mass, cue.spec.radius};
+  cue.position = {-t.length / 4, cue.spec.radius, 0.0};
+  cue.velocity = cue.angular_velocity = Vec3{0.0};
+  RackSpec rack;
+  rack.apex_x = t.length / 4;
+  s.balls = {cue};
+  for (InitialBall& b : triangle_rack(rack, kind)) s.balls.push_back(b);
+  CueStrike strike = from.cue.value_or(CueStrike{});
+  strike.ball = cue.spec.id;
+  strike.speed = kBreakSpeed;
+  strike.aim = 0;  // straight at the apex ball
+  strike.elevation = strike.side = strike.height = 0;
+  s.cue = strike;
+  s.name = "break";
+  s.description = "A 15-ball break. The cue ball is in hand behind the head string: B picks it up, a click puts it "
+                  "down. Aim at the apex ball and shoot; the rack's frozen contacts pass the impulse through the whole "
+                  "triangle in about a millisecond.";
+  s.allow_overlap = false;
+  return s;
+}
+
+}  // namespace shotlab

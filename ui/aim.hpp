@@ -1,0 +1,48 @@
+// Aiming geometry for players: where the cue ball's line first meets a ball (the ghost ball), the cut angle, the aim
+// that sends an object ball to a pocket, and where the cue ball may be placed with ball in hand (behind the head
+// string for a break). Pure functions of the scene: the overlay draws them, the lab's snap actions use them.
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "engine/scene.hpp"
+
+namespace shotlab {
+
+struct AimLine {
+  Vec3 from{0.0};      // cue ball centre
+  Vec3 ghost{0.0};     // cue ball centre where the line ends: touching the first ball hit, or at a cushion
+  int hit = -1;        // ball index of the first ball hit, -1: none
+  Vec3 object_dir{0.0};  // unit, the hit ball's line of departure (the line of centres at contact)
+  double cut_deg = 0;  // angle between the aim and the object ball's departure
+};
+// The aim line of the scene's cue strike (nullopt without one).
+std::optional<AimLine> aim_line(const Scene& scene);
+
+// The heading (rad, CueStrike::aim) from a to b in the table plane.
+double heading(const Vec3& a, const Vec3& b);
+
+// The cue heading that sends ball `object` straight at a pocket (ghost-ball aim; throw and squirt not counted), with
+// the cut angle it takes. Only pockets the object ball can reach with a cut under 85 degrees, easiest cut first.
+struct PocketAim {
+  std::string pocket;
+  double aim;      // rad
+  double cut_deg;
+};
+std::vector<PocketAim> pocket_aims(const Scene& scene, const std::vector<Pocket>& pockets, int cue_ball, int object);
+
+// Where the cue ball may go with ball in hand: the whole bed inside the cushions, or for a break the part behind the
+// head string (the quarter of a pool table's length nearest the head rail).
+struct Zone {
+  double lo_x, hi_x, lo_z, hi_z;  // m, ball centres
+  Vec3 clamp(const Vec3& p) const;
+};
+Zone hand_zone(const TableSpec& table, double radius, bool behind_head_string);
+// The scene is a racked break: a pool table, three or more object balls, all of them in the foot quarter.
+bool break_position(const Scene& scene);
+
+// A 15-ball rack at the foot spot, the cue ball on the head spot with a level, centre-ball cue strike at the apex.
+// Keeps the table, the materials and the cue ball's size; needs a pool table.
+Scene break_scene(const Scene& from);
+
+}  // namespace shotlab

@@ -1,0 +1,103 @@
+#include "ui/contact_log.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "engine/diagnostics.hpp"
+#include "engine/simulation.hpp"
+
+namespace shotlab {
+
+namespace {
+
+constexpr int kSamplesPerStep = 4;  // points on each step's dense output, besides its end
+
+std::vector<ContactTrace> spans_from(const std::vector<Event>& events, const Model& model) {
+  std::vector<ContactTrace> out;
+  std::map<std::pair<std::string, std::string>, size_t> open;
+  for (const Event& e : events) {
+    if (e.bodies.size() != 2 || e.bodies[1] == "bed") continue;
+    const auto key = std::make_pair(e.bodies[0], e.bodies[1]);
+    if (e.kind == "contact_begin") {
+      ContactTrace t;
+      t.a = e.bodies[0], t.b = e.bodies[1], t.begin = e.time;
+      t.ball_ball = model.ball_index(t.b) >= 0;
+      open[key] = out.size();
+      out.push_back(std::move(t));
+    } else if (e.kind == "contact_end") {
+      if (auto it = open.find(key); it != open.end()) out[it->second].end = e.time, open.erase(it);
+    }
+  }
+  return out;
+}
+
+// Index of a body named `name` among the island's balls (as a ball) or the model's colliders.
+bool matches(const Contact& c, const Model& m, int ball, const std::string& other) {
+  if (c.ball != ball) return false;
+  if (c.other_ball >= 0) return m.balls[c.other_ball].id == other;
+  return c.collider >= 0 && m.colliders[c.collider].name == other;
+}
+
+// Samples, at time t of the island's last step, every trace in `live` (indices into traces) whose ball is in it.
+void sample(const Island& island, double t, const std::vector<size_t>& live, std::vector<ContactTrace>& traces) {
+  const Model& m = island.model();
+  State probe{t, {}, island.state().in_play, {}, {}, {}, {}};
+  island.span().interpolate(t, probe.x);
+  const std::vector<Contact> list = contacts(m, probe);
+  for (size_t k : live) {
+    ContactTrace& tr = traces[k];
+    const int ball = m.ball_index(tr.a);
+    for (const Contact& c : list)
+      if (matches(c, m, ball, tr.b)) {
+        tr.time.push_back(t), tr.force.push_back(c.force.normal), tr.depth.push_back(c.depth);
+        break;
+      }
+  }
+}
+
+// In time order without repeats (a step redone to end at an island's regroup is observed twice), and inside the
+// contact's located begin and end (a step straddles them).
+void tidy(ContactTrace& tr) {
+  std::vector<size_t> order(tr.time.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](size_t i, size_t j) { return tr.time[i] < tr.time[j]; });
+  std::vector<double> t, f, d;
+  for (size_t k : order) {
+    const double at = tr.time[k];
+    if (at < tr.begin || (tr.end >= 0 && at > tr.end) || (!t.empty() && at <= t.back())) continue;
+    t.push_back(at), f.push_back(tr.force[k]), d.push_back(tr.depth[k]);
+  }
+  tr.time = std::move(t), tr.force = std::move(f), tr.depth = std::move(d);
+}
+
+}  // namespace
+
+double ContactTrace::peak_force() const { return force.empty() ? 0 : *std::max_element(force.begin(), force.end()); }
+double ContactTrace::max_depth() const { return depth.empty() ? 0 : *std::max_element(depth.begin(), depth.end()); }
+
+ContactLog trace_contacts(const Scene& start, const std::vector<Event>& events, double until) {
+  ContactLog log;
+  log.until = until;
+  log.events = events.size();
+  Prepared p = prepare(start);
+  log.contacts = spans_from(events, p.model);
+  if (log.contacts.empty()) return log;
+  Simulation sim(std::move(p.model), std::move(p.state));
+  std::vector<size_t> live;
+  sim.set_observer([&](const Island& island) {
+    const StepSpan& s = island.span();
+    live.clear();
+    for (size_t k = 0; k < log.contacts.size(); ++k) {
+      const ContactTrace& tr = log.contacts[k];
+      if (tr.begin > s.t1 || (tr.end >= 0 && tr.end < s.t0)) continue;
+      if (island.model().ball_index(tr.a) >= 0) live.push_back(k);
+    }
+    if (live.empty()) return;
+    for (int j = 1; j <= kSamplesPerStep; ++j) sample(island, s.t0 + (s.t1 - s.t0) * j / kSamplesPerStep, live, log.contacts);
+  });
+  while (sim.time() < until && sim.status() == Status::Ok) sim.advance(std::min(1.0, until - sim.time()));
+  for (ContactTrace& tr : log.contacts) tidy(tr);
+  return log;
+}
+
+}  // namespace shotlab

@@ -1,0 +1,36 @@
+// Every contact of a shot other than a ball resting on the bed, with its normal force and depth over time: for the
+// collision plot (teachers) and the per-contact inspector (developers). The events name each contact and its
+// begin and end; the force history comes from simulating the shot again and evaluating the contact on every step's
+// dense output while it lasts, so even a 0.2 ms collision is drawn as a smooth curve of a hundred points, at the
+// cost of one more run of the shot (on a worker thread).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "engine/events.hpp"
+#include "engine/scene.hpp"
+
+namespace shotlab {
+
+struct ContactTrace {
+  std::string a, b;              // ball id; ball id or collider name ("cushion-top-left", "jaw-...")
+  bool ball_ball = false;
+  double begin = 0, end = -1;    // s; end < 0: still touching where the log ends
+  std::vector<double> time;      // s
+  std::vector<double> force;     // N, normal
+  std::vector<double> depth;     // m, penetration
+  std::string label() const { return a + " - " + b; }
+  double peak_force() const;
+  double max_depth() const;
+};
+
+struct ContactLog {
+  double until = 0;      // s: the traces cover the shot up to here
+  size_t events = 0;     // how many of the shot's events it was built from
+  std::vector<ContactTrace> contacts;  // in order of their begin
+};
+
+// The contacts named by `events` (a shot of `start`), traced up to `until` s.
+ContactLog trace_contacts(const Scene& start, const std::vector<Event>& events, double until);
+
+}  // namespace shotlab

@@ -1,0 +1,228 @@
+// Aiming and editing the table: every change records an undo entry (one per gesture), and none is made while a shot
+// is shown (the note says what to do instead).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "ui/aim.hpp"
+#include "ui/lab.hpp"
+
+namespace shotlab {
+
+namespace {
+constexpr double kMaxCueSpeed = 15.0;  // m/s
+constexpr double kMinCueSpeed = 0.05;  // m/s
+
+std::string deg(double rad) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", rad * 180 / M_PI);
+  return text;
+}
+}  // namespace
+
+bool Lab::editable(const char* what) {
+  if (!shot) return true;
+  say(MessageKind::Refused, std::string("A shot is shown, so ") + what +
+                                " would change nothing: U (Undo) retries from the position before it, N (Next) plays "
+                                "on from where the balls stopped.");
+  return false;
+}
+
+void Lab::set_cue(const CueStrike& cue, const std::string& what) {
+  if (!scene.cue || !editable("aiming")) return;
+  history.record(what, scene, "cue:" + what);
+  scene.cue = cue;
+  scene_changed();
+}
+
+void Lab::aim_at(const Vec3& point) {
+  if (!scene.cue) return;
+  const int c = scene_ball(scene, scene.cue->ball);
+  if (c < 0) return;
+  const Vec3 from = scene.balls[c].position;
+  if (std::hypot(point.x - from.x, point.z - from.z) < 1e-4) return;
+  CueStrike cue = *scene.cue;
+  cue.aim = heading(from, point);
+  set_cue(cue, "aim");
+}
+
+void Lab::aim_at_ball(int i) {
+  if (i < 0 || i >= static_cast<int>(scene.balls.size())) return;
+  aim_at(scene.balls[i].position);
+}
+
+void Lab::aim_for_pocket(int step) {
+  const auto line = aim_line(scene);
+  if (!line || line->hit < 0) return say(MessageKind::Refused, "aim at an object ball first: its pockets are offered");
+  const auto aims = pocket_aims(scene, table_model.pockets, scene_ball(scene, scene.cue->ball), line->hit);
+  if (aims.empty()) return say(MessageKind::Refused, "no pocket can be reached from here with a cut under 85 degrees");
+  // The pocket after the one aimed at now (the closest heading), in order of the cut they take.
+  size_t now = 0;
+  for (size_t k = 1; k < aims.size(); ++k)
+    if (std::abs(std::remainder(aims[k].aim - scene.cue->aim, 2 * M_PI)) <
+        std::abs(std::remainder(aims[now].aim - scene.cue->aim, 2 * M_PI)))
+      now = k;
+  const bool on_one = std::abs(std::remainder(aims[now].aim - scene.cue->aim, 2 * M_PI)) < 1e-9;
+  const size_t next = on_one ? (now + aims.size() + step) % aims.size() : now;
+  CueStrike cue = *scene.cue;
+  cue.aim = aims[next].aim;
+  set_cue(cue, "aim");
+  say(MessageKind::Note, "aimed " + scene.balls[line->hit].spec.id + " at " + aims[next].pocket + " (cut " +
+                             deg(aims[next].cut_deg * M_PI / 180) + " deg)");
+}
+
+void Lab::nudge_aim(double degrees) {
+  if (!scene.cue) return;
+  CueStrike cue = *scene.cue;
+  cue.aim = std::remainder(cue.aim + degrees * M_PI / 180, 2 * M_PI);
+  set_cue(cue, "aim");
+}
+
+void Lab::nudge_speed(double mps) {
+  if (!scene.cue) return;
+  CueStrike cue = *scene.cue;
+  cue.speed = std::clamp(std::round((cue.speed + mps) * 100) / 100, kMinCueSpeed, kMaxCueSpeed);
+  set_cue(cue, "speed");
+}
+
+bool Lab::fits(int i, const Vec3& p) const {
+  if (scene.allow_overlap) return true;
+  for (int j = 0; j < static_cast<int>(scene.balls.size()); ++j)
+    if (j != i && glm::length(scene.balls[j].position - p) < scene.balls[j].spec.radius + scene.balls[i].spec.radius)
+      return false;
+  return true;
+}
+
+bool Lab::begin_move(int i) {
+  if (i < 0 || i >= static_cast<int>(scene.balls.size()) || !editable("moving a ball")) return false;
+  history.seal();
+  history.record("move " + scene.balls[i].spec.id, scene, "move");
+  selected = i;
+  return true;
+}
+
+bool Lab::move_ball(int i, const Vec3& to) {
+  if (shot || i < 0 || i >= static_cast<int>(scene.balls.size())) return false;
+  const Vec3 p{to.x, scene.balls[i].position.y, to.z};
+  if (!fits(i, p)) return false;
+  history.record("move " + scene.balls[i].spec.id, scene, "move");  // merged into the gesture's entry
+  scene.balls[i].position = p;
+  scene_changed();
+  return true;
+}
+
+void Lab::add_ball(const Vec3& at) {
+  if (!editable("adding a ball")) return;
+  InitialBall b;
+  b.spec = scene.balls.empty() ? BallSpec{"", kPoolBall.mass, kPoolBall.radius} : scene.balls.back().spec;
+  for (int n = 1;; ++n)  // the smallest free number
+    if (scene_ball(scene, std::to_string(n)) < 0) {
+      b.spec.id = std::to_string(n);
+      break;
+    }
+  b.position = {at.x, b.spec.radius, at.z};
+  scene.balls.push_back(b);
+  const bool room = fits(static_cast<int>(scene.balls.size()) - 1, b.position);
+  scene.balls.pop_back();
+  if (!room) return say(MessageKind::Refused, "no room for a ball there");
+  history.seal();
+  history.record("add " + b.spec.id, scene);
+  scene.balls.push_back(b);
+  selected = static_cast<int>(scene.balls.size()) - 1;
+  scene_changed();
+}
+
+void Lab::remove_ball(int i) {
+  if (i < 0 || i >= static_cast<int>(scene.balls.size()) || !editable("removing a ball")) return;
+  if (!scene.model.rods.empty()) return say(MessageKind::Refused, "this scene's rods hold its balls: they cannot be removed");
+  if (scene.cue && scene.cue->ball == scene.balls[i].spec.id)
+    return say(MessageKind::Refused, "the cue ball is not removed: untick 'cue strike' first, or select another ball");
+  history.seal();
+  history.record("remove " + scene.balls[i].spec.id, scene);
+  scene.balls.erase(scene.balls.begin() + i);
+  scene_changed();
+}
+
+void Lab::pick_up_cue_ball() {
+  if (!scene.cue || scene_ball(scene, scene.cue->ball) < 0)
+    return say(MessageKind::Refused, "this scene has no cue ball to take in hand");
+  if (!scene.table) return say(MessageKind::Refused, "ball in hand needs a table");
+  if (!editable("ball in hand")) return;
+  history.seal();
+  history.record("ball in hand", scene);
+  in_hand = true;
+  say(MessageKind::Note, break_position(scene) ? "ball in hand behind the head string: click to put it down"
+                                               : "ball in hand: click to put it down, Esc puts it back");
+}
+
+void Lab::place_cue_ball(const Vec3& at, bool drop) {
+  if (!in_hand || !scene.cue || !scene.table) return;
+  const int c = scene_ball(scene, scene.cue->ball);
+  if (c < 0) return;
+  const Zone zone = hand_zone(*scene.table, scene.balls[c].spec.radius, break_position(scene));
+  const Vec3 p = zone.clamp({at.x, scene.balls[c].position.y, at.z});
+  if (fits(c, p) && glm::length(p - scene.balls[c].position) > 0) {
+    scene.balls[c].position = p;
+    scene_changed();
+  }
+  if (drop) {
+    in_hand = false;
+    history.seal();
+    say(MessageKind::None, "");
+  }
+}
+
+void Lab::setup_break() {
+  if (scene.table && scene.table->kind != TableKind::Pool)
+    return say(MessageKind::Refused, "a break needs a pool table (this scene's table has no pockets to rack for)");
+  if (shot) {  // a new position: the shot shown goes (its trails stay as the ghost)
+    ghost = trails(shot->sim().time());
+    shot.reset();
+    playing = false;
+    view_time = 0;
+  }
+  history.seal();
+  history.record("set up break", scene);
+  Scene s = break_scene(scene);
+  s.model = scene.model;
+  scene = std::move(s);
+  selected = 0;
+  target.reset();
+  scene_changed();
+  pick_up_cue_ball();
+  history.seal();
+}
+
+std::optional<double> Lab::target_miss() const {
+  if (!target || !scene.cue) return std::nullopt;
+  const int c = scene_ball(scene, scene.cue->ball);
+  if (c < 0) return std::nullopt;
+  if (shot) {
+    if (!shot->finished() || !shot->sim().state().in_play[c]) return std::nullopt;
+    const Vec3 p = position(shot->sim().state().x, c);
+    return std::hypot(p.x - target->x, p.z - target->z);
+  }
+  const auto p = prediction();
+  if (!p || c >= static_cast<int>(p->paths.size()) || p->paths[c].empty()) return std::nullopt;
+  const Vec3 end = p->paths[c].back().position;
+  return std::hypot(end.x - target->x, end.z - target->z);
+}
+
+void Lab::keep_shot() {
+  if (!shot) return say(MessageKind::Refused, "shoot first: a kept shot is one that has been played");
+  if (kept.size() >= kMaxKeptShots) kept.erase(kept.begin());
+  KeptShot k;
+  k.trails = trails(shot->sim().time());
+  k.colour = kept.empty() ? 0 : kept.back().colour + 1;
+  if (const auto& c = shot->start().cue) {
+    char text[128];
+    std::snprintf(text, sizeof text, "%.2f m/s, aim %.2f deg, tip %+.2f/%+.2f R", c->speed, c->aim * 180 / M_PI,
+                  c->side, c->height);
+    k.label = text;
+  } else {
+    k.label = "shot " + std::to_string(k.colour + 1);
+  }
+  kept.push_back(std::move(k));
+}
+
+}  // namespace shotlab

@@ -1,0 +1,30 @@
+// Where the side panels and the 3D view go in a window of a given size. The panels stay attached to the window's
+// left and right edges at every size; the 3D view gets the space between them and never less than a set share of
+// the width (the panels narrow first). A collapsed panel is only its title bar, and the view runs under it.
+#pragma once
+
+namespace shotlab {
+
+struct Rect {
+  float x = 0, y = 0, w = 0, h = 0;  // pixels, origin top-left
+  float right() const { return x + w; }
+  float bottom() const { return y + h; }
+  bool contains(float px, float py) const { return px >= x && px < x + w && py >= y && py < y + h; }
+};
+
+struct PanelRequest {
+  bool open = true;     // false: collapsed to its title bar
+  float width = 320;    // preferred width, pixels (already scaled)
+  float bar = 20;       // title bar height, pixels
+};
+
+struct Layout {
+  Rect left, right, view;
+};
+
+inline constexpr float kMinViewShare = 0.45f;  // of the window width, kept for the 3D view
+inline constexpr float kMinPanelWidth = 200;   // pixels: narrower, a panel's sliders are unusable
+
+Layout layout_panels(float window_w, float window_h, const PanelRequest& left, const PanelRequest& right);
+
+}  // namespace shotlab

@@ -1,0 +1,201 @@
+// Scenes and files: the presets (with what each shows), recent files, a file browser, Save and Save as (a shipped
+// preset is never overwritten: Save offers Save as), the trajectory export, and the export naming shared by the
+// plots and pictures.
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "engine/io/result_json.hpp"
+#include "engine/io/scene_json.hpp"
+#include "ui/files.hpp"
+#include "ui/panels.hpp"
+#include "ui/widgets.hpp"
+
+namespace shotlab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct PresetEntry {
+  std::string path, name, description;
+};
+
+// The presets folder, read once: each preset's name and its "what to look for" text.
+const std::vector<PresetEntry>& presets(const std::string& data_root) {
+  static const std::vector<PresetEntry> list = [&] {
+    std::vector<PresetEntry> out;
+    for (const DirEntry& e : list_scene_dir(data_root + "/presets")) {
+      if (e.folder) continue;
+      PresetEntry p{data_root + "/presets/" + e.name, fs::path(e.name).stem().string(), ""};
+      try {
+        const Scene s = load_scene(p.path);
+        p.name = s.name.empty() ? p.name : s.name;
+        p.description = s.description;
+      } catch (const std::exception& err) {
+        p.description = err.what();
+      }
+      out.push_back(p);
+    }
+    return out;
+  }();
+  return list;
+}
+
+// A folder listing with .json files: click a folder to enter it, a file to open it.
+void browser_popup(Lab& lab) {
+  static std::string dir = fs::current_path().string();
+  ImGui::SetNextWindowSize(ImVec2(em(460), em(380)), ImGuiCond_Appearing);
+  if (!ImGui::BeginPopupModal("Open scene file", nullptr)) return;
+  ImGui::TextWrapped("%s", dir.c_str());
+  if (ImGui::Button("Up")) dir = fs::path(dir).parent_path().string();
+  ImGui::SameLine();
+  if (ImGui::Button("Presets")) dir = lab.data_root + "/presets";
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+  ImGui::BeginChild("entries", ImVec2(0, 0), true);
+  for (const DirEntry& e : list_scene_dir(dir)) {
+    const std::string label = e.folder ? "[" + e.name + "]" : e.name;
+    if (ImGui::Selectable(label.c_str())) {
+      const std::string path = (fs::path(dir) / e.name).string();
+      if (e.folder) dir = path;
+      else if (lab.load(path), true) ImGui::CloseCurrentPopup();
+    }
+  }
+  ImGui::EndChild();
+  ImGui::EndPopup();
+}
+
+void save_to(Lab& lab, const std::string& path) {
+  try {
+    save_scene(path, lab.scene);
+    lab.scene_path = path;
+    remember_file(lab.settings, path);
+    lab.say(MessageKind::Note, "saved " + path);
+  } catch (const std::exception& e) {
+    lab.say(MessageKind::Refused, e.what());
+  }
+}
+
+// Save as: a path box, with a confirmation before replacing a file that exists.
+void save_as_popup(Lab& lab, std::string& path) {
+  if (!ImGui::BeginPopupModal("Save scene as", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::TextUnformatted("File (a .json scene):");
+  ImGui::SetNextItemWidth(em(420));
+  const bool enter = ImGui::InputText("##saveas", &path, ImGuiInputTextFlags_EnterReturnsTrue);
+  std::error_code ec;
+  const bool exists = !path.empty() && fs::exists(path, ec);
+  const bool preset = inside(path, lab.data_root + "/presets");
+  if (preset) ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "that is a shipped preset: choose another name");
+  else if (exists) ImGui::TextColored(ImVec4(1, 0.8f, 0.4f, 1), "a file of that name exists: Save replaces it");
+  ImGui::BeginDisabled(path.empty() || preset);
+  if (ImGui::Button(exists ? "Replace" : "Save") || (enter && !path.empty() && !preset)) {
+    save_to(lab, path);
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
+}
+
+void preset_combo(Lab& lab) {
+  const Fields f({"preset", "recent"});
+  f.label("preset");
+  std::string current = "choose...";
+  for (const PresetEntry& p : presets(lab.data_root))
+    if (lab.scene_path == p.path) current = p.name;
+  if (ImGui::BeginCombo("##preset", current.c_str(), ImGuiComboFlags_HeightLarge)) {
+    for (const PresetEntry& p : presets(lab.data_root)) {
+      if (ImGui::Selectable(p.name.c_str(), lab.scene_path == p.path)) lab.load(p.path);
+      if (ImGui::IsItemHovered() && !p.description.empty()) ImGui::SetTooltip("%s", p.description.c_str());
+    }
+    ImGui::EndCombo();
+  }
+  mark("preset combo");
+  f.label("recent");
+  if (ImGui::BeginCombo("##recent", lab.settings.recent.empty() ? "none yet" : "open again...")) {
+    const std::vector<std::string> recent = lab.settings.recent;  // load() reorders the list
+    for (const std::string& r : recent)
+      if (ImGui::Selectable(r.c_str())) lab.load(r);
+    ImGui::EndCombo();
+  }
+}
+
+}  // namespace
+
+void scene_section(Lab& lab) {
+  preset_combo(lab);
+  if (ImGui::Button("Open...")) ImGui::OpenPopup("Open scene file");
+  browser_popup(lab);
+  ImGui::SameLine();
+  static std::string save_path;
+  const bool shipped = lab.scene_path.empty() || inside(lab.scene_path, lab.data_root + "/presets");
+  if (ImGui::Button("Save")) {
+    if (shipped) {
+      save_path = (fs::current_path() / (fs::path(lab.scene_path).stem().string() + "-mine.json")).string();
+      ImGui::OpenPopup("Save scene as");
+    } else {
+      save_to(lab, lab.scene_path);
+    }
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(shipped ? "a shipped preset is not overwritten: choose a file" : "save to %s",
+                      lab.scene_path.c_str());
+  ImGui::SameLine();
+  if (ImGui::Button("Save as...")) {
+    save_path = lab.scene_path.empty() || shipped ? (fs::current_path() / "scene.json").string() : lab.scene_path;
+    ImGui::OpenPopup("Save scene as");
+  }
+  save_as_popup(lab, save_path);
+  same_line_if_fits("Set up break");
+  if (ImGui::Button("Set up break")) lab.setup_break();
+  mark("Set up break");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("rack 15 balls, cue ball in hand behind the head string, a cue strike");
+}
+
+std::string export_path(const Lab& lab, const std::string& what, const std::string& ext) {
+  const std::string dir = lab.settings.export_dir.empty() ? "." : lab.settings.export_dir;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  return unique_path(dir, (lab.scene.name.empty() ? "shotlab" : lab.scene.name) + "-" + what, ext);
+}
+
+std::optional<double> lab_plot(Lab& lab, const char* id, const PlotSpec& spec, const std::vector<PlotSeries>& series,
+                               float height) {
+  const PlotAction a = plot(id, spec, series, height);
+  try {
+    if (a.export_csv) {
+      const std::string path = export_path(lab, spec.title, "csv");
+      write_plot_csv(path, spec, series);
+      lab.say(MessageKind::Note, "wrote " + path);
+    }
+    if (a.export_png) {
+      lab.screenshot_request = export_path(lab, spec.title, "png");
+      lab.screenshot_crop = a.rect;
+    }
+  } catch (const std::exception& e) {
+    lab.say(MessageKind::Refused, e.what());
+  }
+  return a.picked;
+}
+
+void export_trajectory(const Lab& lab, const std::string& path) {
+  // Re-simulates the shot from its start, a row set every 1/240 s up to the time reached (the result does not
+  // depend on how time is sliced, so it is the shot that was watched).
+  std::ostringstream out;
+  write_trajectory_header(out);
+  Prepared p = prepare(lab.shot->start());
+  Simulation sim(std::move(p.model), std::move(p.state));
+  write_trajectory_rows(out, sim);
+  while (sim.time() < lab.shot->sim().time() - 1e-12 && sim.status() == Status::Ok) {
+    sim.advance(std::min(1.0 / 240, lab.shot->sim().time() - sim.time()));
+    write_trajectory_rows(out, sim);
+  }
+  write_file_atomic(path, out.str());
+}
+
+}  // namespace shotlab

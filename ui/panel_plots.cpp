@@ -1,0 +1,107 @@
+// The Teaching tab's plots, all over the shot's time with a cursor at the time on screen (click a plot to go to a
+// time): the selected ball's speed against the surface speed its spin gives (the ball rolls where they meet), the
+// energy by kind, and the normal force through a collision, its pair named.
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "ui/panels.hpp"
+#include "ui/widgets.hpp"
+
+namespace shotlab {
+
+namespace {
+
+constexpr ImU32 kBlue = IM_COL32(80, 170, 255, 255), kYellow = IM_COL32(255, 220, 80, 255);
+constexpr ImU32 kGreen = IM_COL32(120, 230, 120, 255), kPurple = IM_COL32(200, 140, 255, 255);
+constexpr ImU32 kWhite = IM_COL32(240, 240, 240, 255), kRed = IM_COL32(255, 110, 90, 255);
+
+void seek_to(Lab& lab, std::optional<double> t) {
+  if (t) lab.seek(std::clamp(*t, 0.0, lab.shot->sim().time()));
+}
+
+double shot_span(const Lab& lab) {
+  return lab.shot->finished() ? lab.shot->sim().time() : std::max(lab.shot->sim().time(), 1e-3);
+}
+
+void motion_plot(Lab& lab) {
+  const int i = lab.selected;
+  const double r = lab.scene.balls[i].spec.radius;
+  PlotSeries v{"speed v", kBlue, {}, {}}, w{"R x spin (surface)", kYellow, {}, {}};
+  for (const Frame& f : lab.shot->frames()) {
+    if (f.time > lab.view_time) break;
+    v.time.push_back(f.time), v.value.push_back(glm::length(velocity(f.state.x, i)));
+    w.time.push_back(f.time), w.value.push_back(r * glm::length(spin(f.state.x, i)));
+  }
+  PlotSpec spec{"ball " + lab.scene.balls[i].spec.id + ": speed and spin", "m/s", lab.view_time, 0, shot_span(lab)};
+  seek_to(lab, lab_plot(lab, "motion", spec, {v, w}, em(150)));
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("a ball rolls without slipping where the two lines meet");
+}
+
+void energy_plot(Lab& lab) {
+  const Energy start = lab.shot->frames().front().energy;
+  PlotSeries k{"kinetic", kBlue, {}, {}}, e{"in contacts", kGreen, {}, {}}, h{"height", kPurple, {}, {}},
+      t{"total", kWhite, {}, {}};
+  for (const Frame& f : lab.shot->frames()) {
+    if (f.time > lab.view_time) break;
+    for (PlotSeries* s : {&k, &e, &h, &t}) s->time.push_back(f.time);
+    k.value.push_back(f.energy.kinetic);
+    e.value.push_back(f.energy.elastic);
+    h.value.push_back(f.energy.potential - start.potential);
+    t.value.push_back(f.energy.total() - start.potential);
+  }
+  PlotSpec spec{"energy (height counted from the start)", "J", lab.view_time, 0, shot_span(lab)};
+  seek_to(lab, lab_plot(lab, "energy", spec, {k, e, h, t}, em(150)));
+}
+
+// The contact shown: the one the user picked, else the latest ball-ball contact begun by the time on screen,
+// else the latest contact of any kind.
+int shown_contact(const ContactLog& log, double t, int picked) {
+  if (picked >= 0 && picked < static_cast<int>(log.contacts.size())) return picked;
+  int any = -1, balls = -1;
+  for (int k = 0; k < static_cast<int>(log.contacts.size()); ++k)
+    if (log.contacts[k].begin <= t) {
+      any = k;
+      if (log.contacts[k].ball_ball) balls = k;
+    }
+  return balls >= 0 ? balls : any;
+}
+
+void collision_plot(Lab& lab) {
+  static int picked = -1;
+  static const Shot* picked_for = nullptr;
+  if (picked_for != lab.shot.get()) picked = -1, picked_for = lab.shot.get();
+  const ContactLog* log = lab.contact_log();
+  if (!log) return ImGui::TextDisabled("tracing the collisions...");
+  if (log->contacts.empty()) return ImGui::TextDisabled("no collision yet");
+  const int k = shown_contact(*log, lab.view_time, picked);
+  if (k < 0) return ImGui::TextDisabled("no collision before this time");
+  const ContactTrace& c = log->contacts[k];
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::BeginCombo("##contact", (c.label() + " at " + std::to_string(c.begin).substr(0, 8) + " s").c_str())) {
+    for (int j = 0; j < static_cast<int>(log->contacts.size()); ++j) {
+      const ContactTrace& o = log->contacts[j];
+      const std::string name = o.label() + " at " + std::to_string(o.begin).substr(0, 8) + " s";
+      if (ImGui::Selectable(name.c_str(), j == k)) picked = j;
+    }
+    ImGui::EndCombo();
+  }
+  const double end = c.end >= 0 ? c.end : log->until;
+  PlotSeries f{c.label(), kRed, c.time, c.force};
+  PlotSpec spec{"normal force, " + c.label(), "N", lab.view_time, c.begin, std::max(end, c.begin + 1e-6)};
+  seek_to(lab, lab_plot(lab, "collision", spec, {f}, em(150)));
+  ImGui::Text("peak %.0f N, lasted %.3f ms, deepest %.1f um", c.peak_force(), (end - c.begin) * 1e3, c.max_depth() * 1e6);
+  if (ImGui::SmallButton("go to its start")) lab.seek(c.begin);
+}
+
+}  // namespace
+
+void teach_plots(Lab& lab) {
+  if (lab.selected >= static_cast<int>(lab.scene.balls.size())) return;
+  motion_plot(lab);
+  energy_plot(lab);
+  collision_plot(lab);
+}
+
+}  // namespace shotlab

@@ -1,0 +1,87 @@
+// Practice (players and coaches): a position target and the miss, kept shots to compare, a camera that follows the
+// cue ball. View: which aids are drawn, the camera, UI scale and presentation mode, pictures.
+#include <imgui.h>
+
+#include <cmath>
+
+#include "ui/panels.hpp"
+#include "ui/widgets.hpp"
+
+namespace shotlab {
+
+ImU32 kept_colour(int k, float alpha) {
+  static const ImU32 colours[] = {IM_COL32(255, 120, 120, 255), IM_COL32(120, 255, 140, 255),
+                                  IM_COL32(140, 160, 255, 255), IM_COL32(255, 220, 100, 255),
+                                  IM_COL32(230, 130, 255, 255), IM_COL32(100, 240, 240, 255)};
+  const ImU32 c = colours[k % 6];
+  return (c & 0x00FFFFFF) | (static_cast<ImU32>(alpha * 255) << 24);
+}
+
+void practice_section(Lab& lab) {
+  ImGui::TextWrapped("Target: pick the Target tool (Aim section) and click where the cue ball should stop.");
+  if (lab.target) {
+    const Fields f({"radius"});
+    f.label("radius");
+    slider("##target radius", lab.target_radius, 0.01, 0.3, "%.2f m");
+    if (const auto miss = lab.target_miss())
+      ImGui::TextColored(*miss <= lab.target_radius ? ImVec4(0.5f, 1, 0.5f, 1) : ImVec4(1, 0.7f, 0.3f, 1),
+                         "%s: %.0f mm from the target%s", lab.shot ? "the cue ball stopped" : "predicted",
+                         *miss * 1e3, *miss <= lab.target_radius ? " (inside)" : "");
+    if (ImGui::SmallButton("clear target")) lab.target.reset();
+  }
+  ImGui::Separator();
+  if (ImGui::Button("Keep this shot (K)")) lab.keep_shot();
+  mark("Keep shot");
+  ImGui::SameLine();
+  if (ImGui::Button("Clear kept")) lab.kept.clear();
+  for (size_t k = 0; k < lab.kept.size(); ++k) {
+    ImGui::PushID(static_cast<int>(k));
+    ImGui::Checkbox("##visible", &lab.kept[k].visible);
+    ImGui::SameLine();
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(kept_colour(lab.kept[k].colour)), "%s", lab.kept[k].label.c_str());
+    ImGui::PopID();
+  }
+  ImGui::Checkbox("camera follows the cue ball", &lab.settings.view.follow_cue);
+}
+
+void view_section(Lab& lab, Camera& camera) {
+  ViewFlags& v = lab.settings.view;
+  ImGui::Checkbox("trails", &v.trails), ImGui::SameLine(), ImGui::Checkbox("ghost", &v.ghost), ImGui::SameLine(),
+      ImGui::Checkbox("predicted", &v.predicted);
+  ImGui::Checkbox("aim line", &v.aim), ImGui::SameLine(), ImGui::Checkbox("velocity", &v.velocity), ImGui::SameLine(),
+      ImGui::Checkbox("spin", &v.spin);
+  ImGui::Checkbox("contact forces", &v.forces), ImGui::SameLine(), ImGui::Checkbox("labels", &v.labels);
+  ImGui::Checkbox("centre of mass", &v.centre_of_mass), ImGui::SameLine(), ImGui::Checkbox("A/B compare", &v.compare);
+  if (ImGui::Button("Top view (T)")) camera.top_view();
+  ImGui::SameLine();
+  if (ImGui::Button("Fit table (Home)")) camera.reset();
+  ImGui::SameLine();
+  if (ImGui::Button("Help (H)")) v.help = true;
+  float scale = lab.settings.ui_scale;
+  const Fields f({"UI scale"});
+  f.label("UI scale");
+  if (ImGui::SliderFloat("##scale", &scale, 0.75f, 2.0f, "%.2fx")) lab.settings.ui_scale = scale;
+  ImGui::Checkbox("presentation mode (F5): large fonts for a projector", &lab.settings.presentation);
+  if (ImGui::Button("Screenshot (F12)")) lab.screenshot_request = export_path(lab, "screenshot", "png");
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!lab.shot);
+  if (ImGui::Button("Strobe picture")) lab.strobe_request = export_path(lab, "strobe", "png");
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("the shot as a multiple exposure: the balls every tenth of the time shown, as a PNG");
+  ImGui::SameLine();
+  if (ImGui::Button("Export CSV")) try {
+      const std::string path = export_path(lab, "trajectory", "csv");
+      export_trajectory(lab, path);
+      lab.say(MessageKind::Note, "wrote " + path);
+    } catch (const std::exception& e) {
+      lab.say(MessageKind::Refused, e.what());
+    }
+  ImGui::EndDisabled();
+  ImGui::TextUnformatted("export folder");
+  ImGui::SetNextItemWidth(-1);
+  static char dir[512];
+  snprintf(dir, sizeof dir, "%s", lab.settings.export_dir.c_str());
+  if (ImGui::InputTextWithHint("##exportdir", "(the current folder)", dir, sizeof dir)) lab.settings.export_dir = dir;
+}
+
+}  // namespace shotlab

@@ -1,0 +1,77 @@
+#include "ui/pictures.hpp"
+
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "ui/files.hpp"
+#include "ui/gl.hpp"
+
+namespace shotlab {
+
+namespace {
+
+void append(void* context, void* data, int size) {
+  auto* out = static_cast<std::string*>(context);
+  out->append(static_cast<const char*>(data), static_cast<size_t>(size));
+}
+
+}  // namespace
+
+void draw_balls(Renderer& renderer, const Lab& lab, const Frame& f, float alpha) {
+  for (int i = 0; i < f.state.ball_count() && i < static_cast<int>(lab.scene.balls.size()); ++i) {
+    if (!f.state.in_play[i] && position(f.state.x, i).y < -0.1) continue;  // gone down a pocket
+    const BallSpec& b = lab.scene.balls[i].spec;
+    renderer.draw_ball(position(f.state.x, i), f.orientation[i], b.radius, ball_look(b.id), alpha);
+  }
+}
+
+bool write_window_png(const std::string& path, int x, int y, int w, int h, int window_h) {
+  if (w <= 0 || h <= 0) return false;
+  std::vector<unsigned char> pixels(static_cast<size_t>(w) * h * 3);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_BACK);
+  glReadPixels(x, window_h - y - h, w, h, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
+  stbi_flip_vertically_on_write(1);
+  std::string png;
+  if (!stbi_write_png_to_func(append, &png, w, h, 3, pixels.data(), w * 3)) return false;
+  try {
+    write_file_atomic(path, png);
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+void write_screenshot(Lab& lab, int window_w, int window_h) {
+  Rect r{0, 0, static_cast<float>(window_w), static_cast<float>(window_h)};
+  if (lab.screenshot_crop) r = *lab.screenshot_crop;
+  const int x = std::clamp(static_cast<int>(r.x), 0, window_w), y = std::clamp(static_cast<int>(r.y), 0, window_h);
+  const int w = std::min(static_cast<int>(r.w), window_w - x), h = std::min(static_cast<int>(r.h), window_h - y);
+  const std::string path = lab.screenshot_request;
+  lab.screenshot_request.clear();
+  lab.screenshot_crop.reset();
+  if (write_window_png(path, x, y, w, h, window_h)) lab.say(MessageKind::Note, "wrote " + path);
+  else lab.say(MessageKind::Refused, "cannot write " + path);
+}
+
+void write_strobe(Lab& lab, Renderer& renderer, const Viewport& vp, int window_h) {
+  const std::string path = lab.strobe_request;
+  lab.strobe_request.clear();
+  if (!lab.shot) return lab.say(MessageKind::Refused, "shoot first: a strobe picture shows a shot");
+  Shot& shot = *lab.shot;
+  renderer.begin(vp.view_proj, vp.eye, static_cast<int>(vp.x0), static_cast<int>(vp.width), window_h);
+  renderer.draw_scene(lab.scene, shot.sim().model());
+  const double end = shot.sim().time();
+  for (int k = 0; k < kStrobeExposures; ++k) {
+    const double t = end * k / (kStrobeExposures - 1);
+    draw_balls(renderer, lab, shot.frame_at(t), 0.3f + 0.7f * k / (kStrobeExposures - 1));
+  }
+  if (write_window_png(path, static_cast<int>(vp.x0), 0, static_cast<int>(vp.width), window_h, window_h))
+    lab.say(MessageKind::Note, "wrote " + path);
+  else
+    lab.say(MessageKind::Refused, "cannot write " + path);
+}
+
+}  // namespace shotlab

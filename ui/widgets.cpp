@@ -1,0 +1,135 @@
+#include "ui/widgets.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+
+namespace shotlab {
+
+namespace {
+constexpr float kBaseFont = 15;      // px: the font size the unscaled sizes are given for
+constexpr float kMinControl = 130;   // px (unscaled): narrower, a slider is hard to use
+std::map<std::string, Rect> current_marks, last_marks;
+std::map<std::string, double> current_readouts, last_readouts;
+}  // namespace
+
+float em(float pixels) { return pixels * ImGui::GetFontSize() / kBaseFont; }
+
+Fields::Fields(std::initializer_list<const char*> labels) {
+  for (const char* l : labels) column_ = std::max(column_, ImGui::CalcTextSize(l).x);
+  column_ += ImGui::GetStyle().ItemInnerSpacing.x * 2;
+  above_ = ImGui::GetContentRegionAvail().x - column_ < em(kMinControl);
+}
+
+void Fields::label(const char* text) const {
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted(text);
+  if (!above_) ImGui::SameLine(column_);
+  ImGui::SetNextItemWidth(-FLT_MIN);
+}
+
+bool slider(const char* id, double& v, double lo, double hi, const char* format, bool log) {
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  return ImGui::SliderScalar(id, ImGuiDataType_Double, &v, &lo, &hi, format,
+                             ImGuiSliderFlags_AlwaysClamp | (log ? ImGuiSliderFlags_Logarithmic : 0));
+}
+
+bool tip_widget(CueStrike& cue, float size) {
+  const float r = size / 2 - 6;
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const ImVec2 c{origin.x + size / 2, origin.y + size / 2};
+  ImGui::InvisibleButton("tip", ImVec2(size, size));
+  mark("tip widget");
+  ImDrawList* d = ImGui::GetWindowDrawList();
+  d->AddCircleFilled(c, r, IM_COL32(240, 238, 225, 255), 48);
+  for (int k = 0; k < 24; k += 2) {
+    const float a0 = k * 2 * float(M_PI) / 24, a1 = (k + 1) * 2 * float(M_PI) / 24;
+    const float m = r * static_cast<float>(cue.miscue_limit);
+    d->AddLine({c.x + m * std::cos(a0), c.y + m * std::sin(a0)}, {c.x + m * std::cos(a1), c.y + m * std::sin(a1)},
+               IM_COL32(200, 60, 60, 255), 1.5f);
+  }
+  d->AddLine({c.x - r, c.y}, {c.x + r, c.y}, IM_COL32(150, 150, 150, 255));
+  d->AddLine({c.x, c.y - r}, {c.x, c.y + r}, IM_COL32(150, 150, 150, 255));
+  const ImVec2 tip{c.x + r * float(cue.side), c.y - r * float(cue.height)};
+  d->AddCircleFilled(tip, std::max(4.0f, size / 18), IM_COL32(40, 90, 220, 255));
+  if (!ImGui::IsItemActive()) return false;
+  const ImVec2 m = ImGui::GetIO().MousePos;
+  double side = (m.x - c.x) / r, height = -(m.y - c.y) / r;
+  const double len = std::hypot(side, height);
+  if (len > 0.9) side *= 0.9 / len, height *= 0.9 / len;  // keep the tip on the ball
+  side = std::round(side * 100) / 100, height = std::round(height * 100) / 100;
+  if (side == cue.side && height == cue.height) return false;
+  cue.side = side;
+  cue.height = height;
+  return true;
+}
+
+void place_side_panel(const Rect& where, bool want_open, bool shown) {
+  ImGui::SetNextWindowPos(ImVec2(where.x, where.y), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(where.w, where.h), ImGuiCond_Always);
+  if (want_open != shown) ImGui::SetNextWindowCollapsed(!want_open, ImGuiCond_Always);
+}
+
+bool end_side_panel(const std::string& name) {
+  const ImVec2 p = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  mark_rect(name, Rect{p.x, p.y, size.x, size.y});
+  return !ImGui::IsWindowCollapsed();
+}
+
+void same_line_if_fits(const char* next) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float width = ImGui::CalcTextSize(next, nullptr, true).x + style.FramePadding.x * 2;
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
+}
+
+void bar_chart(const char* id, const std::vector<Bar>& bars, double scale, const char* unit) {
+  if (bars.empty() || !(scale > 0)) return;
+  const bool signed_values = std::any_of(bars.begin(), bars.end(), [](const Bar& b) { return b.value < 0; });
+  float label_w = 0;
+  for (const Bar& b : bars) label_w = std::max(label_w, ImGui::CalcTextSize(b.label.c_str()).x);
+  label_w += em(8);
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const float width = ImGui::GetContentRegionAvail().x;
+  const ImVec2 o = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton(id, ImVec2(std::max(width, 1.0f), line * bars.size() + 2));
+  ImDrawList* d = ImGui::GetWindowDrawList();
+  d->PushClipRect(o, ImVec2(o.x + width, o.y + line * bars.size() + 2), true);
+  const float x0 = o.x + label_w, span = std::max(width - label_w - em(70), 10.0f);
+  const float zero = signed_values ? x0 + span / 2 : x0;
+  const float unit_px = static_cast<float>((signed_values ? span / 2 : span) / scale);
+  for (size_t k = 0; k < bars.size(); ++k) {
+    const Bar& b = bars[k];
+    const float y = o.y + k * line;
+    d->AddText({o.x, y}, ImGui::GetColorU32(ImGuiCol_Text), b.label.c_str());
+    const float len = std::clamp(static_cast<float>(b.value) * unit_px, -span, span);
+    d->AddRectFilled({std::min(zero, zero + len), y + 2}, {std::max(zero, zero + len), y + line - 3}, b.colour);
+    char text[48];
+    std::snprintf(text, sizeof text, "%.3g %s", b.value, unit);
+    d->AddText({x0 + span + em(6), y}, ImGui::GetColorU32(ImGuiCol_Text), text);
+  }
+  d->AddLine({zero, o.y}, {zero, o.y + line * bars.size()}, IM_COL32(160, 160, 160, 255));
+  d->PopClipRect();
+}
+
+void mark(const std::string& name) {
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  current_marks[name] = Rect{a.x, a.y, b.x - a.x, b.y - a.y};
+}
+
+void mark_rect(const std::string& name, const Rect& r) { current_marks[name] = r; }
+
+void new_marks_frame() {
+  last_marks.swap(current_marks);
+  current_marks.clear();
+  last_readouts.swap(current_readouts);
+  current_readouts.clear();
+}
+
+void readout(const std::string& name, double value) { current_readouts[name] = value; }
+const std::map<std::string, double>& readouts() { return last_readouts; }
+
+const std::map<std::string, Rect>& marks() { return last_marks; }
+
+}  // namespace shotlab

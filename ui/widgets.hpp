@@ -1,0 +1,66 @@
+// Small ImGui building blocks shared by the panels: labelled fields that never clip their labels, sliders over
+// doubles, the cue-tip widget, horizontal bar charts, and `mark`, which names a widget's screen rectangle for the
+// state dump (the real-input GUI test clicks what the dump says is where).
+#pragma once
+#include <imgui.h>
+
+#include <initializer_list>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "engine/cue.hpp"
+#include "ui/layout.hpp"
+
+namespace shotlab {
+
+// A column of labels left of full-width controls: as wide as the widest label given, or, when the panel is too
+// narrow for that and a usable control, each label goes on the line above its control.
+class Fields {
+ public:
+  explicit Fields(std::initializer_list<const char*> labels);
+  void label(const char* text) const;  // then the control (its own label hidden: "##id"), which fills the row
+ private:
+  float column_ = 0;
+  bool above_ = false;
+};
+
+// A slider over a double, clamped to its range (typed values too: no out-of-range value reaches the engine);
+// logarithmic where the range spans decades. Fills the row.
+bool slider(const char* id, double& v, double lo, double hi, const char* format, bool log = false);
+
+// A drawn ball face: click or drag to put the cue tip (right is the shooter's right, up is follow); the dashed
+// ring is the miscue limit. Returns true while it changes the offsets.
+bool tip_widget(CueStrike& cue, float size);
+
+struct Bar {
+  std::string label;
+  double value;
+  ImU32 colour;
+};
+// Before Begin() of a side panel: puts it at `where`, and collapses or opens it when `want_open` differs from how
+// it was last shown (`shown`, updated by end_side_panel): a key (F2, F3) toggles it, a click on its arrow too.
+void place_side_panel(const Rect& where, bool want_open, bool shown);
+// Before End(): records the window's rectangle under `name` and returns whether it is open.
+bool end_side_panel(const std::string& name);
+
+// Before a button labelled `next`: on the same line when it fits in what is left of the row, else on the next.
+void same_line_if_fits(const char* next);
+
+// Horizontal bars from a zero line, scaled so that `scale` (> 0) spans the half width (signed values) or the full
+// width (all values >= 0); each bar labelled with its value and unit.
+void bar_chart(const char* id, const std::vector<Bar>& bars, double scale, const char* unit);
+
+// Records the last widget's rectangle under `name` for this frame (state dump); marks() returns the last frame's.
+void mark(const std::string& name);
+void mark_rect(const std::string& name, const Rect& r);
+void new_marks_frame();
+const std::map<std::string, Rect>& marks();
+// Records a value a panel shows (a readout) under `name` for the state dump, as marks() do for rectangles.
+void readout(const std::string& name, double value);
+const std::map<std::string, double>& readouts();
+
+// Scales a size given in unscaled pixels by the current font size (ui scale and presentation mode).
+float em(float pixels);
+
+}  // namespace shotlab
