@@ -1,0 +1,385 @@
+#!/usr/bin/env python3
+"""The shot lab driven as its users drive it: the real program under a private Xvfb, real mouse moves, clicks, drags
+and key presses of normal length from xdotool, one journey per user group (player, teacher, developer) plus the
+layout at three window sizes. It asserts on the program's state dumps (SIGUSR1 with --dump-state, ui/state_dump.hpp),
+which also say where each widget and ball is on screen, and on pixels of screen grabs (xwd).
+
+Usage: real_input.py SHOTLAB_BINARY SOURCE_DIR [JOURNEY ...]   (journeys: player teacher developer layout)
+Standard-library python3 only; needs Xvfb, xdotool and xwd (scripts/setup.sh installs them).
+"""
+import json
+import os
+import shutil
+import signal
+import struct
+import subprocess
+import sys
+import tempfile
+import time
+
+PRESS = 0.08  # s a key or button is held: a normal press, not a synthetic zero-length one
+FAILURES = []
+
+
+def check(condition, what):
+    print(("ok    " if condition else "FAIL  ") + what, flush=True)
+    if not condition:
+        FAILURES.append(what)
+    return condition
+
+
+class Display:
+    """A private X server; the number is chosen by the server itself (-displayfd), so parallel runs do not clash."""
+
+    def __init__(self, width=1920, height=1080):
+        read, write = os.pipe()
+        self.proc = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", f"{width}x{height}x24",
+                                      "-nolisten", "tcp"], pass_fds=(write,), stderr=subprocess.DEVNULL)
+        os.close(write)
+        with os.fdopen(read) as f:
+            self.name = ":" + f.readline().strip()
+
+    def close(self):
+        self.proc.terminate()
+        self.proc.wait(timeout=10)
+
+
+class App:
+    """One run of the shot lab on the display, with its own settings folder and working folder."""
+
+    def __init__(self, binary, display, workdir, scene, size=(1280, 720), config=None):
+        self.display, self.workdir = display, workdir
+        self.dump_path = os.path.join(workdir, "state.json")
+        self.env = dict(os.environ, DISPLAY=display.name, XDG_CONFIG_HOME=config or os.path.join(workdir, "config"))
+        self.log = open(os.path.join(workdir, "shotlab.log"), "a")
+        self.proc = subprocess.Popen([binary, "--scene", scene, "--width", str(size[0]), "--height", str(size[1]),
+                                      "--dump-state", self.dump_path], cwd=workdir, env=self.env,
+                                     stdout=self.log, stderr=self.log)
+        out = self.xdotool("search", "--sync", "--onlyvisible", "--name", "^shotlab$", timeout=30)
+        self.window = out.split()[0]
+        self.wait(lambda s: s["frame"] > 5, 30, "the first frames drawn")
+
+    def xdotool(self, *args, timeout=10):
+        return subprocess.run(["xdotool", *args], env=self.env, check=True, capture_output=True, text=True,
+                              timeout=timeout).stdout
+
+    def state(self):
+        if os.path.exists(self.dump_path):
+            os.remove(self.dump_path)
+        self.proc.send_signal(signal.SIGUSR1)
+        end = time.time() + 10
+        while time.time() < end:
+            if os.path.exists(self.dump_path):
+                with open(self.dump_path) as f:
+                    return json.load(f)
+            time.sleep(0.05)
+        raise RuntimeError("no state dump within 10 s")
+
+    def wait(self, predicate, timeout, what):
+        end = time.time() + timeout
+        while True:
+            s = self.state()
+            if predicate(s):
+                return s
+            if time.time() > end:
+                check(False, f"within {timeout} s: {what}")
+                return s
+            time.sleep(0.3)
+
+    def move(self, x, y):
+        self.xdotool("mousemove", "--window", self.window, str(int(x)), str(int(y)))
+        time.sleep(0.05)
+
+    def click(self, x, y, button=1, mods=()):
+        self.move(x, y)
+        for m in mods:
+            self.xdotool("keydown", m)
+        self.xdotool("mousedown", str(button))
+        time.sleep(PRESS)
+        self.xdotool("mouseup", str(button))
+        for m in mods:
+            self.xdotool("keyup", m)
+        time.sleep(0.25)
+
+    def drag(self, x0, y0, x1, y1, button=1, steps=12):
+        self.move(x0, y0)
+        self.xdotool("mousedown", str(button))
+        for k in range(1, steps + 1):
+            self.move(x0 + (x1 - x0) * k / steps, y0 + (y1 - y0) * k / steps)
+        self.xdotool("mouseup", str(button))
+        time.sleep(0.25)
+
+    def key(self, name, times=1):
+        for _ in range(times):
+            self.xdotool("keydown", name)
+            time.sleep(PRESS)
+            self.xdotool("keyup", name)
+            time.sleep(0.12)
+
+    def type(self, text):
+        self.xdotool("type", "--delay", "90", text)
+        time.sleep(0.2)
+
+    def widget(self, state, name):
+        r = state["widgets"].get(name)
+        if not check(r is not None, f"the widget '{name}' is on screen"):
+            raise RuntimeError(f"no widget {name}")
+        return r
+
+    def click_widget(self, state, name, fx=0.5, fy=0.5, mods=()):
+        r = self.widget(state, name)
+        self.click(r["x"] + r["w"] * fx, r["y"] + r["h"] * fy, mods=mods)
+
+    def grab(self):
+        """The window's pixels now (xwd), as an Image."""
+        raw = subprocess.run(["xwd", "-silent", "-id", self.window], env=self.env, check=True,
+                             capture_output=True, timeout=20).stdout
+        return Image(raw)
+
+    def close(self):
+        self.proc.terminate()
+        try:
+            self.proc.wait(timeout=20)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+        self.log.close()
+        return self.proc.returncode
+
+
+class Image:
+    """An XWD screen grab (ZPixmap, 24/32 bits a pixel), read with the standard library only."""
+
+    def __init__(self, raw):
+        h = struct.unpack(">25I", raw[:100])
+        header_size, self.width, self.height = h[0], h[4], h[5]
+        self.msb = h[7] == 1
+        self.bpp, self.stride, ncolors = h[11], h[12], h[19]
+        self.data = raw[header_size + 12 * ncolors:]
+        if self.bpp != 32:
+            raise RuntimeError(f"unexpected XWD format: {self.bpp} bits a pixel")
+
+    def pixel(self, x, y):
+        o = int(y) * self.stride + int(x) * 4
+        b0, b1, b2, b3 = self.data[o:o + 4]
+        return (b1, b2, b3) if self.msb else (b2, b1, b0)
+
+    def count(self, x0, y0, x1, y1, predicate):
+        n = 0
+        for y in range(max(0, int(y0)), min(self.height, int(y1))):
+            for x in range(max(0, int(x0)), min(self.width, int(x1))):
+                n += predicate(self.pixel(x, y))
+        return n
+
+
+def is_cloth(p):
+    r, g, b = p
+    return g > r + 40 and g > b + 20
+
+
+def is_force_red(p):
+    r, g, b = p
+    return r > 200 and g < 110 and b < 110
+
+
+def ball(state, ident):
+    return next(b for b in state["balls"] if b["id"] == ident)
+
+
+def inside(rect, x, y):
+    return rect["x"] - 1 <= x <= rect["x"] + rect["w"] + 1 and rect["y"] - 1 <= y <= rect["y"] + rect["h"] + 1
+
+
+# --- journeys ----------------------------------------------------------------------------------------------------
+
+def player(binary, root, display, work):
+    """Load the cut preset, aim by clicking the cloth, set draw with the tip widget, shoot, wait for rest, undo, shoot
+    again with more draw, set up a break and shoot it."""
+    app = App(binary, display, work, os.path.join(root, "presets", "cut.json"))
+    s = app.state()
+    check(abs(s["cue"]["aim_deg"] + 75) < 1e-6, "the cut preset aims at -75 degrees")
+    view = s["view"]
+    check(all(inside(view, *c) for c in s["table_corners"]), "the whole table lies inside the 3D view")
+    obj = ball(s, "1")
+    start = obj["position"]
+    ox, oy = obj["screen"]
+    img = app.grab()
+    check(img.count(ox - 60, oy + 25, ox + 60, oy + 60, is_cloth) > 1000, "cloth is drawn around the object ball")
+
+    app.click(ox - 40, oy + 70)  # the cloth below-left of the object ball
+    s = app.state()
+    check(abs(s["cue"]["aim_deg"] + 75) > 0.5, f"a click on the cloth aims there ({s['cue']['aim_deg']:.2f} deg)")
+    app.click(ox, oy)  # on the object ball: aim at its centre, move nothing
+    s = app.state()
+    check(ball(s, "1")["position"] == start, "a click on the object ball does not move it")
+    app.key("p")  # snap: the pocket line
+    s = app.state()
+    check(abs(s["cue"]["aim_deg"] + 75) < 0.5, f"P aims the ball at the preset's pocket ({s['cue']['aim_deg']:.2f})")
+    app.key("Left")
+    s2 = app.state()
+    check(abs(s2["cue"]["aim_deg"] - s["cue"]["aim_deg"] - 0.1) < 1e-6, "Left turns the aim by 0.1 degree")
+    app.key("Right")
+
+    tip = app.widget(s, "tip widget")
+    r = tip["w"] / 2 - 6
+    app.click(tip["x"] + tip["w"] / 2, tip["y"] + tip["h"] / 2 + 0.3 * r)
+    s = app.state()
+    draw1 = s["cue"]["height"]
+    check(-0.4 < draw1 < -0.2, f"the tip widget sets draw ({draw1:+.2f} R)")
+
+    app.key("s")
+    s = app.wait(lambda s: s["shot_over"], 40, "the cut shot comes to rest")
+    check(s["shot"]["end"] == "rest" and s["shot"]["sim_time"] > 4.0,
+          f"the shot ran until every ball rested ({s['shot']['sim_time']:.2f} s, past the scene's 4 s)")
+    rest1 = ball(s, "cue")["position"]
+
+    app.key("u")
+    s = app.state()
+    check(not s["has_shot"] and s["ghost_balls"] > 0, "U undoes the shot and keeps its trails as a ghost")
+    check(abs(s["cue"]["height"] - draw1) < 1e-9, "undo keeps the draw that made the shot")
+    app.click(tip["x"] + tip["w"] / 2, tip["y"] + tip["h"] / 2 + 0.6 * r)
+    s = app.state()
+    check(s["cue"]["height"] < draw1 - 0.2, f"more draw ({s['cue']['height']:+.2f} R)")
+    app.click_widget(s, "Shoot")
+    s = app.wait(lambda s: s["shot_over"], 40, "the second shot comes to rest")
+    rest2 = ball(s, "cue")["position"]
+    moved = sum((a - b) ** 2 for a, b in zip(rest1, rest2)) ** 0.5
+    check(moved > 0.02, f"more draw leaves the cue ball elsewhere ({moved * 100:.1f} cm away)")
+
+    app.click_widget(s, "Set up break")
+    s = app.state()
+    check(len(s["balls"]) == 16 and s["in_hand"], "Set up break racks 15 balls and gives ball in hand")
+    cx, cy = ball(s, "cue")["screen"]  # on the head spot: put it down a little towards the head rail (left)
+    app.move(cx - 40, cy)
+    app.move(cx - 30, cy)
+    app.click(cx - 30, cy)
+    s = app.state()
+    cue = ball(s, "cue")["position"]
+    check(not s["in_hand"] and cue[0] <= -0.635 + 1e-9, f"a click puts the cue ball down behind the head string "
+                                                       f"(x = {cue[0]:.3f} m)")
+    check(s["cue"] is not None and s["cue"]["speed"] > 6, "the break comes with a firm cue strike")
+    racked = s
+    app.key("s")
+    s = app.wait(lambda s: s["shot_over"], 90, "the break comes to rest")
+    moved = sum(1 for b, a in zip(s["balls"], racked["balls"])
+                if not b["in_play"] or sum((p - q) ** 2 for p, q in zip(b["position"], a["position"])) > 0.05 ** 2)
+    check(s["shot"]["end"] == "rest" and moved >= 8,
+          f"the break runs to rest ({s['shot']['sim_time']:.2f} s) and spreads the rack ({moved} balls moved)")
+    app.close()
+
+
+def teacher(binary, root, display, work):
+    """The cradle in slow motion, pause, scrub to the impact, switch tabs back and forth (also after a restart)."""
+    config = os.path.join(work, "config")
+    app = App(binary, display, work, os.path.join(root, "presets", "cradle.json"), config=config)
+    app.key("bracketleft", 3)
+    s = app.state()
+    check(abs(s["slowmo"] - 0.125) < 1e-12, "[ three times: 1/8 slow motion")
+    app.key("f")
+    app.key("s")
+    s = app.wait(lambda s: s["shot"] and s["shot"]["events"] > 0, 30, "the first ball reaches the second")
+    app.key("space")
+    s = app.state()
+    check(not s["playing"], "Space pauses")
+    app.click_widget(s, "Events")
+    s = app.state()
+    first = next((k for k in sorted(s["widgets"]) if k.startswith("event ")), None)
+    if check(first is not None, "the events list shows the impact"):
+        app.click_widget(s, first)
+    s = app.state()
+    check(s["shot"]["contact_on_screen"], f"scrubbed to the impact, the balls touch (t = {s['view_time']:.6f} s)")
+    app.key("bracketleft", 7)  # 1/1024: a step of 16 microseconds
+    app.key("period", 4)
+    s = app.state()
+    check(s["shot"]["contact_on_screen"], "stepped 4 frames into the collision, still in contact")
+    b1, b2 = ball(s, "b1")["screen"], ball(s, "b2")["screen"]
+    mx, my = (b1[0] + b2[0]) / 2, (b1[1] + b2[1]) / 2
+    img = app.grab()
+    check(img.count(mx - 40, my - 40, mx + 40, my + 40, is_force_red) > 15, "the contact force is drawn at the impact")
+
+    for tab in ("Tuning", "Teaching", "Tuning", "Teaching"):
+        app.click_widget(s, "tab " + tab)
+        time.sleep(0.6)
+        s = app.state()
+        check(s["tab"] == tab.lower(), f"a click on {tab} selects it, and it stays")
+    app.click_widget(s, "tab Tuning")
+    check(app.state()["tab"] == "tuning", "Tuning selected before closing")
+    check(app.close() == 0, "the window closes cleanly")
+    app = App(binary, display, work, os.path.join(root, "presets", "cradle.json"), config=config)
+    s = app.state()
+    check(s["tab"] == "tuning", "the tab comes back after a restart")
+    app.click_widget(s, "tab Teaching")
+    time.sleep(0.6)
+    check(app.state()["tab"] == "teaching", "and Teaching can still be chosen")
+    app.close()
+
+
+def developer(binary, root, display, work):
+    """Change the ball-ball stiffness, see the contact-time readout change, reset."""
+    app = App(binary, display, work, os.path.join(root, "presets", "cradle.json"))
+    s = app.state()
+    app.click_widget(s, "tab Tuning")
+    s = app.wait(lambda s: "contact_time ball_ball" in s["readouts"], 30, "the probe's contact time is shown")
+    before = s["readouts"]["contact_time ball_ball"]
+    stiffness = s["physics"]["materials"]["ball_ball"]["stiffness"]
+    app.click_widget(s, "stiffness ball_ball", mods=("ctrl",))  # ctrl+click: type a value
+    app.key("ctrl+a")
+    app.type("4e9")
+    app.key("Return")
+    s = app.wait(lambda s: s["readouts"].get("contact_time ball_ball", before) != before, 30,
+                 "the contact time follows the stiffness")
+    after = s["readouts"]["contact_time ball_ball"]
+    check(abs(s["physics"]["materials"]["ball_ball"]["stiffness"] - 4e9) < 1, "the stiffness typed is set")
+    check(after < before, f"stiffer, shorter contact ({before * 1e3:.3f} -> {after * 1e3:.3f} ms)")
+    check(any("stiffness" in c for c in s["physics"]["changes"]), "the change is listed")
+    app.click_widget(s, "Reset physics")
+    s = app.wait(lambda s: s["readouts"].get("contact_time ball_ball") == before, 30, "the readout comes back")
+    check(s["physics"]["materials"]["ball_ball"]["stiffness"] == stiffness and not s["physics"]["changes"],
+          "Reset restores the scene's values")
+    app.close()
+
+
+def layout(binary, root, display, work):
+    """At 1280x720, 1920x1080 and 1024x600 the panels sit at the window's edges and the table fits between them;
+    F3 collapses the inspector and the table grows into the room."""
+    for size in ((1280, 720), (1920, 1080), (1024, 600)):
+        app = App(binary, display, work, os.path.join(root, "presets", "cut.json"), size=size,
+                  config=os.path.join(work, "config-%dx%d" % size))
+        s = app.state()
+        view, panel = s["view"], s["widgets"]["panel Inspector"]
+        check(abs(panel["x"] + panel["w"] - size[0]) < 1.5, f"{size}: the inspector is at the right edge")
+        check(all(inside(view, *c) for c in s["table_corners"]), f"{size}: the table fits between the panels")
+        app.key("F3")
+        s2 = app.state()
+        check(s2["view"]["w"] > view["w"] + 100 and all(inside(s2["view"], *c) for c in s2["table_corners"]),
+              f"{size}: F3 collapses the inspector, the view widens ({view['w']:.0f} -> {s2['view']['w']:.0f} px)")
+        app.close()
+
+
+JOURNEYS = {"player": player, "teacher": teacher, "developer": developer, "layout": layout}
+
+
+def main():
+    binary, root = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+    names = sys.argv[3:] or list(JOURNEYS)
+    display = Display()
+    work = tempfile.mkdtemp(prefix="shotlab-real-input-")
+    try:
+        for name in names:
+            print(f"--- {name}", flush=True)
+            folder = os.path.join(work, name)
+            os.makedirs(folder)
+            try:
+                JOURNEYS[name](binary, root, display, folder)
+            except Exception as e:  # a journey that cannot go on fails, the others still run
+                check(False, f"{name}: {type(e).__name__}: {e}")
+    finally:
+        display.close()
+    if FAILURES:
+        print(f"{len(FAILURES)} failed; logs and dumps kept in {work}")
+        return 1
+    shutil.rmtree(work)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
