@@ -50,9 +50,7 @@ struct Window {
       throw std::runtime_error("cannot open an OpenGL 3.3 core window");
     }
     glfwMakeContextCurrent(handle);
-    // Without a window manager nothing focuses a new window, and ImGui then ignores a pointer that was over it
-    // before it opened (no enter event): take the focus, as a window manager would give it.
-    glfwFocusWindow(handle);
+    glfwFocusWindow(handle);  // as a window manager would: keys go to the new window
   }
   ~Window() {
     glfwDestroyWindow(handle);
@@ -154,6 +152,16 @@ Layout frame_layout(const Settings& s, int w, int h) {
                        {s.panels.right_open, s.panels.right_width * scale, bar});
 }
 
+// ImGui's GLFW backend (1.86) reads the pointer only once the window has the focus or the pointer has entered it:
+// a window opened under the pointer without a window manager gets neither, and its first clicks would be lost.
+void pointer_fallback(GLFWwindow* window) {
+  ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::IsMousePosValid() || !glfwGetWindowAttrib(window, GLFW_HOVERED)) return;
+  double x = 0, y = 0;
+  glfwGetCursorPos(window, &x, &y);
+  io.MousePos = ImVec2(static_cast<float>(x), static_cast<float>(y));
+}
+
 // Sleeps while nothing changes on screen; after input, draws a few frames so that ImGui settles.
 class Pacer {
  public:
@@ -227,6 +235,8 @@ int run_gui(const GuiOptions& options) {
           ImGuiIO& io = ImGui::GetIO();
           io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
           for (bool& down : io.MouseDown) down = false;
+        } else {
+          pointer_fallback(window.handle);
         }
         ImGui::NewFrame();
         new_marks_frame();
@@ -253,7 +263,8 @@ int run_gui(const GuiOptions& options) {
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
         if (!lab.screenshot_request.empty()) write_screenshot(lab, w, h);
-        const ScreenInfo screen{w, h, layout.view, &viewport, &marks(), &readouts(), host.fps, frame_seconds * 1e3, ++frame};
+        const ScreenInfo screen{w, h, layout.view, &viewport, &marks(), &readouts(), mouse.x, mouse.y, host.fps,
+                                frame_seconds * 1e3, ++frame};
         if (dump_requested.exchange(false)) write_state(lab, screen, options.dump_state);
         if (script) {
           host.screen = &screen;

@@ -142,9 +142,9 @@ void aim_section(Lab& lab) {
   tool_buttons(lab);
   if (ImGui::Button(lab.in_hand ? "Put down (click)" : "Ball in hand (B)")) lab.pick_up_cue_ball();
   mark("Ball in hand");
-  ImGui::SameLine();
+  same_line_if_fits("< pocket");
   if (ImGui::Button("< pocket")) lab.aim_for_pocket(-1);
-  ImGui::SameLine();
+  same_line_if_fits("pocket >");
   if (ImGui::Button("pocket >")) lab.aim_for_pocket(+1);
   mark("pocket aim");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("aim the ball you aim at into the next pocket (P, Shift+P)");
@@ -269,7 +269,7 @@ void status_line(const Lab& lab, const Rect& view, double frame_seconds) {
                 frame_seconds > 0 ? 1 / frame_seconds : 0.0, physics);
   ImDrawList* d = ImGui::GetBackgroundDrawList();
   const ImVec2 size = ImGui::CalcTextSize(text);
-  const ImVec2 at{view.x + view.w - size.x - em(8), view.bottom() - size.y - em(6)};
+  const ImVec2 at{std::max(view.x + view.w - size.x - em(8), view.x + em(4)), view.bottom() - size.y - em(6)};
   d->AddRectFilled({at.x - 4, at.y - 2}, {at.x + size.x + 4, at.y + size.y + 2}, IM_COL32(0, 0, 0, 140));
   d->AddText(at, IM_COL32(220, 220, 220, 255), text);
 }

@@ -16,6 +16,10 @@ namespace shotlab {
 
 namespace {
 
+// J: the energy bars span at least this, so that a resting ball's micro-joules in its cloth contact do not fill one.
+constexpr double kEnergyBarFloor = 1e-3;
+constexpr double kMomentumBarFloor = 1e-3;  // kg m/s, likewise for a ball creeping to rest
+
 const Model& shown_model(const Lab& lab) { return lab.shot ? lab.shot->sim().model() : lab.table_model; }
 
 std::string table_csv(const Lab& lab) {
@@ -93,7 +97,7 @@ void energy_bars(const Lab& lab) {
   double scale = start.kinetic + start.elastic;  // the largest motion energy of the shot spans the bars
   if (lab.shot)
     for (const Frame& fr : lab.shot->frames()) scale = std::max(scale, fr.energy.kinetic + fr.energy.elastic);
-  scale = std::max(scale, 1e-6);
+  scale = std::max(scale, kEnergyBarFloor);
   ImGui::TextWrapped("Energy (J): the bars add up to the energy at the start");
   bar_chart("energy", {{"moving", translation, IM_COL32(80, 170, 255, 255)},
                        {"spinning", rotation, IM_COL32(255, 220, 80, 255)},
@@ -111,7 +115,7 @@ void momentum_bars(const Lab& lab) {
   const Model& m = shown_model(lab);
   std::vector<Bar> bars;
   Vec3 total{0.0};
-  double scale = 1e-9;
+  double scale = kMomentumBarFloor;
   for (int i = 0; i < f.state.ball_count(); ++i) {
     if (!f.state.in_play[i]) continue;
     const Vec3 p = ball_motion(m, f.state, i).momentum;

@@ -101,6 +101,7 @@ json state_json(const Lab& lab, const ScreenInfo& screen) {
          {"view", rect_json(screen.view)},
          {"widgets", widgets},
          {"readouts", shown},
+         {"mouse", {screen.mouse_x, screen.mouse_y}},
          {"fps", screen.fps},
          {"frame_ms", screen.frame_ms},
          {"scene", lab.scene.name},

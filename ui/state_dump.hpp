@@ -19,6 +19,7 @@ struct ScreenInfo {
   const Viewport* viewport = nullptr;      // for the balls' and the table's screen positions
   const std::map<std::string, Rect>* widgets = nullptr;  // named widget rectangles of the last frame
   const std::map<std::string, double>* readouts = nullptr;  // values the panels showed in the last frame
+  float mouse_x = 0, mouse_y = 0;  // where the GUI sees the pointer (pixels; very negative: not over the window)
   double fps = 0;
   double frame_ms = 0;
   long frame = 0;

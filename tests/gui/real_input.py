@@ -90,8 +90,15 @@ class App:
         self.xdotool("mousemove", "--window", self.window, str(int(x)), str(int(y)))
         time.sleep(0.05)
 
-    def click(self, x, y, button=1, mods=()):
+    def hover(self, x, y):
+        """Moves the pointer there and waits until the program has drawn frames with it there, as a hand rests on a
+        button before pressing it (ImGui takes a press on an item only once a frame has seen the pointer on it)."""
         self.move(x, y)
+        self.wait(lambda s: s["mouse"] == [int(x), int(y)], 10, f"the pointer reaches ({int(x)}, {int(y)})")
+        self.state()
+
+    def click(self, x, y, button=1, mods=()):
+        self.hover(x, y)
         for m in mods:
             self.xdotool("keydown", m)
         self.xdotool("mousedown", str(button))
@@ -101,12 +108,18 @@ class App:
             self.xdotool("keyup", m)
         time.sleep(0.25)
 
-    def drag(self, x0, y0, x1, y1, button=1, steps=12):
-        self.move(x0, y0)
+    def drag(self, x0, y0, x1, y1, button=1, steps=12, mods=()):
+        self.hover(x0, y0)
+        for m in mods:
+            self.xdotool("keydown", m)
         self.xdotool("mousedown", str(button))
+        time.sleep(PRESS)
         for k in range(1, steps + 1):
             self.move(x0 + (x1 - x0) * k / steps, y0 + (y1 - y0) * k / steps)
+        self.hover(x1, y1)
         self.xdotool("mouseup", str(button))
+        for m in mods:
+            self.xdotool("keyup", m)
         time.sleep(0.25)
 
     def key(self, name, times=1):
@@ -208,6 +221,16 @@ def player(binary, root, display, work):
     app.click(ox - 40, oy + 70)  # the cloth below-left of the object ball
     s = app.state()
     check(abs(s["cue"]["aim_deg"] + 75) > 0.5, f"a click on the cloth aims there ({s['cue']['aim_deg']:.2f} deg)")
+    app.drag(ox - 40, oy + 70, ox + 40, oy + 70)  # sweeping the aim along the cloth
+    s2 = app.state()
+    check(abs(s2["cue"]["aim_deg"] - s["cue"]["aim_deg"]) > 1 and s2["history"] == s["history"] + 1,
+          f"a drag on the cloth sweeps the aim ({s['cue']['aim_deg']:.2f} -> {s2['cue']['aim_deg']:.2f} deg), "
+          "one undo entry")
+    app.drag(ox, oy, ox, oy - 30, mods=("ctrl",))  # ctrl+drag: moves the object ball
+    s3 = app.state()
+    check(ball(s3, "1")["position"] != start and s3["history"] == s2["history"] + 1, "ctrl+drag moves the ball")
+    app.key("u")
+    check(ball(app.state(), "1")["position"] == start, "U puts it back where it was")
     app.click(ox, oy)  # on the object ball: aim at its centre, move nothing
     s = app.state()
     check(ball(s, "1")["position"] == start, "a click on the object ball does not move it")
