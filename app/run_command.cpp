@@ -3,25 +3,68 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <memory>
+#include <sstream>
 
 #include "app/commands.hpp"
+#include "engine/io/atomic_file.hpp"
 #include "engine/io/result_json.hpp"
 #include "engine/io/scene_json.hpp"
 #include "engine/simulation.hpp"
 
 namespace shotlab {
 
-int run_scene(const RunOptions& o) {
-  Scene scene;
-  try {
-    scene = load_scene(o.scene, o.overrides);
-  } catch (const InputError& e) {
-    std::cerr << "shotlab: " << e.what() << "\n";
-    return 1;
+namespace {
+
+// The options a run refuses before it starts: a duration beyond kMaxDuration, a sample rate out of range, an output
+// of more samples than max_samples. Returns the problem, empty when there is none.
+std::string check_run(const RunOptions& o, double duration) {
+  std::ostringstream why;
+  if (!std::isfinite(duration) || !(duration > 0) || duration > kMaxDuration)
+    why << "--duration: must be a number of seconds above 0 and at most " << kMaxDuration;
+  else if (!std::isfinite(o.sample_rate) || o.sample_rate < kMinSampleRate || o.sample_rate > kMaxSampleRate)
+    why << "--sample-rate: must be between " << kMinSampleRate << " and " << kMaxSampleRate << " per second";
+  else if (duration * o.sample_rate > o.max_samples)
+    why << "--duration " << duration << " at --sample-rate " << o.sample_rate << " is " << duration * o.sample_rate
+        << " samples, more than " << o.max_samples << " (raise the limit with --max-samples N)";
+  return why.str();
+}
+
+bool asleep(const Simulation& sim) {
+  const State& s = sim.state();
+  for (int i = 0; i < s.ball_count(); ++i)
+    if (s.in_play[i] && !s.sleeping(i)) return false;
+  return true;
+}
+
+// The slice loop: advance in sample slices (the integrator's own steps do not depend on the slicing, simulation.hpp),
+// writing a trajectory row set after each; once every ball sleeps, nothing changes, so a run without a trajectory
+// jumps to its end.
+void simulate(Simulation& sim, const RunOptions& o, double duration, AtomicFile* csv) {
+  const double slice = 1.0 / o.sample_rate;
+  const long slices = static_cast<long>(std::ceil(duration / slice - 1e-9));
+  std::ostringstream rows;
+  rows.precision(10);
+  for (long k = 1; k <= slices && sim.status() == Status::Ok; ++k) {
+    if (!csv && !o.until_rest && asleep(sim)) {
+      sim.advance(duration - sim.time());
+      break;
+    }
+    sim.advance(std::min(k * slice, duration) - sim.time());
+    if (csv) {
+      rows.str("");
+      write_trajectory_rows(rows, sim);
+      csv->write(rows.str());
+    }
+    if (o.until_rest && sim.at_rest()) break;
   }
+}
+
+int run(const RunOptions& o) {
+  Scene scene = load_scene(o.scene, o.overrides);
   const double duration = o.duration.value_or(scene.duration);
-  if (!(duration > 0) || !std::isfinite(duration)) {
-    std::cerr << "shotlab: --duration: must be a positive number of seconds\n";
+  if (const std::string problem = check_run(o, duration); !problem.empty()) {
+    std::cerr << "shotlab: " << problem << "\n";
     return 1;
   }
   Prepared prepared = prepare(scene);
@@ -32,46 +75,43 @@ int run_scene(const RunOptions& o) {
               << " of the radius; the strike is simulated as if the tip held\n";
   }
   Simulation sim(std::move(prepared.model), std::move(prepared.state));
-
-  std::ofstream csv;
+  std::unique_ptr<AtomicFile> csv;
   if (!o.trajectory.empty()) {
-    csv.open(o.trajectory);
-    if (!csv) {
-      std::cerr << "shotlab: " << o.trajectory << ": cannot write the trajectory file\n";
-      return 1;
-    }
-    csv.precision(10);
-    write_trajectory_header(csv);
-    write_trajectory_rows(csv, sim);
+    csv = std::make_unique<AtomicFile>(o.trajectory);
+    std::ostringstream head;
+    head.precision(10);
+    write_trajectory_header(head);
+    write_trajectory_rows(head, sim);
+    csv->write(head.str());
   }
-  // Advance in sample slices; the integrator's own steps do not depend on the slicing (simulation.hpp).
-  const double slice = 1.0 / o.sample_rate;
-  const long slices = static_cast<long>(std::ceil(duration / slice - 1e-9));
-  for (long k = 1; k <= slices && sim.status() == Status::Ok; ++k) {
-    sim.advance(std::min(k * slice, duration) - sim.time());
-    if (csv.is_open()) write_trajectory_rows(csv, sim);
-    if (o.until_rest && sim.at_rest()) break;
-  }
-
-  if (!o.out.empty()) {
-    std::ofstream out(o.out);
-    out << result_to_json(sim, extra).dump(2) << "\n";
-    if (!out) {
-      std::cerr << "shotlab: " << o.out << ": cannot write the result file\n";
-      return 1;
-    }
-  }
+  simulate(sim, o, duration, csv.get());
+  if (csv) csv->commit();
+  if (!o.out.empty())
+    write_file_atomic(o.out,
+                      result_to_json(sim, extra).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   const Stats& st = sim.stats();
   if (!o.quiet)
-    std::cout << (scene.name.empty() ? o.scene : scene.name) << ": t = " << sim.time() << " s, " << method_name(sim.model().integrator.method) << " "
-              << st.steps << " steps (" << st.rejected_steps << " rejected), " << st.rhs_evaluations
-              << " rhs evaluations, " << sim.events().size() << " events, wall " << st.wall_seconds << " s\n";
+    std::cout << (scene.name.empty() ? o.scene : scene.name) << ": t = " << sim.time() << " s, "
+              << method_name(sim.model().integrator.method) << " " << st.steps << " steps (" << st.rejected_steps
+              << " rejected), " << st.rhs_evaluations << " rhs evaluations, " << sim.events().size()
+              << " events, wall " << st.wall_seconds << " s\n";
   if (sim.status() != Status::Ok) {
     std::cerr << "shotlab: " << o.scene << ": simulation stopped (" << status_name(sim.status())
               << "): " << sim.diagnostic() << "\n";
     return 3;
   }
   return 0;
+}
+
+}  // namespace
+
+int run_scene(const RunOptions& o) {
+  try {
+    return run(o);
+  } catch (const std::exception& e) {  // bad input (InputError), a file that cannot be written, anything else
+    std::cerr << "shotlab: " << e.what() << "\n";
+    return 1;
+  }
 }
 
 void add_run_command(CLI::App& app) {
@@ -82,7 +122,8 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--set", o->overrides, "Override a scene value: PATH=VALUE, e.g. materials.ball_cloth.friction=0.3");
   cmd->add_option("--out", o->out, "Write the result (final state, events, stats) as JSON");
   cmd->add_option("--trajectory", o->trajectory, "Write every ball's state as CSV");
-  cmd->add_option("--sample-rate", o->sample_rate, "Trajectory samples per second")->check(CLI::PositiveNumber);
+  cmd->add_option("--sample-rate", o->sample_rate, "Trajectory samples per second (0.001 to 100000)");
+  cmd->add_option("--max-samples", o->max_samples, "Refuse runs of more samples than this (default 1000000)");
   cmd->add_flag("--until-rest", o->until_rest, "Stop early once every ball is at rest");
   cmd->add_flag("-q,--quiet", o->quiet, "No summary line");
   cmd->callback([o] {

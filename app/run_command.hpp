@@ -6,6 +6,8 @@
 
 namespace shotlab {
 
+inline constexpr double kMinSampleRate = 1e-3, kMaxSampleRate = 1e5;  // Hz
+
 struct RunOptions {
   std::string scene;
   std::optional<double> duration;      // s, overrides the scene's
@@ -13,11 +15,13 @@ struct RunOptions {
   std::string out;                     // RESULT.json, empty: none
   std::string trajectory;              // CSV, empty: none
   double sample_rate = 60;             // Hz, trajectory samples (also the advance() slice)
+  double max_samples = 1e6;            // runs of more samples (duration x sample rate) are refused
   bool until_rest = false;             // stop early once every ball is at rest
   bool quiet = false;
 };
 
-// Exit status: 0 success, 1 bad input (message on stderr), 3 the simulation stopped (step limit, non-finite).
+// Exit status: 0 success, 1 bad input or a file that cannot be written (message on stderr), 3 the simulation stopped
+// (step limit, non-finite state, unstable).
 int run_scene(const RunOptions& options);
 
 }  // namespace shotlab

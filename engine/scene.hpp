@@ -30,6 +30,10 @@ struct InitialBall {
   Vec3 angular_velocity{0.0};  // rad/s
 };
 
+// s: the longest run a scene or a command may ask for (an hour; a shot rests within a minute, a Newton's cradle
+// swings for ever, so the bound is what stops a typo from running for days).
+inline constexpr double kMaxDuration = 3600.0;
+
 struct Scene {
   std::string name;
   std::string description;        // what to look for
@@ -37,7 +41,7 @@ struct Scene {
   std::vector<InitialBall> balls;
   std::optional<TableSpec> table;
   std::optional<CueStrike> cue;
-  double duration = 5.0;          // s
+  double duration = 5.0;          // s, at most kMaxDuration
   bool allow_overlap = false;     // balls may start interpenetrating (a deliberate pre-loaded contact)
 };
 

@@ -95,7 +95,8 @@ class Fonts {
 std::vector<Vec3> framed_points(const Scene& scene) {
   std::vector<Vec3> points;
   if (scene.table) {
-    const double hx = scene.table->length / 2 + scene.table->rail_width, hz = scene.table->width / 2 + scene.table->rail_width;
+    const double rail = scene.table->rail_width;
+    const double hx = scene.table->length / 2 + rail, hz = scene.table->width / 2 + rail;
     for (double sx : {-1.0, 1.0})
       for (double sz : {-1.0, 1.0}) points.push_back({sx * hx, 0, sz * hz});
     return points;
@@ -142,6 +143,20 @@ std::string initial_scene(const GuiOptions& o, const Settings& s) {
   if (!o.scene.empty()) return o.scene;
   if (!s.last_scene.empty() && std::filesystem::exists(s.last_scene)) return s.last_scene;
   return o.data_root + "/presets/break.json";
+}
+
+// A scene that cannot be opened at start is reported on stderr and in the banner, and a preset opens instead; the
+// settings' last scene and recent files stay as they were, so the user's file is not forgotten.
+void open_first_scene(Lab& lab, const std::string& path, const std::string& fallback) {
+  if (lab.load(path)) return;
+  const std::string problem = lab.message;
+  std::cerr << "shotlab: " << problem << '\n';
+  const std::string last = lab.settings.last_scene;
+  const std::vector<std::string> recent = lab.settings.recent;
+  lab.load(fallback);
+  lab.settings.last_scene = last;
+  lab.settings.recent = recent;
+  lab.say(MessageKind::LoadError, problem + "\n(the " + lab.scene.name + " preset is open instead)");
 }
 
 Layout frame_layout(const Settings& s, int w, int h) {
@@ -210,7 +225,7 @@ int run_gui(const GuiOptions& options) {
       MouseDrag drag;
       Pacer pacer;
       lab.on_load = [&settings](const Scene& s) { on_scene_loaded(settings.camera, s); };
-      if (!lab.load(initial_scene(options, settings))) lab.load(options.data_root + "/presets/stun.json");
+      open_first_scene(lab, initial_scene(options, settings), options.data_root + "/presets/stun.json");
       ScriptHost host{lab, settings.camera, nullptr};
       double last = glfwGetTime(), frame_seconds = 0;
       long frame = 0;
@@ -256,7 +271,8 @@ int run_gui(const GuiOptions& options) {
         draw_overlay(lab, viewport, ImGui::GetBackgroundDrawList());
 
         if (!lab.strobe_request.empty()) write_strobe(lab, renderer, viewport, h);
-        renderer.begin(viewport.view_proj, viewport.eye, static_cast<int>(viewport.x0), static_cast<int>(viewport.width), h);
+        renderer.begin(viewport.view_proj, viewport.eye, static_cast<int>(viewport.x0),
+                       static_cast<int>(viewport.width), h);
         renderer.draw_scene(lab.scene, lab.shot ? lab.shot->sim().model() : lab.table_model);
         draw_balls(renderer, lab, lab.frame(), 1.0f);
         ImGui::Render();

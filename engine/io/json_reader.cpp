@@ -4,6 +4,21 @@
 
 namespace shotlab {
 
+std::string describe(const nlohmann::json& v) {
+  using nlohmann::json;
+  constexpr size_t kLongest = 40;  // characters quoted from a string
+  switch (v.type()) {
+    case json::value_t::array: return "an array of " + std::to_string(v.size());
+    case json::value_t::object: return "an object";
+    case json::value_t::string: {
+      const std::string text = json(v.get<std::string>().substr(0, kLongest)).dump(-1, ' ', false,
+                                                                                  json::error_handler_t::replace);
+      return v.get<std::string>().size() > kLongest ? text.substr(0, text.size() - 1) + "...\"" : text;
+    }
+    default: return v.dump(-1, ' ', false, json::error_handler_t::replace);
+  }
+}
+
 JsonNode::JsonNode(const nlohmann::json& j, std::string source, std::string path)
     : j_(&j), source_(std::move(source)), path_(std::move(path)), used_(std::make_shared<std::set<std::string>>()) {}
 
@@ -51,18 +66,18 @@ double JsonNode::number() const {
 
 double JsonNode::positive() const {
   const double v = number();
-  if (!(v > 0)) fail("must be positive, got " + j_->dump());
+  if (!(v > 0)) fail("must be positive, got " + describe(*j_));
   return v;
 }
 
 double JsonNode::non_negative() const {
   const double v = number();
-  if (v < 0) fail("must not be negative, got " + j_->dump());
+  if (v < 0) fail("must not be negative, got " + describe(*j_));
   return v;
 }
 
 int JsonNode::integer(int min, int max) const {
-  if (!j_->is_number_integer()) fail("must be an integer, got " + j_->dump());
+  if (!j_->is_number_integer()) fail("must be an integer, got " + describe(*j_));
   const long long v = j_->get<long long>();
   if (v < min || v > max) fail("must be between " + std::to_string(min) + " and " + std::to_string(max));
   return static_cast<int>(v);

@@ -17,6 +17,10 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A value as an error message quotes it: a number or a short string as written, anything longer or nested by its
+// kind ("an array of 3", "an object"); invalid UTF-8 replaced. Never long, never recursive.
+std::string describe(const nlohmann::json& value);
+
 class JsonNode {
  public:
   JsonNode(const nlohmann::json& j, std::string source, std::string path);

@@ -3,6 +3,14 @@
 namespace shotlab {
 namespace {
 nlohmann::json vec(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+// A CSV field as RFC 4180 writes it: quoted (quotes doubled) when it holds a comma, a quote or a line break.
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
 }  // namespace
 
 nlohmann::json result_to_json(const Simulation& sim, const std::vector<Event>& extra_events) {
@@ -41,7 +49,7 @@ void write_trajectory_header(std::ostream& out) { out << "time,ball,x,y,z,vx,vy,
 void write_trajectory_rows(std::ostream& out, const Simulation& sim) {
   const State& s = sim.state();
   for (int i = 0; i < s.ball_count(); ++i) {
-    out << s.time << ',' << sim.model().balls[i].id;
+    out << s.time << ',' << csv_field(sim.model().balls[i].id);
     for (int k = 0; k < kBallDofs; ++k) out << ',' << s.x[9 * i + k];
     out << ',' << motion_name(sim.motion(i)) << '\n';
   }

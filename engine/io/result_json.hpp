@@ -11,7 +11,8 @@ namespace shotlab {
 // stats (integrator, steps, rejected_steps, rhs_evaluations, wall_seconds).
 nlohmann::json result_to_json(const Simulation& sim, const std::vector<Event>& extra_events = {});
 
-// CSV with one row per ball per sample: time,ball,x,y,z,vx,vy,vz,wx,wy,wz,motion.
+// CSV with one row per ball per sample: time,ball,x,y,z,vx,vy,vz,wx,wy,wz,motion (RFC 4180: an id with a comma, a
+// quote or a line break is quoted).
 void write_trajectory_header(std::ostream& out);
 void write_trajectory_rows(std::ostream& out, const Simulation& sim);
 

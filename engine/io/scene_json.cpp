@@ -1,11 +1,17 @@
 #include "scene_json.hpp"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <memory>
+#include <set>
 #include <sstream>
 
+#include "atomic_file.hpp"
 #include "engine/rack.hpp"
 
 namespace shotlab {
@@ -232,12 +238,36 @@ std::string json_path_at(const std::string& text, size_t pos) {
   return path.empty() ? "(top level)" : path;
 }
 
+// Rejects, while parsing, a document nested deeper than kMaxJsonDepth and a key given twice in one object (the
+// library would keep the last one silently).
+json::parser_callback_t strict_checks(std::string& problem) {
+  auto keys = std::make_shared<std::vector<std::set<std::string>>>();  // of each open object, innermost last
+  return [keys, &problem](int depth, json::parse_event_t event, json& parsed) {
+    if (!problem.empty()) return false;
+    if (depth > kMaxJsonDepth) {
+      problem = "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels";
+    } else if (event == json::parse_event_t::object_start) {
+      keys->emplace_back();
+    } else if (event == json::parse_event_t::object_end && !keys->empty()) {
+      keys->pop_back();
+    } else if (event == json::parse_event_t::key && !keys->empty()) {
+      if (!keys->back().insert(parsed.get<std::string>()).second)
+        problem = "the key " + describe(parsed) + " is given twice in one object";
+    }
+    return problem.empty();
+  };
+}
+
 }  // namespace
 
 json parse_json_text(const std::string& text, const std::string& source) {
+  std::string problem;
   try {
-    return json::parse(text);
+    json doc = json::parse(text, strict_checks(problem));
+    if (!problem.empty()) throw InputError(source + ": " + problem);
+    return doc;
   } catch (const json::parse_error& e) {
+    if (!problem.empty()) throw InputError(source + ": " + problem);
     throw InputError(source + ": malformed JSON: " + e.what());
   } catch (const json::out_of_range& e) {
     // Number overflow (1e999): the library gives no position; find the first such token ourselves.
@@ -260,7 +290,10 @@ Scene parse_scene(const json& doc, const std::string& source) {
   s.model = empty_model();
   n.optional("name", [&](const JsonNode& v) { s.name = v.string(); });
   n.optional("description", [&](const JsonNode& v) { s.description = v.string(); });
-  n.optional("duration", [&](const JsonNode& v) { s.duration = v.positive(); });
+  n.optional("duration", [&](const JsonNode& v) {
+    s.duration = v.positive();
+    if (s.duration > kMaxDuration) v.fail("must be at most " + std::to_string(static_cast<int>(kMaxDuration)) + " s");
+  });
   n.optional("allow_overlap", [&](const JsonNode& v) { s.allow_overlap = v.boolean(); });
   n.optional("gravity", [&](const JsonNode& v) { s.model.options.gravity = v.vec3(); });
   n.optional("model", [&](const JsonNode& m) {
@@ -327,26 +360,41 @@ Scene parse_scene(const json& doc, const std::string& source) {
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  std::ifstream in(path);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a folder, not a scene file");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the file");
-  std::stringstream text;
-  text << in.rdbuf();
-  json doc = parse_json_text(text.str(), path);
+  std::string text(kMaxSceneBytes + 1, '\0');  // a scene is kilobytes: /dev/zero or a wrong file must not fill memory
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<size_t>(in.gcount()));
+  if (text.size() > kMaxSceneBytes)
+    throw InputError(path + ": larger than " + std::to_string(kMaxSceneBytes >> 20) + " MiB, not a scene file");
+  json doc = parse_json_text(text, path);
   for (const std::string& o : overrides) apply_override(doc, o);
   return parse_scene(doc, overrides.empty() ? path : path + " (with --set overrides)");
 }
 
-void apply_override(json& doc, const std::string& assignment) {
-  const auto eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0) throw InputError("--set " + assignment + ": expected PATH=VALUE");
-  const std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
-  json value;
+namespace {
+
+// The VALUE of --set PATH=VALUE: JSON, or a bare word taken as a string (an integrator name).
+json override_value(const std::string& text, const std::string& where) {
+  std::string problem;
   try {
-    value = json::parse(text);
+    json value = json::parse(text, strict_checks(problem));
+    if (!problem.empty()) throw InputError(where + ": " + problem);
+    return value;
   } catch (const json::parse_error&) {
-    value = text;  // a bare word: a string such as an integrator name
+    if (!problem.empty()) throw InputError(where + ": " + problem);
+    const bool looks_like_json = !text.empty() && std::strchr("{[\"-0123456789", text[0]);
+    if (looks_like_json) throw InputError(where + ": the value is not valid JSON (a bare word is taken as a string)");
+    return text;
+  } catch (const json::exception&) {  // a number that overflows (1e400)
+    throw InputError(where + ": the value is not a finite number");
   }
-  // Split "a.b[2].c" into a, b, 2, c.
+}
+
+// Splits "a.b[2].c" into a, b, 2, c.
+std::vector<std::string> override_path(const std::string& path) {
   std::vector<std::string> parts;
   std::string cur;
   for (char ch : path) {
@@ -358,28 +406,44 @@ void apply_override(json& doc, const std::string& assignment) {
     }
   }
   if (!cur.empty()) parts.push_back(cur);
+  return parts;
+}
+
+// The element of an array named by an index or by its "id"; nullptr when there is none.
+json* array_element(json& array, const std::string& key) {
+  if (std::all_of(key.begin(), key.end(), ::isdigit)) {
+    size_t i = 0;
+    const auto [end, err] = std::from_chars(key.data(), key.data() + key.size(), i);
+    return err == std::errc() && end == key.data() + key.size() && i < array.size() ? &array[i] : nullptr;
+  }
+  for (json& e : array)
+    if (e.is_object() && e.contains("id") && e["id"].is_string() && e["id"].get<std::string>() == key) return &e;
+  return nullptr;
+}
+
+}  // namespace
+
+void apply_override(json& doc, const std::string& assignment) {
+  const std::string where = "--set " + describe(json(assignment));
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) throw InputError(where + ": expected PATH=VALUE");
+  const std::string path = assignment.substr(0, eq);
+  const json value = override_value(assignment.substr(eq + 1), where);
+  const std::vector<std::string> parts = override_path(path);
+  if (parts.empty()) throw InputError(where + ": the path names no field");
   json* node = &doc;
-  for (size_t k = 0; k < parts.size(); ++k) {
-    const std::string& key = parts[k];
-    const bool last = k + 1 == parts.size();
+  for (const std::string& key : parts) {
     if (node->is_array()) {
-      json* found = nullptr;
-      if (!key.empty() && std::all_of(key.begin(), key.end(), ::isdigit)) {
-        const size_t i = std::stoul(key);
-        if (i < node->size()) found = &(*node)[i];
-      } else {
-        for (json& e : *node)
-          if (e.is_object() && e.value("id", "") == key) found = &e;
-      }
-      if (!found) throw InputError("--set " + assignment + ": no element '" + key + "' in " + path);
-      node = found;
+      node = array_element(*node, key);
+      if (!node) throw InputError(where + ": no element " + describe(json(key)) + " in that array");
     } else {
       if (node->is_null()) *node = json::object();
-      if (!node->is_object()) throw InputError("--set " + assignment + ": '" + key + "' is inside a non-object");
+      if (!node->is_object())
+        throw InputError(where + ": " + describe(json(key)) + " is inside a value that is not an object");
       node = &(*node)[key];
     }
-    if (last) *node = value;
   }
+  *node = value;
 }
 
 json scene_to_json(const Scene& s) {
@@ -430,19 +494,7 @@ json scene_to_json(const Scene& s) {
 }
 
 void save_scene(const std::string& path, const Scene& scene) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << scene_to_json(scene).dump(2) << "\n";
-    if (!out.flush()) {
-      std::remove(tmp.c_str());
-      throw InputError(path + ": cannot write the file");
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw InputError(path + ": cannot replace the file");
-  }
+  write_file_atomic(path, scene_to_json(scene).dump(2, ' ', false, json::error_handler_t::replace) + "\n");
 }
 
 }  // namespace shotlab

@@ -10,11 +10,15 @@
 
 namespace shotlab {
 
+inline constexpr size_t kMaxSceneBytes = size_t{16} << 20;  // a scene file larger than this is refused
+
 // Reads a scene file, applies PATH=VALUE overrides (see apply_override), and parses it. Throws InputError naming
 // the file, the field and the problem.
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 
-// Parses JSON text; a syntax error or a number that overflows becomes an InputError naming `source` (and the field).
+// Parses JSON text; a syntax error, a number that overflows, nesting deeper than kMaxJsonDepth or a key given twice
+// in one object becomes an InputError naming `source` (and the field).
+inline constexpr int kMaxJsonDepth = 64;  // nesting levels a document may have (scene files need 4)
 nlohmann::json parse_json_text(const std::string& text, const std::string& source);
 
 // Parses a scene document; `source` names it in error messages.
@@ -27,8 +31,7 @@ void apply_override(nlohmann::json& doc, const std::string& assignment);
 // The scene as a document that parse_scene reads back to the same scene (every field explicit).
 nlohmann::json scene_to_json(const Scene& scene);
 
-// Writes the scene to a temporary file beside `path` and renames it over `path`: a failed write never leaves a
-// half-written scene behind. Throws InputError.
+// Writes the scene atomically (atomic_file.hpp): a failed write leaves the old file as it was. Throws InputError.
 void save_scene(const std::string& path, const Scene& scene);
 
 }  // namespace shotlab

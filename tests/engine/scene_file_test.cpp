@@ -121,15 +121,32 @@ TEST(SceneFile, SaveAndLoadGiveTheSameScene) {
 
 TEST(SceneFile, FailedSaveLeavesTheOldFileAlone) {
   const std::string path = temp_file("keep.json", "{\"name\": \"old\"}");
+  const std::string users_tmp = temp_file("keep.json.tmp", "the user's own file");
   const Scene s = load_scene(preset("stun.json"));
   EXPECT_THROW(save_scene("/nonexistent-dir/x.json", s), InputError);
-  fs::create_directory(path + ".tmp");  // a blocked temporary file makes the write fail
-  EXPECT_THROW(save_scene(path, s), InputError);
-  fs::remove(path + ".tmp");
+  EXPECT_THROW(save_scene(test_dir().string(), s), InputError);  // a folder is not replaced
   std::ifstream in(path);
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_EQ(text.str(), "{\"name\": \"old\"}");
+  // A save goes through a temporary file of its own: a file named like a fixed temporary one is left alone.
+  save_scene(path, s);
+  std::ifstream other(users_tmp);
+  std::stringstream other_text;
+  other_text << other.rdbuf();
+  EXPECT_EQ(other_text.str(), "the user's own file");
+}
+
+// A save replaces the file a symbolic link points to (the link stays) and keeps the file's permissions.
+TEST(SceneFile, SaveFollowsLinksAndKeepsPermissions) {
+  const std::string real = temp_file("real.json", "{}");
+  const fs::path link = test_dir() / "link.json";
+  fs::create_symlink(real, link);
+  fs::permissions(real, fs::perms::owner_read | fs::perms::owner_write);
+  save_scene(link.string(), load_scene(preset("stun.json")));
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(load_scene(real).name, load_scene(preset("stun.json")).name);
+  EXPECT_EQ(fs::status(real).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
 }
 
 // The command line: exit status and message.

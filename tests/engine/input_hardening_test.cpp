@@ -1,0 +1,171 @@
+// Every input path refuses what it cannot use with a message naming the file or option, the field and the problem,
+// and never crashes, never runs without end and never reports success for a run that did nothing (issue 29).
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support.hpp"
+
+namespace shotlab::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch() {
+  static const fs::path dir = [] {
+    fs::path d = fs::temp_directory_path() / ("shotlab_hardening_" + std::to_string(getpid()));
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+std::string write(const std::string& name, const std::string& text) {
+  const fs::path p = scratch() / name;
+  std::ofstream(p, std::ios::binary) << text;
+  return p.string();
+}
+
+std::string load_error(const std::string& path, const std::vector<std::string>& overrides = {}) {
+  try {
+    load_scene(path, overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Exit status, stderr. `env` goes before the command (e.g. "DISPLAY= ").
+int cli(const std::string& args, std::string& err, const std::string& env = "") {
+  const std::string err_file = (scratch() / "err.txt").string();
+  const int status = std::system((env + std::string(SHOTLAB_BIN) + " " + args + " > /dev/null 2> " + err_file).c_str());
+  std::ifstream in(err_file);
+  std::stringstream text;
+  text << in.rdbuf();
+  err = text.str();
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::string nested(int levels, const std::string& inner) {
+  return std::string(levels, '[') + inner + std::string(levels, ']');
+}
+
+TEST(Hardening, DeepNestingIsRefusedNotCrashed) {
+  const std::string deep = "{\"integrator\": {\"max_steps_per_call\": " + nested(60000, "1") + "}}";
+  const std::string err = load_error(write("deep.json", deep));
+  EXPECT_NE(err.find("nested deeper than 64 levels"), std::string::npos) << err.substr(0, 200);
+  std::string rack = "{\"rack\": {\"rows\": ";
+  for (int k = 0; k < 100000; ++k) rack += "{\"a\": ";
+  rack += "1" + std::string(100000, '}') + "}}";
+  EXPECT_NE(load_error(write("deep_rack.json", rack)).find("nested deeper"), std::string::npos);
+  EXPECT_NE(load_error(preset("stun.json"), {"duration=" + nested(60000, "1")}).find("nested deeper"),
+            std::string::npos);
+}
+
+TEST(Hardening, MessagesQuoteValuesShortly) {
+  std::string list = "[";
+  for (int k = 0; k < 20000; ++k) {
+    if (k) list += ',';
+    list += std::to_string(k);
+  }
+  list += "]";
+  const std::string err = load_error(write("long.json", "{\"integrator\": {\"max_steps_per_call\": " + list + "}}"));
+  EXPECT_NE(err.find("integrator.max_steps_per_call: must be an integer, got an array of 20000"), std::string::npos)
+      << err.substr(0, 300);
+  EXPECT_LT(err.size(), 300u);
+}
+
+TEST(Hardening, DuplicateKeysAndOversizedFilesAreRefused) {
+  EXPECT_NE(load_error(write("dup.json", R"({"duration": -5, "duration": 1})")).find("\"duration\" is given twice"),
+            std::string::npos);
+  EXPECT_NE(load_error("/dev/zero").find("larger than 16 MiB"), std::string::npos);
+  EXPECT_NE(load_error(scratch().string()).find("is a folder"), std::string::npos);
+  EXPECT_NE(load_error(write("long_run.json", R"({"duration": 1e9})")).find("duration: must be at most 3600 s"),
+            std::string::npos);
+}
+
+// Each of these threw an exception nobody caught (exit 134) before.
+TEST(Hardening, OverridesNeverThrowAnythingButInputError) {
+  const std::string numeric_id = write("numeric_id.json", R"({"balls": [{"id": 7, "position": [0, 0.028575, 0]}]})");
+  for (const auto& [path, set] : std::vector<std::pair<std::string, std::string>>{
+           {preset("stun.json"), "balls[99999999999999999999999].mass=1"},
+           {preset("stun.json"), "duration=1e400"},
+           {numeric_id, "balls.x.mass=1"},
+           {preset("stun.json"), "balls[0].id=\xff"},
+           {preset("stun.json"), ".=1"},
+           {preset("stun.json"), "duration={bad"}}) {
+    SCOPED_TRACE(set);
+    EXPECT_FALSE(load_error(path, {set}).empty());
+    std::string err;
+    EXPECT_EQ(cli("run " + path + " --set '" + set + "' --duration 0.1", err), 1) << err;
+    EXPECT_NE(err.find("--set"), std::string::npos) << err;
+  }
+}
+
+TEST(Hardening, RunsThatCouldNotEndOrDoNothingAreRefused) {
+  std::string err;
+  EXPECT_EQ(cli("run " + preset("cut.json") + " --duration 1e9", err), 1);
+  EXPECT_NE(err.find("at most 3600"), std::string::npos) << err;
+  for (const char* rate : {"nan", "1e19", "1e-300", "0", "-5"}) {
+    EXPECT_EQ(cli("run " + preset("cut.json") + " --sample-rate " + rate, err), 1) << rate;
+    EXPECT_NE(err.find("--sample-rate"), std::string::npos) << err;
+  }
+  EXPECT_EQ(cli("run " + preset("cut.json") + " --duration 3600 --sample-rate 1000", err), 1);
+  EXPECT_NE(err.find("--max-samples"), std::string::npos) << err;
+}
+
+// The cut shot rests after about 6 s; the rest of an hour is nothing to integrate.
+TEST(Hardening, ARunWhoseBallsSleepJumpsToItsEnd) {
+  const std::string out = (scratch() / "hour.json").string();
+  std::string err;
+  ASSERT_EQ(cli("run " + preset("cut.json") + " --duration 3600 --out " + out, err), 0) << err;
+  const nlohmann::json r = nlohmann::json::parse(std::ifstream(out));
+  EXPECT_DOUBLE_EQ(r["time"].get<double>(), 3600.0);
+  EXPECT_LT(r["stats"]["steps"].get<long>(), 20000);
+}
+
+TEST(Hardening, FailedWritesAreErrors) {
+  std::string err;
+  EXPECT_EQ(cli("run " + preset("stun.json") + " --duration 0.1 --trajectory /dev/full", err), 1);
+  EXPECT_NE(err.find("/dev/full"), std::string::npos) << err;
+  EXPECT_EQ(cli("run " + preset("stun.json") + " --duration 0.1 --out /nonexistent-dir/r.json", err), 1);
+  EXPECT_NE(err.find("/nonexistent-dir/r.json"), std::string::npos) << err;
+}
+
+TEST(Hardening, CsvQuotesIdsAsRfc4180Says) {
+  const std::string scene = write("ids.json", R"({"balls": [{"id": "a,b\"c", "position": [0, 0.028575, 0]}],
+    "colliders": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "ball_cloth"}]})");
+  const std::string csv = (scratch() / "ids.csv").string();
+  std::string err;
+  ASSERT_EQ(cli("run " + scene + " --duration 0.05 --trajectory " + csv, err), 0) << err;
+  std::ifstream in(csv);
+  std::string header, row;
+  std::getline(in, header);
+  std::getline(in, row);
+  EXPECT_NE(row.find(",\"a,b\"\"c\","), std::string::npos) << row;
+}
+
+TEST(Hardening, BadCommandLinesExitOne) {
+  std::string err;
+  EXPECT_EQ(cli("--bogus", err), 1);
+  EXPECT_EQ(cli("run", err), 1);
+  EXPECT_EQ(cli("--width -5", err), 1);
+  EXPECT_NE(err.find("--width"), std::string::npos) << err;
+  EXPECT_EQ(cli("--help", err), 0);
+}
+
+// Without a display, a scene asked for is checked and the reason the window cannot open is given.
+TEST(Hardening, NoDisplaySaysWhy) {
+  std::string err;
+  EXPECT_EQ(cli("--scene /nonexistent/scene.json", err, "env -u DISPLAY -u WAYLAND_DISPLAY "), 1);
+  EXPECT_NE(err.find("/nonexistent/scene.json"), std::string::npos) << err;
+  EXPECT_EQ(cli("--scene " + preset("cut.json"), err, "env -u DISPLAY -u WAYLAND_DISPLAY "), 1);
+  EXPECT_NE(err.find("no display"), std::string::npos) << err;
+}
+
+}  // namespace
+}  // namespace shotlab::test
