@@ -272,13 +272,16 @@ json parse_json_text(const std::string& text, const std::string& source) {
   } catch (const json::out_of_range& e) {
     // Number overflow (1e999): the library gives no position; find the first such token ourselves.
     size_t pos = std::string::npos;
-    for (size_t i = 0; i < text.size() && pos == std::string::npos; ++i)
-      if (std::isdigit(static_cast<unsigned char>(text[i])) && (i == 0 || !std::isalnum(static_cast<unsigned char>(text[i - 1])))) {
-        size_t end = i;
-        while (end < text.size() && std::strchr("0123456789.eE+-", text[end])) ++end;
-        if (!std::isfinite(std::strtod(text.substr(i, end - i).c_str(), nullptr))) pos = i;
-        i = end;
-      }
+    bool in_string = false;  // "1e400" inside a string (a name) is no number
+    for (size_t i = 0; i < text.size() && pos == std::string::npos; ++i) {
+      if (text[i] == '"' && (i == 0 || text[i - 1] != '\\')) in_string = !in_string;
+      if (in_string || !std::isdigit(static_cast<unsigned char>(text[i]))) continue;
+      if (i > 0 && std::isalnum(static_cast<unsigned char>(text[i - 1]))) continue;
+      size_t end = i;
+      while (end < text.size() && std::strchr("0123456789.eE+-", text[end])) ++end;
+      if (!std::isfinite(std::strtod(text.substr(i, end - i).c_str(), nullptr))) pos = i;
+      i = end - 1;
+    }
     throw InputError(source + ": " + json_path_at(text, pos) + ": must be a finite number (" + e.what() + ")");
   }
 }
@@ -342,6 +345,7 @@ Scene parse_scene(const json& doc, const std::string& source) {
       Rod rod{index[id], r["anchor"].vec3(), 0.0};
       rod.length = glm::length(s.balls[rod.ball].position - rod.anchor);
       r.optional("length", [&](const JsonNode& l) { rod.length = l.positive(); });
+      if (!(rod.length > 0)) r["anchor"].fail("is at the ball's centre: a rod needs a length (give \"length\")");
       r.finish();
       s.model.rods.push_back(rod);
     }

@@ -88,6 +88,16 @@ TEST(Hardening, DuplicateKeysAndOversizedFilesAreRefused) {
             std::string::npos);
 }
 
+TEST(Hardening, MessagesBlameTheRightField) {
+  const std::string err = load_error(write("overflow.json", R"({"name": "1e400", "duration": 1e400})"));
+  EXPECT_NE(err.find(": duration: must be a finite number"), std::string::npos) << err;
+  // A rod whose length is left to its default and whose anchor is the ball's centre has no length: refused when
+  // read (it used to load, save, and then fail to load again).
+  const std::string rod = load_error(write("rod.json", R"({"balls": [{"id": "a", "position": [0, 1, 0]}],
+    "rods": [{"ball": "a", "anchor": [0, 1, 0]}]})"));
+  EXPECT_NE(rod.find("rods[0].anchor: is at the ball's centre"), std::string::npos) << rod;
+}
+
 // Each of these threw an exception nobody caught (exit 134) before.
 TEST(Hardening, OverridesNeverThrowAnythingButInputError) {
   const std::string numeric_id = write("numeric_id.json", R"({"balls": [{"id": 7, "position": [0, 0.028575, 0]}]})");
