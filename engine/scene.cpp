@@ -28,6 +28,11 @@ void validate(const Scene& s) {
       for (size_t j = i + 1; j < s.balls.size(); ++j) {
         const double gap = glm::length(s.balls[i].position - s.balls[j].position) - s.balls[i].spec.radius -
                            s.balls[j].spec.radius;
+        if (gap < -1e-9 && s.rack && i >= s.rack->first)  // both racked: the rack's spacing made them
+          fail("rack: the racked balls '" + s.balls[i].spec.id + "' and '" + s.balls[j].spec.id + "' overlap by " +
+               std::to_string(-gap * 1e3) + " mm (rack.jitter " + std::to_string(s.rack->spec.jitter) +
+               " radii is too much for rack.gap " + std::to_string(s.rack->spec.gap) +
+               " m; set \"allow_overlap\": true if this is intended)");
         if (gap < -1e-9)
           fail("balls[" + std::to_string(j) + "].position: ball '" + s.balls[j].spec.id + "' overlaps ball '" +
                s.balls[i].spec.id + "' by " + std::to_string(-gap * 1e3) +

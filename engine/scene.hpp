@@ -1,6 +1,7 @@
 // A scene: a model, the balls' initial state, an optional cue strike and how long to run. This is what a preset file
 // holds (engine/io reads and writes it); the engine itself never touches files.
 #pragma once
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,25 @@ struct InitialBall {
 // swings for ever, so the bound is what stops a typo from running for days).
 inline constexpr double kMaxDuration = 3600.0;
 
+// A triangle rack of object balls (rack.hpp builds it).
+struct RackSpec {
+  int rows = 5;                // 5 rows = 15 balls
+  double apex_x = 0.635;       // m, the front ball's centre (foot spot of a 9 ft table)
+  double apex_z = 0.0;         // m
+  double gap = 0.0;            // m, extra spacing between neighbours (0 = frozen, touching)
+  double jitter = 0.0;         // each ball displaced uniformly within this many ball radii in x and z
+  uint32_t seed = 1;           // for the jitter: the same seed gives the same rack on every machine
+  int first_number = 1;        // ids are the numbers first_number, first_number + 1, ...
+};
+
+// Where a scene's racked balls came from: kept so that a saved scene writes its rack back (seed and jitter included)
+// while the racked balls are as racked, and so that a message about them names the rack.
+struct RackOrigin {
+  RackSpec spec;
+  std::string kind;   // BallKind name
+  size_t first = 0;   // index in Scene::balls of the first racked ball
+};
+
 struct Scene {
   std::string name;
   std::string description;        // what to look for
@@ -43,6 +63,7 @@ struct Scene {
   std::optional<CueStrike> cue;
   double duration = 5.0;          // s, at most kMaxDuration
   bool allow_overlap = false;     // balls may start interpenetrating (a deliberate pre-loaded contact)
+  std::optional<RackOrigin> rack;
 };
 
 // Checks what the types cannot (overlaps, positive sizes, rods and cue naming real balls); throws

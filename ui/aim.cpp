@@ -104,6 +104,9 @@ Scene break_scene(const Scene& from) {
   rack.apex_x = t.length / 4;
   s.balls = {cue};
   for (InitialBall& b : triangle_rack(rack, kind)) s.balls.push_back(b);
+  s.rack.reset();
+  if (const BallKind* k = find_ball_kind("pool"); cue.spec.mass == k->mass && cue.spec.radius == k->radius)
+    s.rack = RackOrigin{rack, k->name, 1};  // saved as a rack
   CueStrike strike = from.cue.value_or(CueStrike{});
   strike.ball = cue.spec.id;
   strike.speed = kBreakSpeed;

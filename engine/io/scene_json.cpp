@@ -168,7 +168,7 @@ InitialBall read_ball(const JsonNode& n, const BallKind& default_kind) {
   return b;
 }
 
-void read_rack(const JsonNode& n, const BallKind& kind, std::vector<InitialBall>& balls) {
+void read_rack(const JsonNode& n, const BallKind& kind, Scene& s) {
   RackSpec r;
   const std::string type = n["type"].string();
   if (type != "triangle") n["type"].fail("unknown rack type '" + type + "' (triangle)");
@@ -183,7 +183,22 @@ void read_rack(const JsonNode& n, const BallKind& kind, std::vector<InitialBall>
   n.optional("seed", [&](const JsonNode& v) { r.seed = static_cast<uint32_t>(v.integer(0, 1 << 30)); });
   n.optional("first_number", [&](const JsonNode& v) { r.first_number = v.integer(0, 1 << 20); });
   n.finish();
-  for (InitialBall& b : triangle_rack(r, kind)) balls.push_back(std::move(b));
+  s.rack = RackOrigin{r, kind.name, s.balls.size()};
+  for (InitialBall& b : triangle_rack(r, kind)) s.balls.push_back(std::move(b));
+}
+
+// The racked balls as a rack generates them (ids, positions, no motion): then a saved scene writes the rack.
+bool racked_as_generated(const Scene& s) {
+  if (!s.rack || !find_ball_kind(s.rack->kind)) return false;
+  const std::vector<InitialBall> rack = triangle_rack(s.rack->spec, *find_ball_kind(s.rack->kind));
+  if (s.balls.size() != s.rack->first + rack.size()) return false;
+  for (size_t k = 0; k < rack.size(); ++k) {
+    const InitialBall& a = s.balls[s.rack->first + k];
+    if (a.spec.id != rack[k].spec.id || a.position != rack[k].position || a.velocity != Vec3{0.0} ||
+        a.angular_velocity != Vec3{0.0} || a.spec.mass != rack[k].spec.mass || a.spec.radius != rack[k].spec.radius)
+      return false;
+  }
+  return true;
 }
 
 void read_cue(const JsonNode& n, CueStrike& c) {
@@ -335,7 +350,7 @@ Scene parse_scene(const json& doc, const std::string& source) {
   n.optional("balls", [&](const JsonNode& v) {
     for (const JsonNode& b : v.items()) s.balls.push_back(read_ball(b, *kind));
   });
-  n.optional("rack", [&](const JsonNode& v) { read_rack(v, *kind, s.balls); });
+  n.optional("rack", [&](const JsonNode& v) { read_rack(v, *kind, s); });
   std::map<std::string, int> index;
   for (size_t i = 0; i < s.balls.size(); ++i) index[s.balls[i].spec.id] = static_cast<int>(i);
   n.optional("rods", [&](const JsonNode& v) {
@@ -480,10 +495,19 @@ json scene_to_json(const Scene& s) {
     doc["colliders"].push_back(j);
   }
   doc["balls"] = json::array();
-  for (const InitialBall& b : s.balls)
+  const bool rack = racked_as_generated(s);
+  if (rack) {
+    const RackSpec& r = s.rack->spec;
+    doc["ball_kind"] = s.rack->kind;
+    doc["rack"] = {{"type", "triangle"}, {"rows", r.rows}, {"apex", {r.apex_x, 0.0, r.apex_z}}, {"gap", r.gap},
+                   {"jitter", r.jitter}, {"seed", r.seed}, {"first_number", r.first_number}};
+  }
+  for (size_t i = 0; i < (rack ? s.rack->first : s.balls.size()); ++i) {
+    const InitialBall& b = s.balls[i];
     doc["balls"].push_back({{"id", b.spec.id}, {"mass", b.spec.mass}, {"radius", b.spec.radius},
                             {"position", vec(b.position)}, {"velocity", vec(b.velocity)},
                             {"angular_velocity", vec(b.angular_velocity)}});
+  }
   doc["rods"] = json::array();
   for (const Rod& r : s.model.rods)
     doc["rods"].push_back({{"ball", s.balls[r.ball].spec.id}, {"anchor", vec(r.anchor)}, {"length", r.length}});

@@ -98,6 +98,30 @@ TEST(Hardening, MessagesBlameTheRightField) {
   EXPECT_NE(rod.find("rods[0].anchor: is at the ball's centre"), std::string::npos) << rod;
 }
 
+// A saved scene keeps its rack (seed and jitter) while the racked balls are as racked; a moved ball saves them all.
+TEST(Hardening, SavingKeepsTheRack) {
+  Scene s = load_scene(preset("break_realistic.json"));
+  ASSERT_TRUE(s.rack);
+  const std::string path = (scratch() / "rack.json").string();
+  save_scene(path, s);
+  const nlohmann::json saved = nlohmann::json::parse(std::ifstream(path));
+  EXPECT_EQ(saved["rack"]["seed"], s.rack->spec.seed);
+  EXPECT_EQ(saved["rack"]["jitter"], s.rack->spec.jitter);
+  EXPECT_EQ(saved["balls"].size(), s.rack->first);
+  EXPECT_EQ(scene_to_json(load_scene(path)), scene_to_json(s));
+  s.balls.back().position.x += 0.01;
+  save_scene(path, s);
+  const nlohmann::json moved = nlohmann::json::parse(std::ifstream(path));
+  EXPECT_FALSE(moved.contains("rack"));
+  EXPECT_EQ(moved["balls"].size(), s.balls.size());
+}
+
+TEST(Hardening, AnOverlapMadeByTheRackNamesTheRack) {
+  const std::string err = load_error(preset("break_realistic.json"), {"rack.jitter=3"});
+  EXPECT_NE(err.find("rack: the racked balls"), std::string::npos) << err;
+  EXPECT_NE(err.find("rack.jitter"), std::string::npos) << err;
+}
+
 // Each of these threw an exception nobody caught (exit 134) before.
 TEST(Hardening, OverridesNeverThrowAnythingButInputError) {
   const std::string numeric_id = write("numeric_id.json", R"({"balls": [{"id": 7, "position": [0, 0.028575, 0]}]})");
