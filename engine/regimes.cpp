@@ -297,13 +297,19 @@ int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& heig
 // that is left when the slip reaches its band's edge must be under kSnapShare abs_tol sigma / mu (1e-5 m/s at abs_tol
 // 1e-7 on the cloth: sigma = c / 2m = 720 1/s, mu = 0.21), and the hop now under rest_speed, the normal speed the
 // rolling entry allows. A ball that slides on after a hop of 1e-2 m/s then settles 3 ms later instead of 16 ms.
+// m/s: the bed's vertical motion of ball i (normal speed vn, height offset from the static sink) as the speed of its
+// amplitude in the linearised bed contact (stiffness e m g / sink, so omega^2 = e g / sink).
+double Regimes::hop(int i, int bed, double vn, double offset) const {
+  const double omega2 = cache_.collider_material[bed]->exponent * glm::length(model_.options.gravity) / sink(i, bed);
+  return std::hypot(vn, std::sqrt(omega2) * offset);
+}
+
 bool Regimes::settles(const StateVector& x, int i, int bed, const Vec3& n, double vn, double offset) const {
   const BallSpec& b = model_.balls[i];
   const ContactMaterial& m = *cache_.collider_material[bed];
   const double g = glm::length(model_.options.gravity), sink = this->sink(i, bed);
-  // The linearised bed contact: stiffness e m g / sink, damping c (linear law) or C sink^e c = m g c (Hunt-Crossley).
   const double omega2 = m.exponent * g / sink;
-  const double hop = std::hypot(vn, std::sqrt(omega2) * offset);  // m/s, the offset as the speed of that amplitude
+  const double hop = this->hop(i, bed, vn, offset);
   if (hop >= model_.options.rest_speed) return false;
   const double mu = m.friction + m.rolling_resistance;
   if (mu <= 0) return true;  // nothing tangential depends on the normal force
@@ -367,7 +373,8 @@ bool Regimes::update_rolling(State& state, StateVector& x) {
     } else if (state.rolling(i)) {
       changed = settle_rolling(x, i, n) || changed;
     } else if (!state.rolling(i) && eligible && slip_below(x, i, n, entry_slip(model_)) &&
-               std::abs(glm::dot(velocity(x, i), n)) < model_.options.rest_speed) {
+               hop(i, bed, glm::dot(velocity(x, i), n), glm::dot(position(x, i), n) - height) <
+                   model_.options.rest_speed) {  // settled: a ball pressed deep into the bed is not snapped out
       // Snap onto the constraint: height at the sink depth, no normal velocity, and the remaining slip u (under
       // entry_slip by the entry condition) removed the way cloth friction removes it: by a tangential impulse J at
       // the contact point r = -R n. Then du = J/m + R n x ((r x J)/I) = J/m (1 + m R^2/I) = 3.5 J/m, so

@@ -54,6 +54,11 @@ class Regimes {
   // of its one rod, a Newton's cradle's resting balls, or in free space without gravity); the sleep and wake pass.
   bool at_rest(const State& state, const StateVector& x, int i) const;
   bool held_still(const StateVector& x, int i) const;
+  // The force still on a ball at zero speed (its contacts' elastic forces and gravity) would move it past rest_speed
+  // within sleep_time: a contact pre-loaded beyond the ball's weight (a ball started inside the bed, a cushion or
+  // another ball) pushes apart instead of falling asleep.
+  bool unbalanced(const StateVector& x, int i) const;
+  double hop(int i, int bed, double vn, double offset) const;  // m/s, see regimes.cpp
   bool update_sleep(State& state, StateVector& x, double dt);
   bool slip_below(const StateVector& x, int i, const Vec3& n, double limit) const;  // tangential slip at the bed
   bool update_rolling(State& state, StateVector& x);

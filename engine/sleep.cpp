@@ -9,7 +9,25 @@ namespace shotlab {
 bool Regimes::at_rest(const State& state, const StateVector& x, int i) const {
   const double eps = model_.options.rest_speed, r = model_.balls[i].radius;
   return glm::length(velocity(x, i)) < eps && r * glm::length(spin(x, i)) < eps &&
-         (classify(model_, cache_, state, x.data(), i) == Motion::Stationary || held_still(x, i));
+         ((classify(model_, cache_, state, x.data(), i) == Motion::Stationary && !unbalanced(x, i)) ||
+          held_still(x, i));
+}
+
+bool Regimes::unbalanced(const StateVector& x, int i) const {
+  const BallSpec& b = model_.balls[i];
+  const Vec3 p = position(x, i);
+  Vec3 force = b.mass * model_.options.gravity;
+  auto push = [&](const ContactMaterial& m, double depth, const Vec3& normal) {
+    if (depth > 0) force += m.stiffness * std::pow(depth, m.exponent) * normal;
+  };
+  for (int j : touching_[i]) {
+    const Vec3 d = p - position(x, j);
+    const double len = glm::length(d);
+    if (len > 0) push(*cache_.ball_ball, b.radius + model_.balls[j].radius - len, d / len);
+  }
+  near_colliders(model_, cache_, p, b.radius, 0.0,
+                 [&](int c, const Penetration& pen) { push(*cache_.collider_material[c], pen.depth, pen.normal); });
+  return glm::length(force) / b.mass * model_.options.sleep_time >= model_.options.rest_speed;
 }
 
 bool Regimes::held_still(const StateVector& x, int i) const {

@@ -122,6 +122,21 @@ TEST(Hardening, AnOverlapMadeByTheRackNamesTheRack) {
   EXPECT_NE(err.find("rack.jitter"), std::string::npos) << err;
 }
 
+// A ball started at rest 8.5 mm deep in an undamped bed holds C d^(e+1) / (e+1) of elastic energy: it must be pushed
+// out with that energy (less the little gravity takes on the way out), not put to sleep with it.
+TEST(Hardening, PreloadedContactsPushApart) {
+  const double d = 0.0085, C = 1e8, e = 1.5;  // depth m, stiffness N/m^1.5, Hertz exponent
+  auto doc = cloth_scene({{{"id", "a"}, {"position", {0, kR - d, 0}}}},
+                         {{"stiffness", C}, {"exponent", e}, {"damping", 0.0}, {"friction", 0.0}});
+  auto sim = simulate(scene(doc));
+  EXPECT_FALSE(sim->state().sleeping(0));
+  ASSERT_EQ(sim->advance(0.01), Status::Ok) << sim->diagnostic();
+  const double stored = C * std::pow(d, e + 1) / (e + 1), lift = kM * kG * d;
+  const double v = std::sqrt(2 * (stored - lift) / kM);
+  EXPECT_GT(sim->stats().steps, 0);
+  EXPECT_NEAR(velocity(sim->state().x, 0).y + kG * sim->time(), v, 0.01 * v);  // it leaves within 0.3 ms
+}
+
 // Each of these threw an exception nobody caught (exit 134) before.
 TEST(Hardening, OverridesNeverThrowAnythingButInputError) {
   const std::string numeric_id = write("numeric_id.json", R"({"balls": [{"id": 7, "position": [0, 0.028575, 0]}]})");
