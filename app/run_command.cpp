@@ -37,20 +37,29 @@ bool asleep(const Simulation& sim) {
   return true;
 }
 
-// The slice loop: advance in sample slices (the integrator's own steps do not depend on the slicing, simulation.hpp),
-// writing a trajectory row set after each; once every ball sleeps, nothing changes, so a run without a trajectory
+// Advances in sample slices, writing a trajectory row set after each (the integrator's own steps do not depend on the
+// slicing, simulation.hpp). The step limit counts per kStepLimitWindow of simulated time, not per slice, so that how a
+// run is sampled never changes whether it stops. Once every ball sleeps, nothing changes: a run without a trajectory
 // jumps to its end.
 void simulate(Simulation& sim, const RunOptions& o, double duration, AtomicFile* csv) {
   const double slice = 1.0 / o.sample_rate;
   const long slices = static_cast<long>(std::ceil(duration / slice - 1e-9));
   std::ostringstream rows;
   rows.precision(10);
-  for (long k = 1; k <= slices && sim.status() == Status::Ok; ++k) {
+  double window_end = 0;
+  for (long k = 1; k <= slices && sim.status() == Status::Ok;) {
     if (!csv && !o.until_rest && asleep(sim)) {
       sim.advance(duration - sim.time());
       break;
     }
-    sim.advance(std::min(k * slice, duration) - sim.time());
+    const double sample = std::min(k * slice, duration);
+    const bool new_window = sim.time() >= window_end;
+    while (window_end <= sim.time()) window_end += kStepLimitWindow;
+    const double to = std::min(sample, window_end);
+    if (new_window) sim.advance(to - sim.time());
+    else sim.advance_on(to - sim.time());
+    if (to < sample) continue;
+    ++k;
     if (csv) {
       rows.str("");
       write_trajectory_rows(rows, sim);

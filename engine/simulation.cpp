@@ -169,12 +169,16 @@ bool Simulation::at_rest() const {
 }
 
 Status Simulation::advance(double dt) {
+  for (const auto& island : islands_) island->start_call();
+  return advance_on(dt);
+}
+
+Status Simulation::advance_on(double dt) {
   // The clock only runs forward: the dense output of the last step cannot go back past its start.
   if (!(dt >= 0)) throw std::invalid_argument("Simulation::advance: dt must be >= 0 s, got " + std::to_string(dt));
   if (status_ != Status::Ok) return status_;
   const auto wall0 = std::chrono::steady_clock::now();
   const double target = state_.time + dt;
-  for (const auto& island : islands_) island->start_call();
   // Always step the island that is furthest behind: then every island's last step spans the time of any stop, and
   // the caller's clock can be read off every island's dense output.
   double reached = target;

@@ -28,6 +28,9 @@ class Simulation {
   // Advance the clock by dt >= 0 s (a negative dt throws std::invalid_argument). Returns Ok, or why it stopped (then status() stays so and diagnostic() says
   // where and which balls; further calls do nothing).
   Status advance(double dt);
+  // As advance(), but the step limit (max_steps_per_call) keeps counting from the previous call: a caller that stops
+  // at sample times inside a window of its own counts the limit per window, however it samples.
+  Status advance_on(double dt);
 
   double time() const { return state_.time; }
   const State& state() const { return state_; }

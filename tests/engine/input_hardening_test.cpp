@@ -167,6 +167,23 @@ TEST(Hardening, RunsThatCouldNotEndOrDoNothingAreRefused) {
   EXPECT_NE(err.find("--max-samples"), std::string::npos) << err;
 }
 
+// The step limit counts per 1/60 s of simulated time, not per sample slice: rk4 on the cut preset used to exit 0
+// at 60 Hz and 3 at 1 Hz.
+TEST(Hardening, SamplingDoesNotChangeTheOutcome) {
+  std::string err;
+  for (const char* rate : {"1", "7", "60", "1000"}) {
+    const std::string out = (scratch() / (std::string("rate") + rate + ".json")).string();
+    EXPECT_EQ(cli("run " + preset("cut.json") + " --set integrator.method=rk4 --duration 1 --sample-rate " + rate +
+                      " --out " + out, err),
+              0)
+        << rate << ": " << err;
+  }
+  const auto at = [&](const char* rate) {
+    return nlohmann::json::parse(std::ifstream(scratch() / (std::string("rate") + rate + ".json")))["balls"];
+  };
+  EXPECT_EQ(at("1"), at("1000"));  // and the same end state
+}
+
 // The cut shot rests after about 6 s; the rest of an hour is nothing to integrate.
 TEST(Hardening, ARunWhoseBallsSleepJumpsToItsEnd) {
   const std::string out = (scratch() / "hour.json").string();
