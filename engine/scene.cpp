@@ -22,6 +22,8 @@ void validate(const Scene& s) {
     if (!(b.spec.radius > 0)) fail(where + ".radius: must be positive");
     for (const Vec3& v : {b.position, b.velocity, b.angular_velocity})
       if (!is_finite(v)) fail(where + ": non-finite number");
+    if (s.table && b.position.y < 0)  // inside or under the slate: the bed would fling it out with any energy
+      fail(where + ".position: below the table's bed (y = " + std::to_string(b.position.y) + " m; the bed is y = 0)");
   }
   if (!s.allow_overlap)
     for (size_t i = 0; i < s.balls.size(); ++i)

@@ -235,8 +235,12 @@ void Simulation::check_energy() {
   if (e - energy_start_ > energy_scale_) {
     std::ostringstream msg;
     msg << "unstable: the total energy grew from " << energy_start_ << " J to " << e << " J by t = " << state_.time
-        << " s, which a passive system cannot do: the step is too large for the contact stiffness (use an adaptive "
-           "method, a smaller fixed step or a softer material). ";
+        << " s, which a passive system cannot do: "
+        << (is_adaptive(model_.integrator.method)
+                ? "the tolerances let the steps grow too large for the contact stiffness (tighten abs_tol and rel_tol, "
+                  "or use a softer material). "
+                : "the step is too large for the contact stiffness (use an adaptive method, a smaller fixed step or a "
+                  "softer material). ");
     for (const auto& island : islands_) msg << island->describe_balls() << " ";
     stop(Status::Unstable, msg.str());
   }

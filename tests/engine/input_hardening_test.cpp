@@ -137,6 +137,12 @@ TEST(Hardening, PreloadedContactsPushApart) {
   EXPECT_NEAR(velocity(sim->state().x, 0).y + kG * sim->time(), v, 0.01 * v);  // it leaves within 0.3 ms
 }
 
+// A ball under a table's bed used to run into "unstable ... use an adaptive method" with an adaptive method.
+TEST(Hardening, ABallBelowTheTableIsRefused) {
+  const std::string err = load_error(preset("stun.json"), {"balls[0].position=[0,-0.1,0]"});
+  EXPECT_NE(err.find("balls[0].position: below the table's bed"), std::string::npos) << err;
+}
+
 // Each of these threw an exception nobody caught (exit 134) before.
 TEST(Hardening, OverridesNeverThrowAnythingButInputError) {
   const std::string numeric_id = write("numeric_id.json", R"({"balls": [{"id": 7, "position": [0, 0.028575, 0]}]})");
