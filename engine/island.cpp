@@ -482,7 +482,20 @@ std::string Island::describe_balls(const StateVector& x) const {
       const double gap = glm::length(position(x, i) - position(x, j)) - model_.balls[i].radius - model_.balls[j].radius;
       if (gap < best) best = gap, pair = model_.balls[i].id + " - " + model_.balls[j].id;
     }
-  out << "No contacts; closest pair: " << pair << " (gap " << best << " m).";
+  // Without contacts, name the balls themselves (the fastest few: a lone ball has no pair to name).
+  std::vector<int> balls;
+  for (int i = 0; i < s.ball_count(); ++i)
+    if (s.in_play[i]) balls.push_back(i);
+  std::sort(balls.begin(), balls.end(), [&](int a, int b) {
+    return glm::length(velocity(x, a)) > glm::length(velocity(x, b));
+  });
+  out << "No contacts.";
+  for (size_t k = 0; k < balls.size() && k < 3; ++k) {
+    const Vec3 p = position(x, balls[k]);
+    out << " Ball " << model_.balls[balls[k]].id << " at (" << p.x << ", " << p.y << ", " << p.z << ") m, "
+        << glm::length(velocity(x, balls[k])) << " m/s.";
+  }
+  if (std::isfinite(best)) out << " Closest pair: " << pair << " (gap " << best << " m).";
   return out.str();
 }
 

@@ -143,6 +143,16 @@ TEST(Hardening, ABallBelowTheTableIsRefused) {
   EXPECT_NE(err.find("balls[0].position: below the table's bed"), std::string::npos) << err;
 }
 
+// A stop with no contact used to say "closest pair: none (gap inf m)" and name no ball.
+TEST(Hardening, AStopWithoutContactsNamesTheBalls) {
+  nlohmann::json doc = {{"balls", {{{"id", "lone"}, {"position", {0, 1, 0}}}}},
+                        {"integrator", {{"method", "euler"}, {"fixed_step", 1e-6}, {"max_steps_per_call", 5}}}};
+  auto sim = simulate(scene(doc));
+  EXPECT_EQ(sim->advance(0.1), Status::StepLimit);
+  EXPECT_NE(sim->diagnostic().find("Ball lone at (0, "), std::string::npos) << sim->diagnostic();
+  EXPECT_EQ(sim->diagnostic().find("inf"), std::string::npos) << sim->diagnostic();
+}
+
 // Each of these threw an exception nobody caught (exit 134) before.
 TEST(Hardening, OverridesNeverThrowAnythingButInputError) {
   const std::string numeric_id = write("numeric_id.json", R"({"balls": [{"id": 7, "position": [0, 0.028575, 0]}]})");
