@@ -378,7 +378,27 @@ def layout(binary, root, display, work):
         app.close()
 
 
-JOURNEYS = {"player": player, "teacher": teacher, "developer": developer, "layout": layout}
+def bad_scene(binary, root, display, work):
+    """A broken --scene: the error on stderr and in the banner, a preset opens instead, and the settings still name the
+    user's last good scene after the window closes."""
+    config = os.path.join(work, "config")
+    app = App(binary, display, work, os.path.join(root, "presets", "cut.json"), config=config)
+    app.close()
+    bad = os.path.join(work, "broken.json")
+    with open(bad, "w") as f:
+        f.write('{"balls": [{"id": "a", "mass": -1}]}')
+    app = App(binary, display, work, bad, config=config)
+    s = app.state()
+    check(s["message_kind"] == "load_error" and "broken.json" in s["message"], "the banner names the broken file")
+    app.close()
+    with open(os.path.join(work, "shotlab.log")) as f:
+        check("broken.json" in f.read(), "stderr names the broken file")
+    with open(os.path.join(config, "shotlab", "settings.json")) as f:
+        last = json.load(f)["last_scene"]
+    check(last.endswith("cut.json"), f"the settings still name the last good scene ({os.path.basename(last)})")
+
+
+JOURNEYS = {"player": player, "teacher": teacher, "developer": developer, "layout": layout, "bad_scene": bad_scene}
 
 
 def main():
