@@ -25,7 +25,7 @@ namespace shotlab {
 
 enum class Status {
   Ok,
-  StepLimit,     // max_steps_per_call steps in one advance() without reaching the target: the clock stops short
+  StepLimit,     // max_steps_per_call steps in one counting window (Simulation::advance) short of the target: the clock stops
   NonFinite,     // the state became NaN or infinite: the simulation stops at the last finite step
   StepTooSmall,  // the error control shrank the step below 1e-14 s
   Unstable,      // the total energy grew by more than the initial kinetic and elastic energy plus 1 J: a passive

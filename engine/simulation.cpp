@@ -193,7 +193,7 @@ Status Simulation::advance_on(double dt) {
     }
     if (island.call_steps() >= model_.integrator.max_steps_per_call) {
       std::ostringstream msg;
-      msg << "step limit: " << model_.integrator.max_steps_per_call << " steps in one advance() did not reach t = "
+      msg << "step limit: " << model_.integrator.max_steps_per_call << " steps (integrator.max_steps_per_call) did not reach t = "
           << target << " s; stopped at t = " << island.time() << " s with step " << island.stats().last_step << " s. "
           << island.describe_balls();
       stop(Status::StepLimit, msg.str());
