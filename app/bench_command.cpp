@@ -2,6 +2,7 @@
 // error against a reference solution and the cost, and writes CSV, markdown and SVG figures (bench_report.hpp).
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -135,9 +136,32 @@ void bench_case(const std::string& root, const BenchCase& c, const BenchOptions&
   }
 }
 
+// The options a bench cannot start with, as one message naming the option; empty when it can run. The output
+// directory is made here, before a run of minutes, so that a bad one fails at once.
+std::string check_bench_options(const BenchOptions& o) {
+  if (!std::isfinite(o.budget) || o.budget < 0 || o.budget > 3600)
+    return "--budget: must be 0 to 3600 s (0: the default), got " + fmt_seconds(o.budget);
+  std::set<std::string> known;
+  for (const BenchCase& c : bench_cases()) known.insert(c.scene);
+  for (const std::string& s : o.scenes)
+    if (!known.count(s)) {
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ",") + k;
+      return "--scenes: no bench scene '" + s + "' (the scenes are " + list + ")";
+    }
+  std::error_code ec;
+  std::filesystem::create_directories(o.out_dir, ec);
+  if (ec || !std::filesystem::is_directory(o.out_dir))
+    return "--out-dir " + o.out_dir + ": cannot make the directory: " + (ec ? ec.message() : "not a directory");
+  return "";
+}
+
 int run_bench(BenchOptions o, const std::string& command) {
+  if (const std::string problem = check_bench_options(o); !problem.empty()) {
+    std::cerr << "shotlab bench: " << problem << "\n";
+    return 1;
+  }
   if (o.budget == 0) o.budget = o.quick ? 0.2 : 1.0;
-  std::filesystem::create_directories(o.out_dir);
   if (o.scaling) return run_scaling(o.out_dir, o.repeats) ? 0 : 1;
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<BenchCase> cases = bench_cases();

@@ -47,10 +47,18 @@ int main(int argc, char** argv) {
     return e.get_exit_code();
   } catch (const CLI::ParseError& e) {    // --help prints and succeeds; any bad argument is bad input: 1
     return app.exit(e) == 0 ? 0 : 1;
+  } catch (const std::exception& e) {     // a failure no command caught: say it, never abort
+    std::cerr << "shotlab: " << e.what() << "\n";
+    return 1;
   }
   if (!app.get_subcommands().empty()) return 0;
   auto set = [](const char* name) { const char* v = std::getenv(name); return v && *v; };
   if (!set("DISPLAY") && !set("WAYLAND_DISPLAY")) return without_display(gui);
   gui.data_root = shotlab::data_root();
-  return shotlab::run_gui(gui);
+  try {
+    return shotlab::run_gui(gui);
+  } catch (const std::exception& e) {
+    std::cerr << "shotlab: " << e.what() << "\n";
+    return 1;
+  }
 }
