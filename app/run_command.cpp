@@ -84,6 +84,9 @@ int run(const RunOptions& o) {
               << " of the radius; the strike is simulated as if the tip held\n";
   }
   Simulation sim(std::move(prepared.model), std::move(prepared.state));
+  // Both files are opened before the run (a bad path fails at once) and replace their targets only once both are
+  // written: a failure leaves every existing file as it was.
+  std::unique_ptr<AtomicFile> out = o.out.empty() ? nullptr : std::make_unique<AtomicFile>(o.out);
   std::unique_ptr<AtomicFile> csv;
   if (!o.trajectory.empty()) {
     csv = std::make_unique<AtomicFile>(o.trajectory);
@@ -94,10 +97,11 @@ int run(const RunOptions& o) {
     csv->write(head.str());
   }
   simulate(sim, o, duration, csv.get());
-  if (csv) csv->commit();
-  if (!o.out.empty())
-    write_file_atomic(o.out,
-                      result_to_json(sim, extra).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+  if (out) out->write(result_to_json(sim, extra).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+  for (AtomicFile* f : {out.get(), csv.get()})
+    if (f) f->finish();
+  for (AtomicFile* f : {out.get(), csv.get()})
+    if (f) f->commit();
   const Stats& st = sim.stats();
   if (!o.quiet)
     std::cout << (scene.name.empty() ? o.scene : scene.name) << ": t = " << sim.time() << " s, "

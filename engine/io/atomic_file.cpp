@@ -72,15 +72,20 @@ void AtomicFile::flush() {
   buffer_.clear();
 }
 
-void AtomicFile::commit() {
+void AtomicFile::finish() {
   flush();
+  if (!tmp_.empty() && ::fsync(fd_) != 0) throw failure(path_, "cannot write to disk");
+  finished_ = true;
+}
+
+void AtomicFile::commit() {
+  if (!finished_) finish();
   if (tmp_.empty()) {  // written in place (a device or a pipe)
     const int fd = fd_;
     fd_ = -1;
     if (::close(fd) != 0) throw failure(path_, "cannot write");
     return;
   }
-  if (::fsync(fd_) != 0) throw failure(path_, "cannot write to disk");
   const int fd = fd_;
   fd_ = -1;
   if (::close(fd) != 0) {

@@ -17,12 +17,15 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
 
   void write(std::string_view text);  // throws InputError (a full disk, an I/O error)
-  void commit();                      // flushes to disk and renames over the target; throws InputError
+  void finish();  // writes out and syncs to disk what is left; throws InputError. Files written together are all
+                 // finished before any is committed, so that a failure leaves every target as it was.
+  void commit();  // finishes if not yet done and renames over the target; throws InputError
 
  private:
   std::string path_, tmp_;
   int fd_ = -1;
   std::string buffer_;
+  bool finished_ = false;
   void flush();
 };
 

@@ -218,6 +218,26 @@ TEST(Hardening, FailedWritesAreErrors) {
   EXPECT_NE(err.find("/nonexistent-dir/r.json"), std::string::npos) << err;
 }
 
+// --out and --trajectory replace their targets together or not at all: one failing keeps the other's old file.
+TEST(Hardening, AFailedOutputKeepsTheOtherOutputsOldFile) {
+  const std::string kept = write("kept.json", "{\"kept\": true}\n");
+  std::string err;
+  EXPECT_EQ(cli("run " + preset("stun.json") + " --duration 0.1 --out " + kept + " --trajectory /dev/full", err), 1);
+  EXPECT_EQ(cli("run " + preset("stun.json") + " --duration 0.1 --trajectory " + kept + " --out /nonexistent/r.json",
+                err), 1);
+  EXPECT_EQ(nlohmann::json::parse(std::ifstream(kept)), nlohmann::json::parse("{\"kept\": true}"));
+}
+
+TEST(Hardening, BenchRefusesBadOptionsBeforeRunning) {
+  std::string err;
+  EXPECT_EQ(cli("bench --scenes S1 --out-dir /dev/null/x", err), 1);
+  EXPECT_NE(err.find("--out-dir /dev/null/x"), std::string::npos) << err;
+  EXPECT_EQ(cli("bench --scenes S99", err), 1);
+  EXPECT_NE(err.find("S99"), std::string::npos) << err;
+  EXPECT_EQ(cli("bench --scenes S1 --budget nan", err), 1);
+  EXPECT_NE(err.find("--budget"), std::string::npos) << err;
+}
+
 TEST(Hardening, CsvQuotesIdsAsRfc4180Says) {
   const std::string scene = write("ids.json", R"({"balls": [{"id": "a,b\"c", "position": [0, 0.028575, 0]}],
     "colliders": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "ball_cloth"}]})");
