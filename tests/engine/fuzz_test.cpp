@@ -2,7 +2,7 @@
 // bytes of the text changed) and random --set assignments. Every input is either refused with an InputError or
 // simulated for a moment; nothing else may happen: no other exception, no crash, no hang (CI runs it under ASan and
 // UBSan too). SHOTLAB_FUZZ_SEED and SHOTLAB_FUZZ_CASES choose the run (default: seed 1, 300 cases of each kind); a
-// longer run: SHOTLAB_FUZZ_CASES=20000 ./build/tests/engine_tests --gtest_filter='Fuzz.*'.
+// longer run: docs/testing.md.
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
