@@ -5,7 +5,6 @@
 #include <limits>
 #include <numeric>
 
-#include "events.hpp"
 
 namespace shotlab {
 
@@ -89,11 +88,10 @@ ContactCache::ContactCache(const Model& model)
   for (size_t k = 0; k < plane_like.size(); ++k) floor_of[plane_like[k]] = static_cast<int>(k);
   // A bounded plane's floor is worked out over its own extent (inset by a nanometre: level_floor wants the corners
   // strictly inside), so that a ball near a cushion, outside the clear column, finds the bed the fast way too.
-  constexpr double kInset = 1e-9;  // m
   for (int c : plane_like) {
     const Bounds& b = collider_bounds[c];
     const bool bounded = std::holds_alternative<BoundedPlane>(model.colliders[c].shape);
-    floor.push_back(bounded ? ColumnXZ{b.lo.x + kInset, b.hi.x - kInset, b.lo.z + kInset, b.hi.z - kInset} : clear);
+    floor.push_back(bounded ? ColumnXZ{b.lo.x + kFloorInset, b.hi.x - kFloorInset, b.lo.z + kFloorInset, b.hi.z - kFloorInset} : clear);
     floor_y.push_back(level_floor(model.colliders[c].shape, floor.back()));
     if (std::isnan(floor_y.back())) floor.back() = ColumnXZ{};
   }

@@ -8,14 +8,10 @@
 
 #include "contact_force.hpp"
 #include "model.hpp"
+#include "numerics.hpp"
 #include "state.hpp"
 
 namespace shotlab {
-
-// m: a contact counts from this depth on. Frozen balls touch at zero depth, and round-off or integration noise at the
-// tolerance (1e-17 to 1e-11 m) would otherwise report contacts beginning and ending that carry no force; a real impact
-// passes 1 nm within 1e-10 s at 10 m/s, 1e-6 s at 1 mm/s. A pair deeper than -kTouch counts as touching.
-inline constexpr double kTouch = 1e-9;
 
 // A contact's bodies: (ball, other ball) with ball < other, or (ball, -1 - collider index).
 using ContactKey = std::pair<int, int>;

@@ -74,9 +74,10 @@ void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/)
 // A rod holds |p - anchor| = L. Its force acts along d^ = (p - anchor)/|p - anchor| and sets the radial
 // acceleration to what circular motion needs: a.d^ = -|v_perp|^2/|d|. With a_free the acceleration from all other
 // forces, the rod adds (lambda) d^ with lambda = -|v_perp|^2/|d| - a_free.d^, plus a Baumgarte term
-// -2 beta (v.d^) - beta^2 (|d| - L) that pulls numerical drift of length and radial speed back to zero.
+// -2 beta (v.d^) - beta^2 (|d| - L), beta = kRodDriftRate, that pulls the numerical drift of length and radial speed
+// back to zero.
 void Dynamics::apply_rods(const StateVector& x, StateVector& dxdt) const {
-  constexpr double beta = 50.0;  // 1/s: drift correction rate, slow against contacts, fast against a swing
+  constexpr double beta = kRodDriftRate;
   for (const Rod& rod : model_.rods) {
     if (!state_.active(rod.ball)) continue;
     const Vec3 d = position(x, rod.ball) - rod.anchor;

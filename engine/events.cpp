@@ -6,9 +6,6 @@
 namespace shotlab {
 namespace {
 
-// A ball counts as supported while its gap to a collider is under 10 um: it stays "on the table" through the
-// micrometre bounces of a settling contact instead of flickering between airborne and landed.
-constexpr double kSupportGap = 1e-5;
 
 // First time in (lo, hi] at which changed(t) holds, given !changed(lo) and changed(hi), to `resolution` seconds (or
 // until the bracket's ends are adjacent doubles, when the resolution is below their spacing). A template: the test
@@ -232,12 +229,11 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
 // is no kink worth a cut: a rolling resistance crossing its band while the ball slides, where its weight is nothing,
 // or a resting contact's terms stirred by round-off.
 bool EventDetector::moves(const Key& k, const FrictionLaw& a, const FrictionLaw& b, double h) const {
-  constexpr double kShare = 0.01;
   double mobility = cache_.inv_mass[k.first] + cache_.inv_inertia_r2[k.first];
   if (k.second >= 0) mobility += cache_.inv_mass[k.second] + cache_.inv_inertia_r2[k.second];
   const double df = glm::length(b.friction - a.friction) + glm::length(b.rolling - a.rolling) +
                     std::abs(b.spin_torque - a.spin_torque) / model_.balls[k.first].radius;
-  return df * mobility * h >= kShare * model_.integrator.abs_tol;
+  return df * mobility * h >= kSwitchMoveShare * model_.integrator.abs_tol;
 }
 
 bool EventDetector::released(const Key& key, const double* x) const {

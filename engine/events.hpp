@@ -35,22 +35,9 @@ struct Exit {
   double time;
 };
 
-// Bisection stops when the bracket is this short (s) for a reported event and for the contact changes that cut a
-// step (first_contact_change): their times are good to 0.1 ns.
-constexpr double kTimeResolution = 1e-10;
-
-// How closely a friction switch is located (first_law_change), as a share of the step: the step is cut just past it,
-// and a kink left within this share of a step's end costs nothing. A switch found that close to a trial's end is where
+// How closely a friction switch is located (first_law_change): a switch found that close to a trial's end is where
 // the trial was cut to end.
-constexpr double kSwitchResolution = 1e-4;
 inline double switch_resolution(double step) { return std::max(kTimeResolution, kSwitchResolution * step); }
-
-// How closely (s) the onset of a contact left out of a step is located (first_touch). The step ends there and
-// the next one starts with the contact's force, so this is time spent on the wrong law: a damped contact's force
-// jumps to c v at zero depth, and 0.1 ns late (an event's resolution) misses an impulse of c v 1e-10 N s, which floored
-// the bench's cushion and cradle references near 1e-8 (docs/bench/README.md). A step ending this close after the
-// onset is taken as ending at it.
-constexpr double kOnsetResolution = 1e-13;
 
 class EventDetector {
  public:

@@ -25,10 +25,6 @@ Stats& Stats::operator+=(const Stats& o) {
 
 namespace {
 
-// Redone attempts of one step (each ending at a contact change found in the one before, or going on to where the
-// contact it was cut for touches) before it is redone once more with the plain law.
-constexpr int kMaxRedos = 8;
-
 // The world's model with only the given balls (and the rods that hold them, renumbered).
 Model sub_model(const Model& world, const std::vector<int>& balls) {
   Model m;

@@ -5,13 +5,6 @@
 #include <numeric>
 
 namespace shotlab {
-namespace {
-// s: the longest the islands run apart while one of them holds two or more awake balls. Islands are split only when
-// they synchronise: a pair that separated after a collision stays one system until then.
-constexpr double kMaxHorizon = 0.02;
-// m: sleepers this close are frozen together and wake together (Regimes::kTouchSlack, sleep.cpp).
-constexpr double kFrozen = 1e-9;
-}  // namespace
 
 int Partitioner::root(int i) {
   while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
@@ -46,10 +39,10 @@ void Partitioner::join_sleeper(int i, int sleeper, const State& state) {
   for (size_t k = 0; k < group.size(); ++k) {
     const int s = group[k];
     join(i, s);
-    sleepers_near(model_, x, cache_, s, kFrozen, [&](int j) {
+    sleepers_near(model_, x, cache_, s, kTouch, [&](int j) {
       if (reached_[j]) return;
       const double gap = glm::length(position(x, s) - position(x, j)) - model_.balls[s].radius - model_.balls[j].radius;
-      if (gap < kFrozen) {
+      if (gap < kTouch) {
         reached_[j] = 1;
         woken_.push_back(j);
         group.push_back(j);

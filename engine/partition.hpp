@@ -28,14 +28,6 @@
 
 namespace shotlab {
 
-// s: balls that could touch this soon are integrated together. Shorter splits a scene finer but looks at islands
-// again more often (each look cuts an island's step short once).
-inline constexpr double kLinkTime = 1e-3;
-// s: the longest islands run apart when every island is a single awake ball and nothing else (nothing to split; on a
-// table only, where the height a ball can fall is in its energy bound), and how far ahead a lone ball's free path
-// (regimes.hpp) is followed.
-inline constexpr double kLoneHorizon = 0.25;
-
 struct Partition {
   std::vector<std::vector<int>> islands;  // ball indices, ascending; islands ordered by their first ball
   std::vector<double> energy;             // J, each island's: the bound on what its balls can gain

@@ -9,24 +9,12 @@
 
 namespace shotlab {
 namespace {
-// A ball enters the rolling regime once its slip is under entry_slip: 1 % of rest_speed, and no more than 10 times
-// the absolute tolerance. The smoothed friction has by then done almost all of its work: it decays the slip u
-// exponentially, at 1/tau = 3.5 mu g k, about 7e3 1/s for k = 1000 s/m, so the last factor 100 costs a millisecond
-// of a few stiff steps. The snap removes the rest at once and leaves a lasting difference from the full model in
-// proportion to u (a stun shot at 2 m/s keeps 1.4 % of u in its speed, tests/engine/regimes_test.cpp). The tolerance
-// bound holds that under the integration error at tight tolerances, where the 1 % bound alone stopped the fast
-// path's error at a floor (bench S3, S4 and S6: 7e-9, 6e-8 and 1.5e-7 R at every tolerance below 1e-8). A ball in the
-// sliding regime gets there without the stiff steps: its slip tail is followed in closed form (band_tail.hpp) down to
-// kDeadTail before it enters, which leaves nothing to snap.
-constexpr double kEntrySlip = 0.01;
-constexpr double kEntrySlipPerTolerance = 10.0;
+// The slip under which a ball enters the rolling regime (numerics.hpp). A ball in the sliding regime gets there
+// without stiff steps: its slip tail is followed in closed form (band_tail.hpp) down to kDeadTail, leaving nothing to
+// snap.
 double entry_slip(const Model& model) {  // m/s
   return std::min(kEntrySlip * model.options.rest_speed, kEntrySlipPerTolerance * model.integrator.abs_tol);
 }
-// Speeds (m/s) this small are round-off, not motion: below every tolerance an integrator is run at.
-constexpr double kDeadTail = 1e-12;
-// m/s: a rolling ball this slow stops (settle_rolling).
-constexpr double kStopSpeed = 1e-7;
 
 // m: how deep ball b sinks into a bed of material m under its own weight (C d^e = m g).
 double static_sink(const BallSpec& b, const ContactMaterial& m, double g) {
@@ -177,8 +165,6 @@ double path_meeting_time(const FreePath& a, const FreePath& b, double reach, dou
 double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
                          bool* constant, std::vector<BandTail>* tails, std::vector<Swing>* swings,
                          const std::vector<Swing>* continuing) {
-  // A kink this close is not worth a step of its own: the step crosses it within round-off of its start.
-  constexpr double kTooClose = 1e-12;
   const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
   const double g = glm::length(model.options.gravity);
   double best = std::numeric_limits<double>::infinity();
@@ -190,7 +176,7 @@ double time_to_band_edge(const Model& model, const State& state, const ContactCa
   // Returns whether q is inside the band (and not at a held zero).
   auto edge = [&](double q, double strength, double mobility, bool zero_holds) {
     const double t = time_to_edge(smooth, q, strength, mobility);
-    if (t > kTooClose) best = std::min(best, t);
+    if (t > kKinkTooClose) best = std::min(best, t);
     else if (q != 0 || !zero_holds) return true;
     return false;
   };
@@ -341,7 +327,7 @@ bool Regimes::update(State& state, StateVector& x, double dt) {
   // Neighbour lists within contact_margin (sleep groups use only the frozen-touching ones).
   touching_.resize(n);
   for (auto& list : touching_) list.clear();  // keeps each list's buffer: this runs after every step
-  overlapping_pairs(model_, state, x.data(), cache_, std::max(model_.options.contact_margin, kTouchSlack));
+  overlapping_pairs(model_, state, x.data(), cache_, std::max(model_.options.contact_margin, kTouch));
   for (const auto& [i, j] : cache_.pairs) {
     touching_[i].push_back(j);
     touching_[j].push_back(i);

@@ -34,11 +34,6 @@
 
 namespace shotlab {
 
-// The share of the absolute tolerance that one snap onto a regime may move a ball where its corrections do not hold
-// (Regimes::settles, swing_of). The plain path's own position error at the end of the bench scenes is 0.1-0.2 abs_tol
-// (S6 at 1e-7: 1.3e-8 m), and a break has a few dozen snaps: at abs_tol itself, without the position's correction,
-// S6's fast path ended 4x further off than the plain path; at 3 % as close.
-inline constexpr double kSnapShare = 0.03;
 
 class Regimes {
  public:
@@ -72,9 +67,6 @@ class Regimes {
   // above its static sink, has settled enough to enter the sliding regime (update_sliding).
   bool settles(const StateVector& x, int i, int bed, const Vec3& n, double vn, double offset) const;
 
-  // Balls this close count as touching for waking and grouping sleepers: frozen balls touch at zero depth, give or
-  // take round-off.
-  static constexpr double kTouchSlack = 1e-9;
   const Model& model_;
   ContactCache cache_;
   std::vector<std::vector<int>> touching_;  // neighbours (frozen-touching included), rebuilt each update

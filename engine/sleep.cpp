@@ -65,7 +65,7 @@ bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
   const int n = state.ball_count();
   if (model_.options.sleep_time <= 0) return false;
   auto frozen_touch = [&](int i, int j) {
-    return glm::length(position(x, i) - position(x, j)) - model_.balls[i].radius - model_.balls[j].radius < kTouchSlack;
+    return glm::length(position(x, i) - position(x, j)) - model_.balls[i].radius - model_.balls[j].radius < kTouch;
   };
   std::vector<uint8_t>& resting = resting_;
   resting.assign(n, 0);
@@ -98,7 +98,7 @@ bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
     for (int j : touching_[i])
       if (!resting[i]) wake(j);
     // touching_ leaves out sleeper pairs (the broad phase skips them); look those up directly.
-    sleepers_near(model_, x.data(), cache_, i, kTouchSlack, [&](int j) {
+    sleepers_near(model_, x.data(), cache_, i, kTouch, [&](int j) {
       if (frozen_touch(i, j)) wake(j);
     });
   }

@@ -4,8 +4,7 @@
 #include <cmath>
 
 #include "contacts.hpp"
-#include "partition.hpp"
-#include "regimes.hpp"
+#include "numerics.hpp"
 
 namespace shotlab {
 
