@@ -63,13 +63,13 @@ RunResult run_case(const std::string& data_root, const BenchCase& c, const Metho
     r.scale.resize(r.x0.size());
     std::transform(r.x0.begin(), r.x0.end(), r.scale.begin(), [](double v) { return std::abs(v); });
   }
-  sim.set_observer([&](const Island& island) {
-    for (size_t k = 0; k < island.balls().size(); ++k) {
-      const int i = island.balls()[k];
-      step_ends[i].push_back(island.time());
+  sim.set_observer([&](const StepView& step) {
+    for (size_t k = 0; k < step.balls.size(); ++k) {
+      const int i = step.balls[k];
+      step_ends[i].push_back(step.t1);
       for (int c = 0; c < kBallDofs && reference; ++c) {
         double& scale = r.scale[kBallDofs * i + c];
-        scale = std::max(scale, std::abs(island.state().x[kBallDofs * k + static_cast<size_t>(c)]));
+        scale = std::max(scale, std::abs(step.state.x[kBallDofs * k + static_cast<size_t>(c)]));
       }
     }
   });

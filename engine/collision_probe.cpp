@@ -36,8 +36,8 @@ CollisionProbe probe_collision(const ContactMaterial& material, double mass, dou
   }
   Simulation sim(model, state);
   CollisionProbe out;
-  sim.set_observer([&](const Island& island) {
-    const auto list = contacts(island.model(), island.state());
+  sim.set_observer([&](const StepView& step) {
+    const auto list = contacts(step.model, step.state);
     if (list.empty()) return;
     ++out.steps;
     double force = 0;
@@ -46,7 +46,7 @@ CollisionProbe probe_collision(const ContactMaterial& material, double mass, dou
       force = std::max(force, c.force.normal);
     }
     out.peak_force = std::max(out.peak_force, force);
-    out.time.push_back(island.time());
+    out.time.push_back(step.t1);
     out.force.push_back(force);
   });
   double begin = -1, end = -1;

@@ -1,4 +1,4 @@
-// Motion states and events. After every accepted step the detector compares what holds at the step's end with
+// Finding events. After every accepted step the detector compares what holds at the step's end with
 // what held at its start (contacts, motion state, in play) and locates each change by bisection on the step's
 // dense output, so an event's time does not depend on where the step happened to end.
 #pragma once
@@ -8,26 +8,17 @@
 #include <vector>
 
 #include "contacts.hpp"
+#include "event.hpp"
 #include "hermite.hpp"
 #include "model.hpp"
 #include "state.hpp"
 
 namespace shotlab {
 
-enum class Motion { Stationary, Spinning, Rolling, Sliding, Airborne, Pocketed };
-const char* motion_name(Motion m);
-
 // Motion state of ball i in state vector x: judged relative to its supporting collider (the touching collider
 // whose normal points most upwards) with the model's rest_speed threshold on tangential speed and slip. `cache` is any
 // ContactCache of the model (its collider bounds).
 Motion classify(const Model& model, const ContactCache& cache, const State& state, const double* x, int i);
-
-struct Event {
-  double time;                      // s
-  std::string kind;                 // contact_begin, contact_end, sliding, rolling, spinning, stopped, airborne,
-                                    // landed, pocketed, off_table, miscue
-  std::vector<std::string> bodies;  // ball ids and collider names
-};
 
 // A ball that leaves play during a step (fell through a pocket or off the table).
 struct Exit {

@@ -10,6 +10,8 @@
 
 namespace shotlab {
 
+void StepView::state_at(double t, StateVector& x) const { span_.interpolate(t, x); }
+
 const char* status_name(Status s) {
   static constexpr const char* names[] = {"ok", "step_limit", "non_finite", "step_too_small", "unstable"};
   return names[static_cast<int>(s)];

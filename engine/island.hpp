@@ -16,6 +16,7 @@
 #include "dynamics.hpp"
 #include "events.hpp"
 #include "hermite.hpp"
+#include "step_view.hpp"
 #include "model.hpp"
 #include "regimes.hpp"
 #include "state.hpp"
@@ -71,6 +72,7 @@ class Island {
   const Model& model() const { return model_; }              // the sub-model: the island's balls, every collider
   const State& state() const { return integ_; }              // the sub-state at time()
   const StepSpan& span() const { return span_; }             // the last accepted step, on the sub-state
+  StepView view() const { return {span_.t0, span_.t1, balls_, model_, integ_, start_, stats_, span_}; }
   const Stats& stats() const { return stats_; }
   double next_step() const { return dt_next_; }             // s, what the next step will try
   Status status() const { return status_; }

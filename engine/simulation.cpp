@@ -158,6 +158,12 @@ void Simulation::regroup(double t, std::vector<Island*> group, std::vector<int> 
   islands_ = std::move(next);
 }
 
+std::vector<std::vector<int>> Simulation::island_balls() const {
+  std::vector<std::vector<int>> out;
+  for (const auto& island : islands_) out.push_back(island->balls());
+  return out;
+}
+
 bool Simulation::at_rest() const {
   for (const auto& island : islands_)  // balls in no island sleep or are out of play
     for (int i : island->balls()) {
@@ -200,7 +206,7 @@ Status Simulation::advance_on(double dt) {
     } else if (!island.step(island.deadline())) {
       stop(island.status(), island.diagnostic());
     } else if (observer_) {
-      observer_(island);
+      observer_(island.view());
     }
     if (status_ != Status::Ok) reached = island.time();  // stay at the last good point
   }

@@ -47,10 +47,10 @@ class Simulation {
   // True when every ball in play is stationary (or out of play): nothing will move again.
   bool at_rest() const;
 
-  // Called after every accepted step of any island (odeint's observer): step-size plots, per-contact counts. The
-  // island's model, state and span are its own (island.hpp): ball k of the island is ball balls()[k] of the scene.
-  void set_observer(std::function<void(const Island&)> observer) { observer_ = std::move(observer); }
-  const std::vector<std::unique_ptr<Island>>& islands() const { return islands_; }
+  // Called after every accepted step of any island (odeint's observer): step-size plots, per-contact counts.
+  void set_observer(std::function<void(const StepView&)> observer) { observer_ = std::move(observer); }
+  // The balls (scene indices) each island integrates together now.
+  std::vector<std::vector<int>> island_balls() const;
 
  private:
   // Splits the balls of `group` (islands at time t or, one step at most, past it) and the awake balls `awake` (in no
@@ -76,7 +76,7 @@ class Simulation {
   Stats stats_, retired_;  // retired_: what islands no longer running did
   Status status_ = Status::Ok;
   std::string diagnostic_;
-  std::function<void(const Island&)> observer_;
+  std::function<void(const StepView&)> observer_;
   double energy_start_, energy_scale_;  // J: total at t = 0, and what it may grow by before the run is Unstable
   // J: the total as of the islands' energy references (each island's start). Balls in no island do not move, so the
   // total at any later time is this plus what the islands' energies changed since: the check after every advance()

@@ -39,10 +39,10 @@ bool matches(const Contact& c, const Model& m, int ball, const std::string& othe
 }
 
 // Samples, at time t of the island's last step, every trace in `live` (indices into traces) whose ball is in it.
-void sample(const Island& island, double t, const std::vector<size_t>& live, std::vector<ContactTrace>& traces) {
-  const Model& m = island.model();
-  State probe{t, {}, island.state().in_play, {}, {}, {}, {}};
-  island.span().interpolate(t, probe.x);
+void sample(const StepView& step, double t, const std::vector<size_t>& live, std::vector<ContactTrace>& traces) {
+  const Model& m = step.model;
+  State probe{t, {}, step.state.in_play, {}, {}, {}, {}};
+  step.state_at(t, probe.x);
   const std::vector<Contact> list = contacts(m, probe);
   for (size_t k : live) {
     ContactTrace& tr = traces[k];
@@ -84,16 +84,15 @@ ContactLog trace_contacts(const Scene& start, const std::vector<Event>& events, 
   if (log.contacts.empty()) return log;
   Simulation sim(std::move(p.model), std::move(p.state));
   std::vector<size_t> live;
-  sim.set_observer([&](const Island& island) {
-    const StepSpan& s = island.span();
+  sim.set_observer([&](const StepView& s) {
     live.clear();
     for (size_t k = 0; k < log.contacts.size(); ++k) {
       const ContactTrace& tr = log.contacts[k];
       if (tr.begin > s.t1 || (tr.end >= 0 && tr.end < s.t0)) continue;
-      if (island.model().ball_index(tr.a) >= 0) live.push_back(k);
+      if (s.model.ball_index(tr.a) >= 0) live.push_back(k);
     }
     if (live.empty()) return;
-    for (int j = 1; j <= kSamplesPerStep; ++j) sample(island, s.t0 + (s.t1 - s.t0) * j / kSamplesPerStep, live, log.contacts);
+    for (int j = 1; j <= kSamplesPerStep; ++j) sample(s, s.t0 + (s.t1 - s.t0) * j / kSamplesPerStep, live, log.contacts);
   });
   while (sim.time() < until && sim.status() == Status::Ok) sim.advance(std::min(1.0, until - sim.time()));
   for (ContactTrace& tr : log.contacts) tidy(tr);

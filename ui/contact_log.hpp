@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/events.hpp"
+#include "engine/event.hpp"
 #include "engine/scene.hpp"
 
 namespace shotlab {

@@ -194,8 +194,9 @@ void diagnostics(const Lab& lab) {
               lab.shot->last_wall() * 1e3);
   ImGui::Text("last step %.3g s   real-time factor %.1f", s.last_step, lab.shot->realtime_factor());
   size_t largest = 0;
-  for (const auto& island : sim.islands()) largest = std::max(largest, island->balls().size());
-  ImGui::Text("islands: %zu (largest %zu balls)", sim.islands().size(), largest);
+  const std::vector<std::vector<int>> islands = sim.island_balls();
+  for (const auto& balls : islands) largest = std::max(largest, balls.size());
+  ImGui::Text("islands: %zu (largest %zu balls)", islands.size(), largest);
   if (sim.status() == Status::StepLimit)
     ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "STEP LIMIT HIT: raise max steps or loosen the model");
   else if (sim.status() != Status::Ok)

@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "engine/events.hpp"
+#include "engine/event.hpp"
 #include "engine/scene.hpp"
 
 namespace shotlab {

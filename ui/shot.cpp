@@ -28,9 +28,8 @@ void turn(std::vector<glm::dquat>& q, const State& from, const State& to, double
 Shot::Shot(const Scene& start, double safety_limit) : start_(start), limit_(safety_limit), chunk_(kFrameStep) {
   validate(start_);
   sim_ = simulation_of(start_);
-  sim_->set_observer([this](const Island& island) {
-    const StepSpan& span = island.span();
-    if (step_sizes_.size() < kMaxSamples) step_sizes_.push_back({span.t1, span.t1 - span.t0});
+  sim_->set_observer([this](const StepView& step) {
+    if (step_sizes_.size() < kMaxSamples) step_sizes_.push_back({step.t1, step.t1 - step.t0});
   });
   record();
 }

@@ -20,7 +20,7 @@ nlohmann::json ball(const std::string& id, double x, double z, double vx = 0, do
 
 std::vector<std::vector<int>> islands_of(const Simulation& sim) {
   std::vector<std::vector<int>> out;
-  for (const auto& island : sim.islands()) out.push_back(island->balls());
+  for (const auto& balls : sim.island_balls()) out.push_back(balls);
   return out;
 }
 
@@ -68,7 +68,7 @@ TEST(Islands, LoneBallIsNotCutShortByACollisionElsewhere) {
                         {"balls", {ball("lone", -1.0, 0.5, 0.3), ball("cue", 0.5, -0.3, 1.5), ball("obj", 0.9, -0.3)}}};
   auto sim = simulate(scene(doc));
   long lone_steps = 0, others = 0;
-  sim->set_observer([&](const Island& island) { (island.balls() == std::vector<int>{0} ? lone_steps : others) += 1; });
+  sim->set_observer([&](const StepView& step) { (step.balls == std::vector<int>{0} ? lone_steps : others) += 1; });
   ASSERT_EQ(sim->advance(1.0), Status::Ok) << sim->diagnostic();
   std::printf("[ islands  ] lone ball: %ld steps in 1 s; the colliding pair: %ld\n", lone_steps, others);
   EXPECT_GT(others, 100);  // the collision and the slides around it
@@ -85,7 +85,7 @@ TEST(Islands, LoneBallsOnFreePathsMeetOnlyWhereThePathsMeet) {
                                    ball("c", -0.5, 0.45, 0.8), ball("d", 0.5, 0.45 + 2 * kR - 2e-3, -0.8)}}};
   auto sim = simulate(scene(doc));
   long side_by_side = 0;
-  sim->set_observer([&](const Island& island) { side_by_side += island.balls()[0] <= 1; });
+  sim->set_observer([&](const StepView& step) { side_by_side += step.balls[0] <= 1; });
   ASSERT_EQ(sim->advance(1.0), Status::Ok) << sim->diagnostic();
   int hits = 0;
   for (const Event& e : sim->events())
@@ -106,7 +106,7 @@ TEST(Islands, BreakMissesNoContactBetweenIslands) {
   size_t most_islands = 0;
   while (sim->time() < 3.0) {
     ASSERT_EQ(sim->advance(1.0 / 240), Status::Ok) << sim->diagnostic();
-    most_islands = std::max(most_islands, sim->islands().size());
+    most_islands = std::max(most_islands, sim->island_balls().size());
     for (const Contact& c : sim->contacts())
       if (c.other_ball >= 0) deepest = std::max(deepest, c.depth);
   }
@@ -122,17 +122,18 @@ TEST(Islands, BreakMissesNoContactBetweenIslands) {
 TEST(Islands, StepListsHoldEveryPairThatTouchesInTheStep) {
   auto sim = simulate(load_scene(preset("bench/s8_break.json")));
   long steps = 0, touching = 0;
-  sim->set_observer([&](const Island& island) {
-    const StepSpan& span = island.span();
-    const State& flags = island.flags_at(span.t0);
+  sim->set_observer([&](const StepView& step) {
+    const State& flags = step.flags;
     StepContacts lists;
-    ContactCache cache(island.model());
-    time_to_possible_contact(island.model(), flags, span.x0.data(), span.t1 - span.t0, cache, &lists);
+    ContactCache cache(step.model);
+    StateVector x0;
+    step.state_at(step.t0, x0);
+    time_to_possible_contact(step.model, flags, x0.data(), step.t1 - step.t0, cache, &lists);
     if (!lists.near_known) return;  // the step did not use the lists either
     ++steps;
     StateVector x;
     for (int k = 0; k <= 8; ++k) {
-      span.interpolate(span.t0 + (span.t1 - span.t0) * k / 8, x);
+      step.state_at(step.t0 + (step.t1 - step.t0) * k / 8, x);
       for (int i = 0; i < flags.ball_count(); ++i)
         for (int j = i + 1; j < flags.ball_count(); ++j) {
           if (!flags.in_play[i] || !flags.in_play[j] || (flags.sleeping(i) && flags.sleeping(j))) continue;
@@ -142,8 +143,8 @@ TEST(Islands, StepListsHoldEveryPairThatTouchesInTheStep) {
             return std::find(keys.begin(), keys.end(), key) != keys.end();
           };
           EXPECT_TRUE(has(lists.near, {i, j}) || has(lists.near, {j, i}) || has(lists.separated, {i, j}))
-              << "balls " << island.model().balls[i].id << " and " << island.model().balls[j].id << " touch at t = "
-              << span.t0 + (span.t1 - span.t0) * k / 8 << " s, in no list of the step from " << span.t0 << " s";
+              << "balls " << step.model.balls[i].id << " and " << step.model.balls[j].id << " touch at t = "
+              << step.t0 + (step.t1 - step.t0) * k / 8 << " s, in no list of the step from " << step.t0 << " s";
         }
     }
   });
@@ -217,9 +218,8 @@ TEST(Islands, ContactStepsDoNotDependOnTheStepBeforeTheOnset) {
   auto chain_steps = [](const std::vector<std::string>& overrides) {
     auto sim = simulate(load_scene(preset("bench/s5_cradle.json"), overrides));
     std::vector<std::pair<double, double>> steps;  // (start, length) of every step that moves ball 2
-    sim->set_observer([&](const Island& island) {
-      if (std::binary_search(island.balls().begin(), island.balls().end(), 1))
-        steps.emplace_back(island.span().t0, island.span().t1 - island.span().t0);
+    sim->set_observer([&](const StepView& step) {
+      if (std::binary_search(step.balls.begin(), step.balls.end(), 1)) steps.emplace_back(step.t0, step.t1 - step.t0);
     });
     EXPECT_EQ(sim->advance(0.2295), Status::Ok) << sim->diagnostic();
     const double onset = event_time(*sim, "contact_begin", "1", "2");

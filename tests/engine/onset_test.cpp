@@ -102,9 +102,9 @@ TEST(Onset, CradleChainEndsWithinTheTolerance) {
     s.model.integrator.abs_tol = s.model.integrator.rel_tol = tol;
     s.model.integrator.max_steps_per_call = 1000000;
     auto sim = simulate(s);
-    sim->set_observer([&](const Island& island) {
-      const StateVector& x = island.span().x1;  // where the next step starts
-      for (size_t a = 0; a + 1 < island.balls().size(); ++a) {
+    sim->set_observer([&](const StepView& step) {
+      const StateVector& x = step.state.x;  // where the next step starts
+      for (size_t a = 0; a + 1 < step.balls.size(); ++a) {
         const Vec3 d = position(x, a + 1) - position(x, a);
         const double gap = glm::length(d) - 2 * kR;
         const double closing = glm::dot(velocity(x, a) - velocity(x, a + 1), d) / glm::length(d);

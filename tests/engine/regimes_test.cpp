@@ -62,7 +62,7 @@ TEST(Regimes, SlidingBallEndsWhereTheFullModelEnds) {
     d["model"] = {{"sliding_regime", sliding_regime}};
     d["integrator"]["abs_tol"] = d["integrator"]["rel_tol"] = tol;
     auto sim = simulate(scene(d));
-    if (slid) sim->set_observer([&](const Island& island) { *slid = *slid || island.state().sliding(0); });
+    if (slid) sim->set_observer([&](const StepView& step) { *slid = *slid || step.state.sliding(0); });
     advance_to(*sim, 0.6);  // sliding lasts 2 v / (7 mu g) = 0.29 s
     return std::pair{sim->state().x, sim->stats().steps};
   };

@@ -50,11 +50,11 @@ TEST(Simulation, ApproachToADampedContactIsNotRejected) {
   auto sim = simulate(scene(doc));
   long steps = 0, rejected = 0;  // up to the contact's onset
   double depth_after = -1;        // at the end of the step that reaches it
-  sim->set_observer([&](const Island& island) {
-    const double depth = 2 * kR - glm::length(position(island.span().x1, 0) - position(island.span().x1, 1));
-    if (island.span().t0 < 2e-4 / 8 && depth_after < 0) {
+  sim->set_observer([&](const StepView& step) {
+    const double depth = 2 * kR - glm::length(position(step.state.x, 0) - position(step.state.x, 1));
+    if (step.t0 < 2e-4 / 8 && depth_after < 0) {
       ++steps;
-      rejected = island.stats().rejected_steps;
+      rejected = step.stats.rejected_steps;
       depth_after = depth;
     }
   });
@@ -80,7 +80,7 @@ TEST(Simulation, HardHeadOnContactTakesAtMostThirtySteps) {
                                 {{"id", "b"}, {"position", {0, 0, 0}}}}}};
   auto sim = simulate(scene(doc));
   std::vector<std::pair<double, double>> spans;
-  sim->set_observer([&](const Island& island) { spans.emplace_back(island.span().t0, island.span().t1); });
+  sim->set_observer([&](const StepView& step) { spans.emplace_back(step.t0, step.t1); });
   ASSERT_EQ(sim->advance(2e-3), Status::Ok);
   const double begin = event_time(*sim, "contact_begin", "a", "b"), end = event_time(*sim, "contact_end", "a", "b");
   ASSERT_GT(end, begin);

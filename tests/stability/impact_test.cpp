@@ -8,9 +8,9 @@ namespace {
 
 // Records in `deepest` the deepest contact (bed excluded) at the end of any accepted step, m.
 void track_depth(Simulation& sim, double& deepest) {
-  sim.set_observer([&deepest](const Island& island) {
-    for (const Contact& c : shotlab::contacts(island.model(), island.state()))
-      if (c.other_ball >= 0 || island.model().colliders[c.collider].name != "bed") deepest = std::max(deepest, c.depth);
+  sim.set_observer([&deepest](const StepView& step) {
+    for (const Contact& c : shotlab::contacts(step.model, step.state))
+      if (c.other_ball >= 0 || step.model.colliders[c.collider].name != "bed") deepest = std::max(deepest, c.depth);
   });
 }
 
