@@ -28,7 +28,11 @@ class Dynamics {
   long evaluations() const { return evaluations_; }
   // How the step about to be taken treats its changing contacts (contacts.hpp; empty lists: the plain law). Swapped
   // in, so that the caller's lists keep their storage and hold the last step's afterwards.
-  void swap_step(StepContacts& step) { std::swap(cache_.step, step); }
+  void swap_step(StepContacts& step) {
+    std::swap(cache_.step, step);
+    ++plan_swaps_;
+  }
+  long plan_swaps() const { return plan_swaps_; }  // how often the step's contact laws were swapped (invariant checks)
   const StepContacts& step() const { return cache_.step; }
   // The balls' flags changed since the step's lists were made (one woke, one left play): the right-hand side sweeps
   // for touching pairs again until the next step's lists come.
@@ -50,6 +54,7 @@ class Dynamics {
   ContactCache cache_;
   std::vector<Vec3> force_, torque_;
   long evaluations_ = 0;
+  long plan_swaps_ = 0;
   bool recording_ = true;
   std::vector<ContactRecord> recorded_;
 };

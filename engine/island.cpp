@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "check.hpp"
 #include "diagnostics.hpp"
 #include "partition.hpp"
 
@@ -149,29 +150,56 @@ void Island::take_events(double t, std::vector<Event>& out) {
   events_.erase(events_.begin(), end);
 }
 
+// A step as a list of stages: plan its length, freeze its contact laws, integrate (or move in closed form), check,
+// commit, then events and regimes at its end (docs/model.md#step-control).
 bool Island::step(double limit) {
+  bool constant = false;
+  double dt = plan(limit, constant);
+  freeze_laws();
+  const bool to_limit = dt >= limit - span_.t1;  // the synchronisation time ends the step exactly
+  if (to_limit) dt = limit - span_.t1;
+  // Each step runs in trial_ (its end in x1, f1), whose buffers outlive the step: no allocation per step.
+  trial_.t0 = span_.t1;
+  trial_.x0 = span_.x1;
+  trial_.f0 = f_start_;
+  double t;
+  if (constant) t = closed_form_to(to_limit ? limit : span_.t1 + dt);
+  else if (!integrate(dt, to_limit ? limit : std::numeric_limits<double>::quiet_NaN(), t)) return false;
+  ++stats_.steps;
+  stats_.rhs_evaluations = dynamics_.evaluations();
+  if (!finite_or_stop(t)) return false;
+  commit(t);
+  settle(t, !constant && is_adaptive(model_.integrator.method));
+  return true;
+}
+
+// s: the step's length before any trial. An island whose right-hand side stays constant (every ball asleep, or rolling
+// or sliding outside its friction bands or inside them where band_tail.hpp has the closed form), or whose other balls
+// swing alone on their rods (swing.hpp), moves in closed form (`constant`): as long as the caps allow, no longer than
+// a lone ball's horizon. The caps: a friction band's edge, a possible contact (its lists go to plan_).
+double Island::plan(double limit, bool& constant) {
+  SHOTLAB_ASSERT(integ_.time == span_.t1 && integ_.x == span_.x1, "a step starts from the last step's end, never "
+                 "from an interpolated state");
   const bool adaptive = is_adaptive(model_.integrator.method);
   double dt = adaptive ? dt_next_ : model_.integrator.fixed_step;
-  // An island whose right-hand side stays constant (every ball asleep, or rolling or sliding outside its friction
-  // bands, or inside them where band_tail.hpp has the closed form), or whose other balls swing alone on their rods
-  // (swing.hpp), moves in closed form: one step as long as the caps allow (and no longer than a lone ball's horizon,
-  // where the island's deadline is not finite), with no error to control.
-  bool constant = false;
+  constant = false;
   trial_.tails.clear();
   trial_.swings.clear();
-  if (adaptive) {
-    continuing_ = span_.swings;
-    for (Swing& s : continuing_) s.phase += s.omega * (span_.t1 - span_.t0);  // as apply() reached the step's end
-    const double band = time_to_band_edge(model_, integ_, cap_cache_, span_.x1.data(), &constant, &trial_.tails,
-                                          &trial_.swings, &continuing_);
-    if (!constant) trial_.tails.clear(), trial_.swings.clear();
-    const double horizon = constant ? std::min(limit - span_.t1, kLoneHorizon) : dt;
-    dt = std::min({horizon, band, time_to_possible_contact(model_, integ_, span_.x1.data(), horizon, cap_cache_, &plan_)});
-  }
-  // The changing contacts keep their law through the step (StepContacts). A contact left out has no force at the
-  // step's start, nor has an unclamped one a different force there, so f there stays as it was, unless a contact
-  // left out of the last step touches now or one unclamped in it has stopped pushing (it was cut there).
-  dynamics_.swap_step(plan_);
+  if (!adaptive) return dt;
+  continuing_ = span_.swings;
+  for (Swing& s : continuing_) s.phase += s.omega * (span_.t1 - span_.t0);  // as apply() reached the step's end
+  const double band = time_to_band_edge(model_, integ_, cap_cache_, span_.x1.data(), &constant, &trial_.tails,
+                                        &trial_.swings, &continuing_);
+  if (!constant) trial_.tails.clear(), trial_.swings.clear();
+  const double horizon = constant ? std::min(limit - span_.t1, kLoneHorizon) : dt;
+  return std::min({horizon, band, time_to_possible_contact(model_, integ_, span_.x1.data(), horizon, cap_cache_, &plan_)});
+}
+
+// The changing contacts keep their law through the step (StepContacts). A contact left out has no force at the step's
+// start, nor has an unclamped one a different force there, so f there stays as it was, unless a contact left out of
+// the last step touches now or one unclamped in it has stopped pushing (it was cut there).
+void Island::freeze_laws() {
+  dynamics_.swap_step(plan_);  // plan_ now holds the last step's lists
   const StepContacts &now = dynamics_.step(), &last = plan_;
   const bool changed = !std::includes(now.separated.begin(), now.separated.end(), last.separated.begin(), last.separated.end()) ||
                        !std::includes(now.pushing.begin(), now.pushing.end(), last.pushing.begin(), last.pushing.end());
@@ -180,66 +208,62 @@ bool Island::step(double limit) {
     dynamics_(span_.x1, f_start_, span_.t1);
     end_record_is_start_ = false;
   }
-  // The synchronisation time ends the step exactly (round-off in t1 + (limit - t1) is snapped below).
-  const bool to_limit = dt >= limit - span_.t1;
-  if (to_limit) dt = limit - span_.t1;
-  // Each step runs in trial_ (its end in x1, f1), whose buffers outlive the step: no allocation per step.
-  trial_.t0 = span_.t1;
-  trial_.x0 = span_.x1;
-  trial_.f0 = f_start_;
-  double t;
-  if (constant) {
-    aim_ = std::numeric_limits<double>::infinity();
-    t = to_limit ? limit : span_.t1 + dt;
+}
+
+// The closed-form step to t, ended where a contact begins if one does first: the caps let a pair come contact_margin
+// into touching within the step, and on the closed-form path the interpolant is the motion itself. Returns its end.
+double Island::closed_form_to(double t) {
+  aim_ = std::numeric_limits<double>::infinity();
+  closed_form_step(t);
+  const double touch = std::min(detector_.first_contact_change(trial_, integ_, dynamics_.step(), nullptr).begin,
+                                detector_.first_touch(trial_, dynamics_.step().separated));
+  if (touch < t - kOnsetResolution) {
+    t = touch;
     closed_form_step(t);
-    // The caps let a pair come contact_margin into touching within the step: end it where the contact begins,
-    // exactly, as on the closed-form path the step's interpolant is the motion itself.
-    const double touch = std::min(detector_.first_contact_change(trial_, integ_, dynamics_.step(), nullptr).begin,
-                                  detector_.first_touch(trial_, dynamics_.step().separated));
-    if (touch < t - kOnsetResolution) {
-      t = touch;
-      closed_form_step(t);
-      ++stats_.redone_steps;
-    }
-  } else if (!integrate(dt, to_limit ? limit : std::numeric_limits<double>::quiet_NaN(), t)) {
-    return false;
+    ++stats_.redone_steps;
   }
-  StateVector &x = trial_.x1, &f = trial_.f1;
-  ++stats_.steps;
-  stats_.rhs_evaluations = dynamics_.evaluations();
+  return t;
+}
 
-  if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) {
-    std::ostringstream msg;
-    msg << "non-finite state in the step from t = " << span_.t1 << " s to " << t << " s; balls: ";
-    for (int i = 0; i < integ_.ball_count(); ++i)
-      for (int k = 0; k < kBallDofs; ++k)
-        if (!std::isfinite(x[kBallDofs * i + k])) {
-          msg << model_.balls[i].id << " ";
-          break;
-        }
-    msg << ". Last finite state: " << describe_balls(span_.x1);
-    stop(Status::NonFinite, msg.str());
-    return false;
-  }
+// False, with a diagnostic naming the balls, when the trial's end is not finite.
+bool Island::finite_or_stop(double t) {
+  const StateVector& x = trial_.x1;
+  if (std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) return true;
+  std::ostringstream msg;
+  msg << "non-finite state in the step from t = " << span_.t1 << " s to " << t << " s; balls: ";
+  for (int i = 0; i < integ_.ball_count(); ++i)
+    for (int k = 0; k < kBallDofs; ++k)
+      if (!std::isfinite(x[kBallDofs * i + k])) {
+        msg << model_.balls[i].id << " ";
+        break;
+      }
+  msg << ". Last finite state: " << describe_balls(span_.x1);
+  stop(Status::NonFinite, msg.str());
+  return false;
+}
 
+// The trial becomes the accepted step: span_ and the integrator state move to its end at t.
+void Island::commit(double t) {
+  SHOTLAB_ASSERT(t >= span_.t1, "spans are ordered: a step ends at or after its start");
   span_.x0.swap(span_.x1);
   span_.f0.swap(f_start_);
   span_.t0 = span_.t1;
-  span_.x1.swap(x);
-  span_.f1.swap(f);
+  span_.x1.swap(trial_.x1);
+  span_.f1.swap(trial_.f1);
   span_.tails.swap(trial_.tails);
   span_.swings.swap(trial_.swings);
   span_.t1 = t;
   integ_.x = span_.x1;
   integ_.time = t;
   ++call_steps_;
+  copy_flags(integ_, start_);  // the flags the step ran with (a rewind to inside it needs them)
+}
 
-  // The flags the step started with (a rewind to inside it needs them); only the flags, not the state vector.
-  copy_flags(integ_, start_);
+// At the step's end: events located on it, balls that left play frozen where they left, regimes entered or left.
+// `recorded`: an integrated step's last evaluation recorded the contacts at its end (end_record_, sorted).
+void Island::settle(double t, bool recorded) {
   std::vector<Exit> exits;
-  // An integrated step's last evaluation recorded the contacts at its end (end_record_, sorted).
-  detector_.scan(span_, integ_, dynamics_.step(), !constant && adaptive ? &end_record_ : nullptr, events_, exits);
-  // A ball that left play is frozen where it left.
+  detector_.scan(span_, integ_, dynamics_.step(), recorded ? &end_record_ : nullptr, events_, exits);
   StateVector at;
   for (const Exit& e : exits) {
     span_.interpolate(e.time, at);
@@ -251,21 +275,19 @@ bool Island::step(double limit) {
     set_spin(span_.x1, e.ball, Vec3{0.0});
   }
   const bool regime_changed = regimes_.update(integ_, span_.x1, t - span_.t0);
-  if (!exits.empty() || regime_changed) {
-    // The system lost or froze bodies, or woke them: the integrator starts afresh from the step's end. The finished
-    // step's interpolant stays for the caller's clock, with the exited balls frozen in it.
-    const StepSpan finished = span_;
-    restart();
-    span_.x0 = finished.x0;
-    span_.f0 = finished.f0;
-    span_.t0 = finished.t0;
-    for (const Exit& e : exits)
-      for (int k = 0; k < kBallDofs; ++k) {
-        span_.x0[kBallDofs * e.ball + k] = span_.x1[kBallDofs * e.ball + k];
-        span_.f0[kBallDofs * e.ball + k] = 0.0;
-      }
-  }
-  return true;
+  if (exits.empty() && !regime_changed) return;
+  // The system lost or froze bodies, or woke them: the integrator starts afresh from the step's end. The finished
+  // step's interpolant stays for the caller's clock, with the exited balls frozen in it.
+  const StepSpan finished = span_;
+  restart();
+  span_.x0 = finished.x0;
+  span_.f0 = finished.f0;
+  span_.t0 = finished.t0;
+  for (const Exit& e : exits)
+    for (int k = 0; k < kBallDofs; ++k) {
+      span_.x0[kBallDofs * e.ball + k] = span_.x1[kBallDofs * e.ball + k];
+      span_.f0[kBallDofs * e.ball + k] = 0.0;
+    }
 }
 
 // Constant acceleration over the step to t1 (the island's right-hand side does not change, time_to_band_edge):
@@ -289,170 +311,6 @@ void Island::closed_form_step(double t1) {
   dynamics_(x, f, t1);
   trial_.t1 = t1;
   stats_.last_step = h;
-}
-
-// s: the step from an onset (StepContacts::onset) over which the part of the error the onset's force alone causes
-// comes to `tolerance` (m/s): that error is coefficient k h^(e+1) (stepper.hpp, onset_error_coefficient) with
-// k = onset_strength.
-double Island::onset_step(double tolerance) {
-  const StepContacts& s = dynamics_.step();
-  if (s.onset_exponent != onset_exponent_) {
-    onset_exponent_ = s.onset_exponent;
-    onset_coefficient_ = onset_error_coefficient(model_.integrator.method, onset_exponent_);
-  }
-  if (onset_coefficient_ <= 0 || s.onset_strength <= 0) return std::numeric_limits<double>::infinity();
-  return std::pow(tolerance / (onset_coefficient_ * s.onset_strength), 1.0 / (onset_exponent_ + 1.0));
-}
-
-bool Island::integrate(double dt, double limit, double& t) {
-  const bool adaptive = is_adaptive(model_.integrator.method);
-  const double wanted = dt_next_;
-  // A change the last step's trials saw past where they were cut ends this step (aim_): a trial across it would be
-  // redone to end there, two trials for one step. Located on a trial that crossed the cut's kink, it is not always
-  // close enough (a step that ends short of it is followed by a short one), but on balance it pays: on the break,
-  // the rack's trials 790 -> 718 and 5 % fewer instructions in all.
-  const double aim = aim_;
-  aim_ = std::numeric_limits<double>::infinity();
-  if (adaptive && aim > span_.t1 && aim - span_.t1 < dt) dt = aim - span_.t1;
-  const bool capped = dt < wanted;
-  StepSpan& trial = trial_;
-  StateVector &x = trial.x1, &f = trial.f1;
-  double tried;
-  int retries = 0;
-  double passed = 0;     // the first trial the error control accepted, s
-  bool at_onset = false;  // the step was cut where a contact begins
-  std::optional<ContactKey> aimed;  // the contact left out of the step where it was cut to end (first_touch)
-  const long rejected_before = stats_.rejected_steps;
-  // The contacts at the step's start, as the last evaluation there recorded them (the step's end before, or the start
-  // again where the contact lists changed), to compare each trial's end with.
-  auto by_key = [](const ContactRecord& a, const ContactRecord& b) { return a.key < b.key; };
-  if (end_record_is_start_) {
-    start_record_.swap(end_record_);
-  } else if (adaptive) {  // the fixed-step methods cut no step
-    start_record_ = dynamics_.recorded();
-    std::sort(start_record_.begin(), start_record_.end(), by_key);
-  }
-  end_record_is_start_ = false;
-  // A contact that begins at the step's start (StepContacts::onset) makes an error the estimate understates. The
-  // step starts at the length where that error is 0.9 of the tolerance: the strict controller would shrink a longer
-  // trial to about there anyway, one rejection (six right-hand sides) at a time, and a step that ends at an onset hands
-  // over its own length, which has nothing to do with the contact's. That trial takes the tolerance of a velocity at
-  // the closing speed; the controller checks it. The step is held to the strict tolerance where that error can
-  // matter, over a tenth of the absolute tolerance (the body struck may have been at rest, where the relative share
-  // is nothing); not for the pairs of a resting rack that begin to close at micrometres per second, where the strict
-  // tolerance would only tighten the rack's every step (S6 at 1e-7: 5e-7 R -> 9e-8 R, but the break's rack 10 %
-  // slower, the same as asking for a tighter tolerance).
-  bool from_onset = false;
-  if (dynamics_.step().onset) {
-    const IntegratorOptions& o = model_.integrator;
-    dt = std::min(dt, onset_step(0.9 * (o.abs_tol + o.rel_tol * dynamics_.step().onset_speed)));
-    from_onset = dt > onset_step(0.1 * o.abs_tol);
-  }
-  for (;;) {
-    x = trial.x0;
-    f = trial.f0;
-    t = span_.t1;
-    tried = dt;
-    if (stepper_->try_step(dynamics_, x, f, t, dt, from_onset)) {
-      // A contact that begins or ends inside the step puts a kink (linear damping: a jump) in the force, where every
-      // embedded error estimate misjudges a high-order step (MODEL.md, "Numerical facts"), and so does a friction term
-      // that enters or leaves its smoothing band (friction_switched): a slip driven through the band by a hard contact
-      // crosses it in a fraction of the step, a sign switch the estimate may not see at all (in a breaking rack such
-      // steps were 8-13 times the tolerance). Redo the step so that it ends at the change, located on this step's
-      // dense output; the next step then starts at the kink. An onset of a contact left out of the step, any release and
-      // any friction switch end the step however early they come; other onsets and ends of contacts in the first 1 % of
-      // a step are left alone, where a redone step's successor finds them.
-      if (!adaptive) break;
-      if (retries == 0) passed = tried;
-      trial.t1 = t;
-      const StepContacts& kept = dynamics_.step();
-      end_record_ = dynamics_.recorded();
-      std::sort(end_record_.begin(), end_record_.end(), by_key);
-      const auto change = detector_.first_contact_change(trial, integ_, kept, &end_record_);
-      const double early = span_.t1 + 0.01 * tried;
-      constexpr double inf = std::numeric_limits<double>::infinity();
-      ContactKey touching;
-      const double touch = detector_.first_touch(trial, kept.separated, &touching);
-      const double onset = std::min(change.begin > early ? change.begin : inf, touch);
-      // Releases and friction switches, however early: a contact whose law the step kept unclamped would pull all
-      // through the step, and a friction switch just after the start is a slip driven through its band in a moment,
-      // where the step's first stage would see the friction before it turned.
-      const auto law = detector_.first_law_change(trial, start_record_, end_record_);
-      const double cut = std::min({onset, change.end > early ? change.end : inf, law.release, law.friction});
-      if (cut >= t - kOnsetResolution) {
-        // A step redone to end where a contact left out of it touches was aimed at a root of the last trial's
-        // interpolant, which may fall short of the redone step's own: ended there, the next step would start a few
-        // picometres apart, its first stage without the contact's force (with linear damping, c v for all the rest
-        // of the step), which the error estimate hardly sees (S5's cradle: three such onsets, each 21x the
-        // tolerance, made up nearly all of its error). Such a step goes on by the time the gap takes to close at its
-        // closing speed, to half the onset resolution past the touch (within the test above once located again), but
-        // never past the first trial the error control passed, which kept to every cap and to `limit`.
-        if (!aimed || retries == kMaxRedos) break;
-        const double longer = tried + detector_.time_to_touch(trial, *aimed) + 0.5 * kOnsetResolution;
-        if (!(longer > tried + 0.5 * kOnsetResolution && longer <= passed)) break;
-        dt = longer;
-        ++retries;
-        ++stats_.redone_steps;
-        continue;
-      }
-      at_onset = cut == onset;
-      // The changes each trial of the step saw after its cut: the earliest of them past the step's end ends the next
-      // step (integrate's start). Onsets are left to the onset's own step length, and a cut an earlier trial made that
-      // this one fell short of is no such change (the trajectory that reached it was not the one redone): aiming at
-      // either cost more steps than it saved.
-      for (const double later : {change.end, law.release, law.friction, law.next})
-        if (later > cut + kTimeResolution) aim_ = std::min(aim_, later);
-      aimed.reset();
-      if (cut == touch) aimed = touching;
-      if (retries == kMaxRedos) {
-        if (kept.separated.empty() && kept.pushing.empty()) break;
-        // Still a change inside: the step again with the plain law, its kinks left to the error control.
-        StepContacts plain;
-        dynamics_.swap_step(plain);
-        dt = tried;
-        continue;
-      }
-      dt = cut - span_.t1;
-      ++retries;
-      ++stats_.redone_steps;
-      continue;
-    } else if (!std::isfinite(dt) || dt < 1e-14) {
-      std::ostringstream msg;
-      msg << "step too small: the error control shrank the step to " << dt << " s at t = " << span_.t1 << " s. "
-          << describe_balls(span_.x1);
-      stop(Status::StepTooSmall, msg.str());
-      return false;
-    }
-    ++stats_.rejected_steps;
-    aimed.reset();  // a shorter trial than the cut: the next step finds the onset
-  }
-  if (retries == 0 && tried == limit - span_.t1) t = limit;
-  stats_.last_step = tried;
-  end_record_is_start_ = adaptive;  // the accepted trial's end, sorted: the next step's start unless restarted
-  // After a rejection, do not grow the step at once: odeint's controller would grow it up to 5x and, on a
-  // stability-limited problem (the stiff friction switch), be rejected again. A step cut short where a contact begins,
-  // ends or releases passed the error control at its first length, so the next one may try that again (in a breaking
-  // rack, contacts change every 15 us and each cut would otherwise shrink the steps after it); after an onset, the
-  // onset's own step length caps it (onset_step: its force was not in that trial, and a loose setting's error estimate
-  // could pass a step across all of it; methods without that estimate, Bulirsch-Stoer and Rosenbrock 4, keep to the cut
-  // length, tests/stability/impact_test.cpp). Taking the cut length instead left the contact's first steps to the
-  // accident of where the step before it ended: S1 at 0.5 m/s, where islands join 2 us before the contact, ended 1.6e-7
-  // v0 off at 1e-7 against the plain path's 8e-9. Where that first length was itself cut by a cap (on the approach to
-  // a contact the cap's last trial is a few microseconds), the step the caller wanted stands, as for a capped step
-  // that is not redone: S5's fast path, whose last step before the touch ended 0.5 us short of it, began the cradle's
-  // chain with 2.2 us steps where the plain path began with 5.7 us ones; now both take the same steps through it. A
-  // step that starts at an onset and is held to the strict tolerance (stepper.hpp) had its rejections from that
-  // length, not from stiffness. The next one starts clear of the onset, where the estimate holds again, so it may be
-  // as long as the plain tolerance allows: these fifth-order controllers size a step as (tolerance / error)^(1/5), so
-  // onset_factor^(1/5) longer than the strict one suggests (S1 at 8 m/s: 32 steps through the contact without this, 30
-  // with it).
-  const bool rejected = stats_.rejected_steps > rejected_before, sized = onset_growth_ > 1;  // sized: has onset_step
-  if (from_onset && sized && !(retries > 0 && at_onset))
-    dt_next_ = (rejected ? std::min(dt, tried) : dt) * onset_growth_;
-  else if (rejected || (retries > 0 && at_onset && !sized)) dt_next_ = std::min(dt, tried);
-  else if (retries > 0) dt_next_ = std::max({dt, passed, capped ? wanted : 0.0});
-  else dt_next_ = capped ? std::max(dt, wanted) : dt;
-  return true;
 }
 
 void Island::stop(Status why, std::string message) {

@@ -104,12 +104,34 @@ class Island {
   void take_events(double t, std::vector<Event>& out);
 
  private:
+  // One integrated step's trials (step_control.cpp).
+  struct Trials {
+    double tried = 0;                 // s: the last trial's length
+    double passed = 0;                // s: the first trial the error control accepted
+    int retries = 0;                  // redos to end at a change
+    bool at_onset = false;            // the step was cut where a contact begins
+    bool plain = false;               // redone with the plain law after kMaxRedos
+    std::optional<ContactKey> aimed;  // the contact left out of the step where it was cut to end (first_touch)
+  };
+
+  // The stages of step(), in order (island.cpp).
+  double plan(double limit, bool& constant);
+  void freeze_laws();
+  double closed_form_to(double t);
+  bool finite_or_stop(double t);
+  void commit(double t);
+  void settle(double t, bool recorded);
   // The step's end (trial_.x1, f1 from trial_.x0, f0 at trial_.t0): by the error-controlled stepper, trying dt first
   // (`limit`: where the step ends when dt was cut to reach it exactly, else NaN; t: the end's time; false when the
   // step failed), or in closed form to t1.
   bool integrate(double dt, double limit, double& t);
   void closed_form_step(double t1);
+  // Step control (step_control.cpp).
   double onset_step(double tolerance);  // s: where an onset's own error reaches `tolerance` (StepContacts::onset)
+  void load_start_record(bool adaptive);
+  bool cut_at_change(Trials& tr, double t, double& dt);
+  bool go_on_to_touch(Trials& tr, double& dt);
+  void size_next_step(double dt, double wanted, bool capped, bool from_onset, const Trials& tr, bool rejected);
   void restart();  // after the system changed (a ball left play): fresh derivative, stepper history, snapshot
   void stop(Status why, std::string message);
   std::string describe_balls(const StateVector& x) const;

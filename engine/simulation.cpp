@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "check.hpp"
 #include "regimes.hpp"
 
 namespace shotlab {
@@ -65,9 +66,18 @@ double Simulation::meeting_time(double t, const std::vector<int>& balls, double 
 
 void Simulation::regroup(double t, std::vector<Island*> group, std::vector<int> awake) {
   integ_.time = t;
+  std::vector<double> deadline;
+  Partition p = split_group(t, group, awake, deadline);
+  replace_group(t, group, p, deadline);
+  SHOTLAB_ASSERT(islands_disjoint(), "every ball is in one island at most");
+}
+
+// The group's balls and the awake ones, split into new islands at t (the partition, and each new island's deadline).
+// Every other island that could meet one of them before it got where it is joins the group, rewound to t.
+Partition Simulation::split_group(double t, std::vector<Island*>& group, std::vector<int>& awake,
+                                  std::vector<double>& deadline) {
   auto in_group = [&](const Island* island) { return std::find(group.begin(), group.end(), island) != group.end(); };
   Partition p;
-  std::vector<double> deadline;
   std::vector<std::optional<FreePath>> paths;  // of each new island that is a lone ball on a free path
   for (size_t taken = 0;;) {
     // The group's balls at t (a member past t is rewound to t: its last step began at or before t).
@@ -111,10 +121,15 @@ void Simulation::regroup(double t, std::vector<Island*> group, std::vector<int> 
         other->set_deadline(std::min(other->deadline(), meet));
       }
     }
-    if (!grew) break;
+    if (!grew) return p;
   }
-  // Retire the group: events up to t are handed over (later ones are found again). A member at t that keeps exactly
-  // its balls goes on running (its step size and stepper history); the others end here, their energy booked at t.
+}
+
+// Retires the group: events up to t are handed over (later ones are found again). A member at t that keeps exactly
+// its balls goes on running (its step size and stepper history); the others end here, their energy booked at t.
+void Simulation::replace_group(double t, const std::vector<Island*>& group, Partition& p,
+                               const std::vector<double>& deadline) {
+  auto in_group = [&](const Island* island) { return std::find(group.begin(), group.end(), island) != group.end(); };
   std::vector<std::unique_ptr<Island>> next;
   std::vector<std::unique_ptr<Island>> ending;
   next.reserve(islands_.size() + p.islands.size());  // a regroup comes every few steps: no doubling on the way
@@ -156,6 +171,14 @@ void Simulation::regroup(double t, std::vector<Island*> group, std::vector<int> 
     for (int i : island->balls()) copy_ball(integ_, i, state_, i);
   }
   islands_ = std::move(next);
+}
+
+bool Simulation::islands_disjoint() const {
+  std::vector<uint8_t> seen(integ_.ball_count(), 0);
+  for (const auto& island : islands_)
+    for (int i : island->balls())
+      if (seen[i]++) return false;
+  return true;
 }
 
 std::vector<std::vector<int>> Simulation::island_balls() const {

@@ -56,6 +56,9 @@ class Simulation {
   // Splits the balls of `group` (islands at time t or, one step at most, past it) and the awake balls `awake` (in no
   // island) into new islands at time t, taking in every other island that could meet them before it got where it is.
   void regroup(double t, std::vector<Island*> group, std::vector<int> awake);
+  Partition split_group(double t, std::vector<Island*>& group, std::vector<int>& awake, std::vector<double>& deadline);
+  void replace_group(double t, const std::vector<Island*>& group, Partition& p, const std::vector<double>& deadline);
+  bool islands_disjoint() const;
   // s: the earliest time at which `balls` (at time t in integ_, in an island of energy `energy`; path_a: their free
   // path where they are a lone ball on one) could touch a ball of `other` (at time t on its dense output); a closer
   // look only for a bound before `until` (s).
