@@ -48,6 +48,17 @@ class Partitioner {
   void join(int i, int j);
   void join_sleeper(int i, int sleeper, const State& state);  // with every sleeper frozen against it
   double bound(int i) { return speed_bound(energy_[root(i)], i); }
+  // The stages of operator(), in order.
+  void size_for(int n);
+  void add_energies(const State& state, const std::vector<int>& awake);
+  void link(const State& state, const std::vector<int>& awake);
+  Partition collect(const std::vector<int>& members);
+  void set_horizons(const State& state, const std::vector<int>& awake, Partition& p);
+  void reset(const std::vector<int>& members);
+  double speed(const State& state, int i);
+  template <class Fn>
+  void near_pairs(const State& state, const std::vector<int>& awake, double time, Fn&& fn);
+  const std::optional<FreePath>& path(const State& state, const Partition& p, int i);
 
   const Model& model_;
   ContactCache cache_;
