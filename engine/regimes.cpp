@@ -162,85 +162,110 @@ double path_meeting_time(const FreePath& a, const FreePath& b, double reach, dou
   return closing > 0 ? h + std::max(gap, 0.0) / closing : std::numeric_limits<double>::infinity();
 }
 
-double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
-                         bool* constant, std::vector<BandTail>* tails, std::vector<Swing>* swings,
-                         const std::vector<Swing>* continuing) {
-  const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
-  const double g = glm::length(model.options.gravity);
+namespace {
+
+// time_to_band_edge's scan of the balls in the rolling or sliding regime: the earliest band edge (best), and whether
+// every term is outside its band or follows a tail's closed form (outside).
+struct BandScan {
+  const Model& model;
+  const ContactCache& cache;
+  const double* x;
+  std::vector<BandTail>* tails;
+  Smoothing smooth;
+  double g;  // m/s^2
   double best = std::numeric_limits<double>::infinity();
-  bool outside = true;  // every term so far outside its band
-  bool full = false;     // a ball in the full model
+  bool outside = true;
+
   // A quantity q falling at `rate` (each friction term of strength F relaxes the motion it opposes at F times its
   // mobility, contact_force.hpp) reaches its band's edge 1/k after (q - 1/k) / rate. Where fricstep is 0 (q = 0 and
-  // `zero_holds`: nothing else moves q) or 1 (beyond the edge), the term is constant.
-  // Returns whether q is inside the band (and not at a held zero).
-  auto edge = [&](double q, double strength, double mobility, bool zero_holds) {
+  // `zero_holds`: nothing else moves q) or 1 (beyond the edge), the term is constant. Whether q is inside the band.
+  bool edge(double q, double strength, double mobility, bool zero_holds) {
     const double t = time_to_edge(smooth, q, strength, mobility);
     if (t > kKinkTooClose) best = std::min(best, t);
     else if (q != 0 || !zero_holds) return true;
     return false;
-  };
+  }
+  void ball(const State& state, int i, int bed);
+};
+
+// Inside its band the spin about the normal, and a rolling ball's speed, follow their tails' closed forms where the
+// caller takes tails (band_tail.hpp). A speed tail lasts until the stop cut (settle_rolling).
+void BandScan::ball(const State& state, int i, int bed) {
+  const ContactMaterial& m = *cache.collider_material[bed];
+  const Vec3& n = cache.plane_normal[bed];
+  const double weight = model.balls[i].mass * g, r = model.balls[i].radius;
+  const Vec3 v = velocity(x, i), w = spin(x, i);
+  const double spin_strength = m.spin_friction * weight, wn = glm::dot(w, n);
+  if (m.spin_friction > 0 && edge(r * std::abs(wn), spin_strength, cache.inv_inertia_r2[i], true)) {
+    if (tails)
+      tails->push_back({BandTail::Kind::Spin, i, n, Vec3{0.0}, Vec3{0.0}, r,
+                        {r * wn, sharpness_for(smooth, spin_strength, cache.inv_inertia_r2[i]),
+                         spin_strength * cache.inv_inertia_r2[i]}});
+    else
+      outside = false;
+  }
+  if (state.rolling(i)) {  // the speed, against rolling resistance
+    const double strength = m.rolling_resistance * weight, speed = glm::length(v);
+    if (m.rolling_resistance > 0 && edge(speed, strength, cache.inv_mass[i], true)) {
+      if (tails && speed > kStopSpeed) {
+        const BandDecay decay{speed, sharpness_for(smooth, strength, cache.inv_mass[i]), strength * cache.inv_mass[i]};
+        tails->push_back({BandTail::Kind::Speed, i, n, v / speed, position(x, i), r, decay});
+        best = std::min(best, decay.time_to(0.5 * kStopSpeed));
+      } else {
+        outside = false;
+      }
+    }
+  } else if (m.friction > 0) {  // the slip, against sliding friction (rolling resistance acts only inside its band)
+    Vec3 u = v + r * glm::cross(n, w);
+    u -= glm::dot(u, n) * n;
+    if (edge(glm::length(u), m.friction * weight, cache.inv_mass[i] + cache.inv_inertia_r2[i], false)) {
+      const auto tail = tails ? slip_tail(model, cache, smooth, m, i, n, position(x, i), v, u) : std::nullopt;
+      if (tail) tails->push_back(tail->first), best = std::min(best, tail->second);
+      else outside = false;
+    }
+  } else if (m.rolling_resistance > 0) {
+    outside = false;  // frictionless sliding: rolling resistance acts on the centre's speed all along
+  }
+}
+
+// The swings of the balls in the full model, each alone on its rod; false at the first that is not.
+bool add_swings(const Model& model, const State& state, const ContactCache& cache, const double* x,
+                std::vector<Swing>& swings, const std::vector<Swing>* continuing) {
+  for (int i = 0; i < state.ball_count(); ++i) {
+    if (!state.active(i) || state.rolling(i) || state.sliding(i)) continue;
+    const Swing* last = nullptr;
+    if (continuing)
+      for (const Swing& s : *continuing)
+        if (s.ball == i) last = &s;
+    const auto swing = swing_of(model, state, cache, x, i, last);
+    if (!swing) return false;
+    swings.push_back(*swing);
+  }
+  return true;
+}
+
+}  // namespace
+
+double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
+                         bool* constant, std::vector<BandTail>* tails, std::vector<Swing>* swings,
+                         const std::vector<Swing>* continuing) {
+  BandScan scan{model, cache, x, tails, {model.options.friction_sharpness, model.options.friction_rate_limit},
+                glm::length(model.options.gravity)};
   if (tails) tails->clear();
   if (swings) swings->clear();
+  bool full = false;  // a ball in the full model
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.active(i)) continue;  // asleep or out of play: frozen
     const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : -1;
-    if (bed < 0) {  // the full model, unless the ball swings alone on its rod (below)
-      full = true;
-      continue;
-    }
-    const ContactMaterial& m = *cache.collider_material[bed];
-    const Vec3& n = cache.plane_normal[bed];
-    const double weight = model.balls[i].mass * g, r = model.balls[i].radius;
-    const Vec3 v = velocity(x, i), w = spin(x, i);
-    // Inside its band the spin about the normal, and a rolling ball's speed, follow their tails' closed forms where
-    // the caller takes tails (band_tail.hpp). A speed tail lasts until the stop cut (settle_rolling).
-    const double spin_strength = m.spin_friction * weight, wn = glm::dot(w, n);
-    if (m.spin_friction > 0 && edge(r * std::abs(wn), spin_strength, cache.inv_inertia_r2[i], true)) {
-      if (tails)
-        tails->push_back({BandTail::Kind::Spin, i, n, Vec3{0.0}, Vec3{0.0}, r,
-                          {r * wn, sharpness_for(smooth, spin_strength, cache.inv_inertia_r2[i]),
-                           spin_strength * cache.inv_inertia_r2[i]}});
-      else
-        outside = false;
-    }
-    if (state.rolling(i)) {  // the speed, against rolling resistance
-      const double strength = m.rolling_resistance * weight, speed = glm::length(v);
-      if (m.rolling_resistance > 0 && edge(speed, strength, cache.inv_mass[i], true)) {
-        if (tails && speed > kStopSpeed) {
-          const BandDecay decay{speed, sharpness_for(smooth, strength, cache.inv_mass[i]), strength * cache.inv_mass[i]};
-          tails->push_back({BandTail::Kind::Speed, i, n, v / speed, position(x, i), r, decay});
-          best = std::min(best, decay.time_to(0.5 * kStopSpeed));
-        } else {
-          outside = false;
-        }
-      }
-    } else if (m.friction > 0) {  // the slip, against sliding friction (rolling resistance acts only inside its band)
-      Vec3 u = v + r * glm::cross(n, w);
-      u -= glm::dot(u, n) * n;
-      if (edge(glm::length(u), m.friction * weight, cache.inv_mass[i] + cache.inv_inertia_r2[i], false)) {
-        const auto tail = tails ? slip_tail(model, cache, smooth, m, i, n, position(x, i), v, u) : std::nullopt;
-        if (tail) tails->push_back(tail->first), best = std::min(best, tail->second);
-        else outside = false;
-      }
-    } else if (m.rolling_resistance > 0) {
-      outside = false;  // frictionless sliding: rolling resistance acts on the centre's speed all along
-    }
+    if (bed < 0) full = true;  // the full model, unless the ball swings alone on its rod (below)
+    else scan.ball(state, i, bed);
   }
   // The swings last: worked out only where nothing else keeps the island from its closed form.
+  bool outside = scan.outside;
   if (full && !(swings && !model.rods.empty())) outside = false;
-  for (int i = 0; full && outside && i < state.ball_count(); ++i)
-    if (state.active(i) && !state.rolling(i) && !state.sliding(i)) {
-      const Swing* last = nullptr;
-      if (continuing)
-        for (const Swing& s : *continuing)
-          if (s.ball == i) last = &s;
-      const auto swing = swing_of(model, state, cache, x, i, last);
-      if (swing) swings->push_back(*swing);
-      else outside = false;
-    }
+  if (full && outside) outside = add_swings(model, state, cache, x, *swings, continuing);
   if (constant) *constant = outside;
-  return best;
+  return scan.best;
 }
 
 bool Regimes::slip_below(const StateVector& x, int i, const Vec3& n, double limit) const {

@@ -55,6 +55,9 @@ class Regimes {
   bool unbalanced(const StateVector& x, int i) const;
   double hop(int i, int bed, double vn, double offset) const;  // m/s, see regimes.cpp
   bool update_sleep(State& state, StateVector& x, double dt);
+  bool wake_touched(State& state, const StateVector& x);  // update_sleep's stages (sleep.cpp)
+  bool sleep_rested(State& state, StateVector& x);
+  bool frozen_touch(const StateVector& x, int i, int j) const;  // closer than kTouch
   bool slip_below(const StateVector& x, int i, const Vec3& n, double limit) const;  // tangential slip at the bed
   bool update_rolling(State& state, StateVector& x);
   bool update_sliding(State& state, StateVector& x);

@@ -61,66 +61,74 @@ bool Regimes::held_still(const StateVector& x, int i) const {
   return glm::length(a) * model_.options.sleep_time < model_.options.rest_speed;
 }
 
+bool Regimes::frozen_touch(const StateVector& x, int i, int j) const {
+  return glm::length(position(x, i) - position(x, j)) - model_.balls[i].radius - model_.balls[j].radius < kTouch;
+}
+
 bool Regimes::update_sleep(State& state, StateVector& x, double dt) {
-  const int n = state.ball_count();
   if (model_.options.sleep_time <= 0) return false;
-  auto frozen_touch = [&](int i, int j) {
-    return glm::length(position(x, i) - position(x, j)) - model_.balls[i].radius - model_.balls[j].radius < kTouch;
-  };
-  std::vector<uint8_t>& resting = resting_;
-  resting.assign(n, 0);
-  for (int i = 0; i < n; ++i) {
+  resting_.assign(state.ball_count(), 0);
+  for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.in_play[i]) continue;
-    resting[i] = state.sleeping(i) || at_rest(state, x, i);
-    state.still_for[i] = resting[i] && !state.sleeping(i) ? state.still_for[i] + dt : 0.0;
+    resting_[i] = state.sleeping(i) || at_rest(state, x, i);
+    state.still_for[i] = resting_[i] && !state.sleeping(i) ? state.still_for[i] + dt : 0.0;
   }
+  const bool woke = wake_touched(state, x);
+  const bool slept = sleep_rested(state, x);
+  return woke || slept;
+}
+
+// Wake: flood from every awake ball that is moving through the touching graph; every sleeper reached wakes. A moving
+// ball wakes a sleeper already within contact_margin, so that the sleeper is awake before the contact force builds up
+// (steps end at contact onsets); sleepers wake each other only when frozen together.
+bool Regimes::wake_touched(State& state, const StateVector& x) {
+  const int n = state.ball_count();
   bool changed = false;
-  // Wake: flood from every awake ball that is moving through the touching graph; every sleeper reached wakes. A
-  // moving ball wakes a sleeper already within contact_margin, so that the sleeper is awake before the contact
-  // force builds up (steps end at contact onsets); sleepers wake each other only when frozen together.
-  std::vector<int>& stack = stack_;
-  stack.clear();
+  stack_.clear();
   for (int i = 0; i < n; ++i)
-    if (state.in_play[i] && !resting[i]) stack.push_back(i);
-  std::vector<uint8_t>& seen = seen_;
-  seen.assign(n, 0);
-  while (!stack.empty()) {
-    const int i = stack.back();
-    stack.pop_back();
+    if (state.in_play[i] && !resting_[i]) stack_.push_back(i);
+  seen_.assign(n, 0);
+  while (!stack_.empty()) {
+    const int i = stack_.back();
+    stack_.pop_back();
     auto wake = [&](int j) {
-      if (!state.sleeping(j) || seen[j]) return;
-      seen[j] = 1;
+      if (!state.sleeping(j) || seen_[j]) return;
+      seen_[j] = 1;
       state.asleep[j] = 0;
       state.still_for[j] = 0;
       changed = true;
-      stack.push_back(j);
+      stack_.push_back(j);
     };
     for (int j : touching_[i])
-      if (!resting[i]) wake(j);
+      if (!resting_[i]) wake(j);
     // touching_ leaves out sleeper pairs (the broad phase skips them); look those up directly.
     sleepers_near(model_, x.data(), cache_, i, kTouch, [&](int j) {
-      if (frozen_touch(i, j)) wake(j);
+      if (frozen_touch(x, i, j)) wake(j);
     });
   }
-  // Sleep: a group of touching awake balls falls asleep together once every one has rested for sleep_time.
-  std::fill(seen.begin(), seen.end(), 0);
-  for (int start = 0; start < n; ++start) {
-    if (!state.active(start) || seen[start]) continue;
-    std::vector<int>& group = group_;
-    group.assign(1, start);
-    seen[start] = 1;
+  return changed;
+}
+
+// Sleep: a group of touching awake balls falls asleep together once every one has rested for sleep_time.
+bool Regimes::sleep_rested(State& state, StateVector& x) {
+  bool changed = false;
+  std::fill(seen_.begin(), seen_.end(), 0);
+  for (int start = 0; start < state.ball_count(); ++start) {
+    if (!state.active(start) || seen_[start]) continue;
+    group_.assign(1, start);
+    seen_[start] = 1;
     bool ready = true;
-    for (size_t k = 0; k < group.size(); ++k) {
-      const int i = group[k];
+    for (size_t k = 0; k < group_.size(); ++k) {
+      const int i = group_[k];
       ready = ready && state.still_for[i] >= model_.options.sleep_time;
       for (int j : touching_[i])
-        if (state.active(j) && !seen[j] && frozen_touch(i, j)) {
-          seen[j] = 1;
-          group.push_back(j);
+        if (state.active(j) && !seen_[j] && frozen_touch(x, i, j)) {
+          seen_[j] = 1;
+          group_.push_back(j);
         }
     }
     if (!ready) continue;
-    for (int i : group) {
+    for (int i : group_) {
       state.asleep[i] = 1;
       state.rolling_on[i] = -1;
       state.sliding_on[i] = -1;

@@ -301,6 +301,39 @@ json parse_json_text(const std::string& text, const std::string& source) {
   }
 }
 
+namespace {
+
+void read_options(const JsonNode& m, Options& o) {
+  m.optional("friction_sharpness", [&](const JsonNode& v) { o.friction_sharpness = v.positive(); });
+  m.optional("friction_rate_limit", [&](const JsonNode& v) { o.friction_rate_limit = v.non_negative(); });
+  m.optional("rest_speed", [&](const JsonNode& v) { o.rest_speed = v.positive(); });
+  m.optional("contact_margin", [&](const JsonNode& v) { o.contact_margin = v.positive(); });
+  m.optional("sleep_time", [&](const JsonNode& v) { o.sleep_time = v.non_negative(); });
+  m.optional("rolling_regime", [&](const JsonNode& v) { o.rolling_regime = v.boolean(); });
+  m.optional("sliding_regime", [&](const JsonNode& v) { o.sliding_regime = v.boolean(); });
+  m.optional("swing_regime", [&](const JsonNode& v) { o.swing_regime = v.boolean(); });
+  m.optional("islands", [&](const JsonNode& v) { o.islands = v.boolean(); });
+  m.finish();
+}
+
+// Rods name their ball by id; the length defaults to the distance from the anchor.
+void read_rods(const JsonNode& v, Scene& s) {
+  std::map<std::string, int> index;
+  for (size_t i = 0; i < s.balls.size(); ++i) index[s.balls[i].spec.id] = static_cast<int>(i);
+  for (const JsonNode& r : v.items()) {
+    const std::string id = r["ball"].string();
+    if (!index.count(id)) r["ball"].fail("no ball with id '" + id + "'");
+    Rod rod{index[id], r["anchor"].vec3(), 0.0};
+    rod.length = glm::length(s.balls[rod.ball].position - rod.anchor);
+    r.optional("length", [&](const JsonNode& l) { rod.length = l.positive(); });
+    if (!(rod.length > 0)) r["anchor"].fail("is at the ball's centre: a rod needs a length (give \"length\")");
+    r.finish();
+    s.model.rods.push_back(rod);
+  }
+}
+
+}  // namespace
+
 Scene parse_scene(const json& doc, const std::string& source) {
   const JsonNode n(doc, source, "");
   if (!doc.is_object()) n.fail("a scene file must hold a JSON object");
@@ -314,18 +347,7 @@ Scene parse_scene(const json& doc, const std::string& source) {
   });
   n.optional("allow_overlap", [&](const JsonNode& v) { s.allow_overlap = v.boolean(); });
   n.optional("gravity", [&](const JsonNode& v) { s.model.options.gravity = v.vec3(); });
-  n.optional("model", [&](const JsonNode& m) {
-    m.optional("friction_sharpness", [&](const JsonNode& v) { s.model.options.friction_sharpness = v.positive(); });
-    m.optional("friction_rate_limit", [&](const JsonNode& v) { s.model.options.friction_rate_limit = v.non_negative(); });
-    m.optional("rest_speed", [&](const JsonNode& v) { s.model.options.rest_speed = v.positive(); });
-    m.optional("contact_margin", [&](const JsonNode& v) { s.model.options.contact_margin = v.positive(); });
-    m.optional("sleep_time", [&](const JsonNode& v) { s.model.options.sleep_time = v.non_negative(); });
-    m.optional("rolling_regime", [&](const JsonNode& v) { s.model.options.rolling_regime = v.boolean(); });
-    m.optional("sliding_regime", [&](const JsonNode& v) { s.model.options.sliding_regime = v.boolean(); });
-    m.optional("swing_regime", [&](const JsonNode& v) { s.model.options.swing_regime = v.boolean(); });
-    m.optional("islands", [&](const JsonNode& v) { s.model.options.islands = v.boolean(); });
-    m.finish();
-  });
+  n.optional("model", [&](const JsonNode& m) { read_options(m, s.model.options); });
   n.optional("integrator", [&](const JsonNode& v) { read_integrator(v, s.model.integrator); });
   n.optional("materials", [&](const JsonNode& m) {
     for (const auto& item : m.raw().items()) {
@@ -351,20 +373,7 @@ Scene parse_scene(const json& doc, const std::string& source) {
     for (const JsonNode& b : v.items()) s.balls.push_back(read_ball(b, *kind));
   });
   n.optional("rack", [&](const JsonNode& v) { read_rack(v, *kind, s); });
-  std::map<std::string, int> index;
-  for (size_t i = 0; i < s.balls.size(); ++i) index[s.balls[i].spec.id] = static_cast<int>(i);
-  n.optional("rods", [&](const JsonNode& v) {
-    for (const JsonNode& r : v.items()) {
-      const std::string id = r["ball"].string();
-      if (!index.count(id)) r["ball"].fail("no ball with id '" + id + "'");
-      Rod rod{index[id], r["anchor"].vec3(), 0.0};
-      rod.length = glm::length(s.balls[rod.ball].position - rod.anchor);
-      r.optional("length", [&](const JsonNode& l) { rod.length = l.positive(); });
-      if (!(rod.length > 0)) r["anchor"].fail("is at the ball's centre: a rod needs a length (give \"length\")");
-      r.finish();
-      s.model.rods.push_back(rod);
-    }
-  });
+  n.optional("rods", [&](const JsonNode& v) { read_rods(v, s); });
   n.optional("cue", [&](const JsonNode& v) {
     s.cue.emplace();
     read_cue(v, *s.cue);
