@@ -1,6 +1,6 @@
 #include "dynamics.hpp"
 
-#include "regimes.hpp"
+#include "band_tail.hpp"
 
 namespace shotlab {
 
@@ -90,6 +90,59 @@ void Dynamics::apply_rods(const StateVector& x, StateVector& dxdt) const {
     const Vec3 a_free = velocity(dxdt, rod.ball);  // the v-slot of dxdt holds the acceleration
     const double lambda = -vperp2 / len - glm::dot(a_free, dh) - 2.0 * beta * vr - beta * beta * (len - rod.length);
     set_velocity(dxdt, rod.ball, a_free + lambda * dh);
+  }
+}
+
+// Sliding on a flat bed with normal n, settled at the static sink: the normal force is the weight m g and stays so
+// (nothing changes the depth), so the contact law's tangential terms act at N = m g and the normal components of
+// the motion stay zero:
+//   dp/dt = v,  dv/dt = F_t / m,  dw/dt = T / I    (F_t, T: friction, rolling resistance and spin friction of the
+//                                                   bed at N = m g, contact_force.hpp, exactly as in the full model)
+void sliding_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+                        double* dxdt) {
+  const int bed = state.sliding_on[i];
+  const Vec3& n = cache.plane_normal[bed];
+  const BallSpec& b = model.balls[i];
+  const Vec3 v = velocity(x, i), w = spin(x, i);
+  ContactForce f;
+  f.normal = b.mass * cache.gravity;
+  // The depth is the static sink; the friction terms do not read it.
+  add_friction(*cache.collider_material[bed], collider_kinematics(cache, i, b.radius, v, w, n, 0.0),
+               {model.options.friction_sharpness, model.options.friction_rate_limit}, f);
+  Vec3 a = f.force / b.mass;
+  a -= glm::dot(a, n) * n;  // round-off of the projections in add_friction
+  const Vec3 alpha = contact_torque(f, n, b.radius) / b.inertia();
+  for (int c = 0; c < 3; ++c) {
+    dxdt[c] = v[c];
+    dxdt[3 + c] = a[c];
+    dxdt[6 + c] = alpha[c];
+  }
+}
+
+// Rolling on a flat bed with normal n under gravity g (magnitude), static normal force m g:
+//   dp/dt = v (tangential; the height stays at the sink depth)
+//   dv/dt = a = -mu_r g fricstep(k |v|) v^                                  (MODEL.md eq. 3.6)
+//   dw/dt = (1/R) n x a  +  n (-(5 mu_sp g / (2 R)) fricstep(k R w.n))      (eq. 3.7; spin torque mu_sp R m g over
+//                                                                            I = 2/5 m R^2, eq. 3.8)
+// The slip v + R n x w stays exactly zero: d/dt of it is a + R n x ((1/R) n x a) = a - a = 0 for a along the bed.
+void rolling_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+                        double* dxdt) {
+  const ContactMaterial& m = *cache.collider_material[state.rolling_on[i]];
+  const Vec3& n = cache.plane_normal[state.rolling_on[i]];
+  const double g = cache.gravity, r = model.balls[i].radius, weight = model.balls[i].mass * g;
+  const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
+  // The sharpness each term would get in contact_force (the static normal force is m g).
+  const double k_roll = sharpness_for(smooth, m.rolling_resistance * weight, cache.inv_mass[i]);
+  const double k_spin = sharpness_for(smooth, m.spin_friction * weight, cache.inv_inertia_r2[i]);
+  const Vec3 v = velocity(x, i), w = spin(x, i);
+  const double speed = glm::length(v);
+  const Vec3 a = speed > 0 ? -(m.rolling_resistance * g * fricstep(k_roll * speed) / speed) * v : Vec3{0.0};
+  const double wn = glm::dot(w, n);
+  const Vec3 alpha = glm::cross(n, a) / r - (2.5 * m.spin_friction * g / r * fricstep(k_spin * r * wn)) * n;
+  for (int c = 0; c < 3; ++c) {
+    dxdt[c] = v[c];
+    dxdt[3 + c] = a[c];
+    dxdt[6 + c] = alpha[c];
   }
 }
 

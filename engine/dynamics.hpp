@@ -59,4 +59,11 @@ class Dynamics {
   std::vector<ContactRecord> recorded_;
 };
 
+// Right-hand sides of a ball in the rolling and the sliding regime (regimes.hpp), written into dxdt. `cache`
+// supplies the bed's material without a lookup by name (this runs in every right-hand side).
+void rolling_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+                        double* dxdt);
+void sliding_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+                        double* dxdt);
+
 }  // namespace shotlab

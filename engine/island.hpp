@@ -15,6 +15,7 @@
 
 #include "dynamics.hpp"
 #include "events.hpp"
+#include "free_path.hpp"
 #include "hermite.hpp"
 #include "step_view.hpp"
 #include "model.hpp"

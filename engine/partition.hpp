@@ -8,7 +8,7 @@
 // islands, a gap d apart, cannot touch before d / (V_i + V_j); a sleeping ball does not move (V = 0).
 //
 // A lone ball in the rolling or sliding regime, or a sleeper, follows a known path until something touches it
-// (regimes.hpp, FreePath): two of them may meet much later than their speed bounds say (balls rolling side by side or
+// (free_path.hpp): two of them may meet much later than their speed bounds say (balls rolling side by side or
 // apart, a ball rolling past a sleeper), and the later of the two bounds holds.
 //
 // Balls are grouped when they could touch within kLinkTime; the groups' energies then raise their members' bounds,
@@ -23,7 +23,7 @@
 
 #include "contacts.hpp"
 #include "model.hpp"
-#include "regimes.hpp"
+#include "free_path.hpp"
 #include "state.hpp"
 
 namespace shotlab {

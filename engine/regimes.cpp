@@ -5,16 +5,18 @@
 #include <optional>
 #include <utility>
 
+#include "dynamics.hpp"
 #include "events.hpp"
 
 namespace shotlab {
-namespace {
-// The slip under which a ball enters the rolling regime (numerics.hpp). A ball in the sliding regime gets there
-// without stiff steps: its slip tail is followed in closed form (band_tail.hpp) down to kDeadTail, leaving nothing to
-// snap.
-double entry_slip(const Model& model) {  // m/s
+
+// A ball in the sliding regime gets to the entry slip without stiff steps: its slip tail is followed in closed form
+// (band_tail.hpp) down to kDeadTail, leaving nothing to snap.
+double entry_slip(const Model& model) {
   return std::min(kEntrySlip * model.options.rest_speed, kEntrySlipPerTolerance * model.integrator.abs_tol);
 }
+
+namespace {
 
 // m: how deep ball b sinks into a bed of material m under its own weight (C d^e = m g).
 double static_sink(const BallSpec& b, const ContactMaterial& m, double g) {
@@ -79,87 +81,6 @@ Regimes::Regimes(const Model& model) : model_(model), cache_(model) {
   const double g = glm::length(model.options.gravity);
   for (const BallSpec& b : model.balls)
     for (int c : cache_.plane_like) sink_.push_back(static_sink(b, *cache_.collider_material[c], g));
-}
-
-// Sliding on a flat bed with normal n, settled at the static sink: the normal force is the weight m g and stays so
-// (nothing changes the depth), so the contact law's tangential terms act at N = m g and the normal components of
-// the motion stay zero:
-//   dp/dt = v,  dv/dt = F_t / m,  dw/dt = T / I    (F_t, T: friction, rolling resistance and spin friction of the
-//                                                   bed at N = m g, contact_force.hpp, exactly as in the full model)
-void sliding_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
-                        double* dxdt) {
-  const int bed = state.sliding_on[i];
-  const Vec3& n = cache.plane_normal[bed];
-  const BallSpec& b = model.balls[i];
-  const Vec3 v = velocity(x, i), w = spin(x, i);
-  ContactForce f;
-  f.normal = b.mass * cache.gravity;
-  // The depth is the static sink; the friction terms do not read it.
-  add_friction(*cache.collider_material[bed], collider_kinematics(cache, i, b.radius, v, w, n, 0.0),
-               {model.options.friction_sharpness, model.options.friction_rate_limit}, f);
-  Vec3 a = f.force / b.mass;
-  a -= glm::dot(a, n) * n;  // round-off of the projections in add_friction
-  const Vec3 alpha = contact_torque(f, n, b.radius) / b.inertia();
-  for (int c = 0; c < 3; ++c) {
-    dxdt[c] = v[c];
-    dxdt[3 + c] = a[c];
-    dxdt[6 + c] = alpha[c];
-  }
-}
-
-// Rolling on a flat bed with normal n under gravity g (magnitude), static normal force m g:
-//   dp/dt = v (tangential; the height stays at the sink depth)
-//   dv/dt = a = -mu_r g fricstep(k |v|) v^                                  (MODEL.md eq. 3.6)
-//   dw/dt = (1/R) n x a  +  n (-(5 mu_sp g / (2 R)) fricstep(k R w.n))      (eq. 3.7; spin torque mu_sp R m g over
-//                                                                            I = 2/5 m R^2, eq. 3.8)
-// The slip v + R n x w stays exactly zero: d/dt of it is a + R n x ((1/R) n x a) = a - a = 0 for a along the bed.
-void rolling_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
-                        double* dxdt) {
-  const ContactMaterial& m = *cache.collider_material[state.rolling_on[i]];
-  const Vec3& n = cache.plane_normal[state.rolling_on[i]];
-  const double g = cache.gravity, r = model.balls[i].radius, weight = model.balls[i].mass * g;
-  const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
-  // The sharpness each term would get in contact_force (the static normal force is m g).
-  const double k_roll = sharpness_for(smooth, m.rolling_resistance * weight, cache.inv_mass[i]);
-  const double k_spin = sharpness_for(smooth, m.spin_friction * weight, cache.inv_inertia_r2[i]);
-  const Vec3 v = velocity(x, i), w = spin(x, i);
-  const double speed = glm::length(v);
-  const Vec3 a = speed > 0 ? -(m.rolling_resistance * g * fricstep(k_roll * speed) / speed) * v : Vec3{0.0};
-  const double wn = glm::dot(w, n);
-  const Vec3 alpha = glm::cross(n, a) / r - (2.5 * m.spin_friction * g / r * fricstep(k_spin * r * wn)) * n;
-  for (int c = 0; c < 3; ++c) {
-    dxdt[c] = v[c];
-    dxdt[3 + c] = a[c];
-    dxdt[6 + c] = alpha[c];
-  }
-}
-
-std::optional<FreePath> free_path(const Model& model, const State& state, const double* x, int i,
-                                  const ContactCache& cache, double horizon) {
-  if (!state.in_play[i]) return std::nullopt;
-  if (state.sleeping(i)) return FreePath{position(x, i), Vec3{0.0}, 0.0, 0.0, 0.0, std::numeric_limits<double>::infinity()};
-  if (!state.rolling(i) && !state.sliding(i)) return std::nullopt;
-  // The velocity jumps a path may take, summed: the rolling entry removes a slip under entry_slip, 2/7 of it
-  // from the velocity (update_rolling); the stop cut (settle_rolling); falling asleep zeroes a velocity under
-  // rest_speed (update_sleep).
-  const double rest = model.options.rest_speed;
-  const double jump = 2.0 / 7.0 * entry_slip(model) + kStopSpeed + (model.options.sleep_time > 0 ? rest : 0.0);
-  // Up to free_for the ball may come contact_margin into a collider (collider_contact_time), which pushes it back by
-  // at most that much.
-  return FreePath{position(x, i), velocity(x, i), free_acceleration(state, cache, i), jump,
-                  model.options.contact_margin, std::min(horizon, collider_contact_time(model, state, x, i, horizon, cache))};
-}
-
-double path_meeting_time(const FreePath& a, const FreePath& b, double reach, double closing) {
-  const double h = std::min(a.free_for, b.free_for), acc = a.accel + b.accel;
-  const Vec3 d0 = a.p - b.p, v = a.v - b.v;
-  if (!std::isfinite(h)) return straight_line_contact_time(d0, v, reach);  // two sleepers
-  // Until h the velocity jumps move the balls by at most (jumps) h more, the colliders by their slack: a wider reach.
-  const double wide = reach + (a.jump + b.jump) * h + a.slack + b.slack;
-  const double t = pair_contact_time(d0, v, wide, acc, h);
-  if (t < h) return std::max(t, 0.0);
-  const double gap = glm::length(d0 + h * v) - wide - 0.5 * acc * h * h;  // apart until h, at least this far then
-  return closing > 0 ? h + std::max(gap, 0.0) / closing : std::numeric_limits<double>::infinity();
 }
 
 namespace {

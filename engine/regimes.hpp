@@ -84,29 +84,8 @@ class Regimes {
   std::vector<Support> bed_;  // each ball's, worked out once an update
 };
 
-// Where a ball can be while it touches nothing but its bed: within accel t^2 / 2 + jump t + slack of p + v t for the
-// first `free_for` seconds. That holds for a lone ball in the rolling or sliding regime: it leaves its regime only
-// when something comes within contact_margin (or its bed ends at a pocket), its acceleration until then stays under
-// free_acceleration (contacts.hpp), its velocity jumps only at the rolling entry's snap, the stop cut and falling
-// asleep, by at most `jump` in all, and a collider may push it back by `slack` before free_for. A sleeper does not
-// move at all until something touches it.
-struct FreePath {
-  Vec3 p, v;        // m, m/s
-  double accel;     // m/s^2
-  double jump;      // m/s
-  double slack;     // m
-  double free_for;  // s; +inf for a sleeper
-};
-
-// The free path of ball i at (state, x), if it is asleep or in the rolling or sliding regime (the caller makes sure
-// that nothing else in its island can touch it), looked at for `horizon` seconds at most: free_for <= horizon.
-std::optional<FreePath> free_path(const Model& model, const State& state, const double* x, int i,
-                                  const ContactCache& cache, double horizon);
-
-// s: a lower bound on when two balls on free paths come within `reach` (m) of each other, given that neither can
-// close in faster than `closing` (m/s, the sum of their speed bounds) once its path ends: the paths are followed to
-// the earlier of their ends, and from there on the gap closes at most at `closing`.
-double path_meeting_time(const FreePath& a, const FreePath& b, double reach, double closing);
+// m/s: the slip under which a ball enters the rolling regime (kEntrySlip, numerics.hpp).
+double entry_slip(const Model& model);
 
 // s: the earliest time at which a ball in the rolling or sliding regime reaches the edge of a friction term's smoothing
 // band (fricstep's clamp at k s = 1: a kink in the right-hand side); +inf when none does. Outside the bands the
@@ -124,12 +103,5 @@ double path_meeting_time(const FreePath& a, const FreePath& b, double reach, dou
 double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
                          bool* constant = nullptr, std::vector<BandTail>* tails = nullptr,
                          std::vector<Swing>* swings = nullptr, const std::vector<Swing>* continuing = nullptr);
-
-// Right-hand sides of a ball in the rolling and the sliding regime (the dynamics above), written into dxdt. `cache`
-// supplies the bed's material without a lookup by name (this runs in every right-hand side).
-void rolling_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
-                        double* dxdt);
-void sliding_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
-                        double* dxdt);
 
 }  // namespace shotlab
