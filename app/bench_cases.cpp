@@ -92,7 +92,7 @@ void use_plain_path(Options& options) {
 
 std::vector<MethodSetting> sweep(bool coarse) {
   std::vector<MethodSetting> out;
-  // Fixed steps from 1e-4 s (about the explicit stability limit of the cloth friction, MODEL.md) to 1e-6 s (coarse)
+  // Fixed steps from 1e-4 s (about the explicit stability limit of the cloth friction, docs/model.md#fricstep) to 1e-6 s (coarse)
   // or 1e-7 s.
   for (Method m : {Method::Euler, Method::RK4})
     for (double h : half_decades(-4, coarse ? -6 : -7, coarse)) out.push_back({m, h});

@@ -1,4 +1,4 @@
-// Static colliders (MODEL.md section 4.4). Each answers one question about a ball of radius R at centre p:
+// Static colliders (docs/model.md#shapes). Each answers one question about a ball of radius R at centre p:
 // how deep is it in (penetration depth, > 0 when touching) and along which unit normal is it pushed out.
 #pragma once
 #include <limits>

@@ -1,4 +1,4 @@
-// The contact force law (MODEL.md ch. 4): Hertz normal force with damping, Coulomb friction at the contact point,
+// The contact force law (docs/model.md#normal-force, #friction): Hertz normal force with damping, Coulomb friction at the contact point,
 // rolling resistance and spin friction. Used for every contact: ball-ball, ball-cloth, ball-cushion, any collider.
 #pragma once
 #include <cstdint>
@@ -89,10 +89,10 @@ struct Smoothing {
 
 // The sharpness (s/m) a friction term of the given strength (N) uses on a motion of the given mobility (1/kg).
 // Inside its band (slip below 1/k) a friction term of strength F = mu N acts on the slip s it opposes like a linear
-// damper: F fricstep(k s) ~ 1.5 k mu N s, which relaxes s at the rate lambda = 1.5 k mu N * mobility (1/s; MODEL.md
-// "Numerical facts"). On the cloth (N = m g) that is about 1e4 1/s, but a hard impact presses a ball into a cushion
-// or another ball with thousands of newtons, and lambda reaches 1e7 1/s: an explicit method then needs steps of
-// 0.1 us for the whole contact, only to keep a stuck contact stuck. Above the rate limit the band widens instead
+// damper: F fricstep(k s) ~ 1.5 k mu N s, which relaxes s at the rate lambda = 1.5 k mu N * mobility (1/s,
+// docs/model.md#rate-limit). On the cloth (N = m g) that is about 1e4 1/s, but a hard impact presses a ball into a
+// cushion or another ball with thousands of newtons, and lambda reaches 1e7 1/s: an explicit method then needs steps
+// of 0.1 us for the whole contact, only to keep a stuck contact stuck. Above the rate limit the band widens instead
 // (k drops to limit / (1.5 mu N mobility)): the contact still sticks within 1/limit seconds, a few microseconds,
 // short against the contact's 0.2-1 ms, and the step stays set by the contact itself.
 double sharpness_for(const Smoothing& s, double strength, double mobility);
@@ -119,7 +119,7 @@ void add_friction(const ContactMaterial& mat, const Kinematics<Normal>& k, const
 
 // The torque a contact force puts on a ball of radius r whose outward contact normal (centre to contact point) is
 // -normal:  friction acts at r_c = -r n; rolling resistance comes with the torque (2/5) r n x F_roll, which keeps
-// the slip unchanged (MODEL.md eq. 3.7: alpha = (1/r) n x a and I = 2/5 m r^2); spin friction about n.
+// the slip unchanged (docs/model.md#rolling-resistance: alpha = (1/r) n x a and I = 2/5 m r^2); spin friction about n.
 // tangential_torque is the first two alone.
 inline Vec3 tangential_torque(const ContactForce& f, const Vec3& n, double r) {
   return glm::cross(-r * n, f.friction) + 0.4 * r * glm::cross(n, f.rolling);

@@ -52,7 +52,7 @@ template <class Normal>
 template <class Normal>
 [[gnu::always_inline]] inline void add_friction(const ContactMaterial& mat, const Kinematics<Normal>& k,
                                                 const Smoothing& smoothing, ContactForce& out) {
-  // Coulomb friction against the tangential slip, its sign smoothed by fricstep (MODEL.md appendix B).
+  // Coulomb friction against the tangential slip, its sign smoothed by fricstep (docs/model.md#fricstep).
   const Vec3 u = tangential_part(k.slip, k.normal);
   const double u_len = glm::length(u);
   // slide: 0 at no slip, 1 once slip > 1/k

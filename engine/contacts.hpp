@@ -201,8 +201,8 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
 
 // A lower bound on the time before any still-separated pair (ball-ball or ball-collider) could touch, given current
 // velocities and an acceleration bound; +inf when nothing can within `horizon` (the step the integrator wants).
-// Adaptive steps are capped by it so that no contact, however glancing, falls between two steps (MODEL.md,
-// "Numerical facts"). Ball pairs use their relative speed, so a cluster moving together is not held back. With
+// Adaptive steps are capped by it so that no contact, however glancing, falls between two steps
+// (docs/model.md#step-cap). Ball pairs use their relative speed, so a cluster moving together is not held back. With
 // `step`, also sorts the contacts it looks at into step->separated (every contact that could begin within the
 // horizon, none that cannot: the list is searched on every right-hand side) and step->pushing.
 double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon,

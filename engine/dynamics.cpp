@@ -121,7 +121,7 @@ void sliding_derivative(const Model& model, const State& state, const ContactCac
 
 // Rolling on a flat bed with normal n under gravity g (magnitude), static normal force m g:
 //   dp/dt = v (tangential; the height stays at the sink depth)
-//   dv/dt = a = -mu_r g fricstep(k |v|) v^                                  (MODEL.md eq. 3.6)
+//   dv/dt = a = -mu_r g fricstep(k |v|) v^                                  (docs/model.md#rolling-regime)
 //   dw/dt = (1/R) n x a  +  n (-(5 mu_sp g / (2 R)) fricstep(k R w.n))      (eq. 3.7; spin torque mu_sp R m g over
 //                                                                            I = 2/5 m R^2, eq. 3.8)
 // The slip v + R n x w stays exactly zero: d/dt of it is a + R n x ((1/R) n x a) = a - a = 0 for a along the bed.

@@ -1,4 +1,4 @@
-// THE right-hand side of the ODE (MODEL.md eq. 3.1-3.2): given the state, the time derivative of every ball's
+// THE right-hand side of the ODE (docs/model.md#motion): given the state, the time derivative of every ball's
 // position, velocity and angular velocity. Force sources, each in one place:
 //   gravity ............ here (accumulate_gravity)
 //   contacts ........... contact_force_impl.hpp (one law for ball-ball, cloth, cushions, any collider),

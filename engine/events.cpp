@@ -62,7 +62,7 @@ Motion classify(const Model& model, const ContactCache& cache, const State& stat
   if (best_up == -2) return Motion::Airborne;
   const double eps = model.options.rest_speed;
   const Vec3 vt = v - glm::dot(v, n) * n;
-  const Vec3 u = vt + r * glm::cross(n, w);  // slip at the support (MODEL.md eq. 3.4), tangential part
+  const Vec3 u = vt + r * glm::cross(n, w);  // slip at the support (docs/model.md#slip), tangential part
   const bool no_slip = glm::length(u - glm::dot(u, n) * n) < eps;
   if (glm::length(vt) < eps && no_slip) return r * std::abs(glm::dot(w, n)) < eps ? Motion::Stationary : Motion::Spinning;
   return no_slip ? Motion::Rolling : Motion::Sliding;

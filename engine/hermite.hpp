@@ -1,5 +1,5 @@
 // Dense output for every method: the cubic Hermite interpolant of one accepted step, built from the states and
-// derivatives at both ends. Between contacts the ball paths on the cloth are polynomials of degree <= 2 (MODEL.md:
+// derivatives at both ends. Between contacts the ball paths on the cloth are polynomials of degree <= 2 (docs/model.md#dense-output:
 // parabolic sliding, linear deceleration, linear spin decay), which a cubic reproduces exactly; inside contacts the
 // steps are short. Error O(h^4) in general. The exceptions are a closed-form step's band tails (band_tail.hpp) and
 // swings (swing.hpp): what they govern follows their own closed form.

@@ -1,5 +1,5 @@
 // An island: a group of balls integrated together as one ODE system, on its own clock and with its own step size
-// (MODEL.md 5.2.4's stepping loop). The simulation (simulation.hpp) splits a scene into islands, each of which
+// (docs/model.md#islands). The simulation (simulation.hpp) splits a scene into islands, each of which
 // cannot touch anything outside it before its deadline (partition.hpp), so a collision on one side of the table does
 // not force small steps on the other, and a ball that sleeps is in no island and costs nothing.
 //

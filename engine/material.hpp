@@ -5,8 +5,8 @@
 
 namespace shotlab {
 
-// How the normal force loses energy (MODEL.md ch. 4):
-//  - Linear (thesis):  F = C_s d^m - C_d d'        restitution FALLS as impact speed falls (unlike real balls)
+// How the normal force loses energy (docs/model.md#damping):
+//  - Linear (thesis):  F = C_s d^m + C_d d'        restitution FALLS as impact speed falls (unlike real balls)
 //  - HuntCrossley:     F = C_s d^m (1 + C_d d')   restitution falls as impact speed RISES (like real balls);
 //                      C_d is then in s/m.
 // In both, d' is the rate of penetration (> 0 while approaching) and F is clamped at F >= 0: the damping term would
@@ -20,12 +20,12 @@ struct ContactMaterial {
   DampingLaw damping_law = DampingLaw::Linear;
   double friction = 0;            // Coulomb sliding friction coefficient at the contact point (dimensionless)
   double rolling_resistance = 0;  // mu_r: resistance force mu_r |F_n| against rolling (dimensionless; on a flat
-                                  // table the deceleration is mu_r g, MODEL.md eq. 3.6)
+                                  // table the deceleration is mu_r g, docs/model.md#rolling-resistance)
   double spin_friction = 0;       // mu_sp: torque mu_sp R |F_n| against spin about the contact normal (dimensionless;
                                   // angular deceleration 5 mu_sp g / (2 R) for a ball resting on the table)
 };
 
-// Defaults from measured values (MODEL.md, "Standard parameters"; docs/scene-format.md explains each number).
+// Defaults from measured values (docs/model.md#parameters; docs/scene-format.md explains each number).
 ContactMaterial default_ball_ball();
 ContactMaterial default_ball_cloth();
 ContactMaterial default_ball_cushion();

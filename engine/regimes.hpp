@@ -7,8 +7,8 @@
 //    contact mode (about 1500 rad/s, damped at 0.5) would otherwise hold an explicit method to steps of 1-3 ms for
 //    the whole slide, and keeps the bed's friction, rolling resistance and spin friction at normal force m g;
 //  - rolling: the ball rolls on the bed and touches nothing else. Its slip is exactly zero and stays so, so
-//    instead of the stiff smoothed friction (a damper of rate 1.5 k mu g, about 1e4 1/s, MODEL.md "Numerical
-//    facts") the right-hand side uses the closed-form rolling dynamics: constant deceleration mu_r g along the
+//    instead of the stiff smoothed friction (a damper of rate 1.5 k mu g, about 1e4 1/s, docs/model.md#fricstep)
+//    the right-hand side uses the closed-form rolling dynamics: constant deceleration mu_r g along the
 //    motion with the matching spin, linear decay of the vertical spin, height fixed at the static sink depth.
 //    Explicit steps are then limited by accuracy and by the time to the next possible contact, not by stability;
 //  - asleep (Box2D's islands, reduced to what billiards needs): a group of touching balls that has rested (stationary

@@ -13,7 +13,7 @@
 
 namespace shotlab {
 
-// Standard balls (MODEL.md, "Standard parameters").
+// Standard balls (docs/model.md#parameters).
 struct BallKind {
   const char* name;
   double mass;    // kg

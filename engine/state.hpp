@@ -8,7 +8,7 @@
 
 namespace shotlab {
 
-// ODE state layout (MODEL.md eq. 2.3): 9 numbers a ball, [p (m), v (m/s), w (rad/s)], balls in model order.
+// ODE state layout (docs/model.md#state): 9 numbers a ball, [p (m), v (m/s), w (rad/s)], balls in model order.
 inline constexpr int kBallDofs = 9;
 inline constexpr int kSpinDof = 6;  // where a ball's spin starts among its 9 numbers
 using StateVector = std::vector<double>;

@@ -26,7 +26,7 @@ class Stepper {
 // step passes when the largest |err_i| / (atol_i + rel_tol (|x_i| + dt |dxdt_i|)) over the components is at most 1,
 // as in odeint's default checker, but with atol_i in the unit of its component. The tolerance is a length for the
 // positions and a speed for the velocities, and a spin w is held to it as the speed R |w| at which it moves the
-// ball's surface, what it adds to the slip at a contact (MODEL.md eq. 3.4): abs_tol / R rad/s. odeint's one scalar for
+// ball's surface, what it adds to the slip at a contact (docs/model.md#slip): abs_tol / R rad/s. odeint's one scalar for
 // every component held a pool ball's spin 1/R = 35 times tighter than its velocity, and the spins then set the steps
 // wherever friction acts (it moves 5/(2R) rad/s of spin for every m/s it takes from the centre): the break took 14 %
 // more steps for it.

@@ -12,7 +12,7 @@ struct TableSpec {
   TableKind kind = TableKind::Pool;
   double length = 2.54;          // m, between cushion noses (9 ft pool)
   double width = 1.27;           // m
-  double nose_height = 0.0365;   // m above the bed: 63.5 % of a 57.15 mm ball (WPA: 62.5-64.5 %)
+  double nose_height = 0.0365;   // m above the bed: 63.9 % of a 57.15 mm ball (WPA: 62.5-64.5 %)
   double cushion_radius = 0.01;  // m, radius of the capsule that models the rubber nose
   double corner_mouth = 0.116;   // m, pool only: opening between the cushion ends of a corner pocket
   double side_mouth = 0.13;      // m, pool only: opening of a side pocket
