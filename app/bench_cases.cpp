@@ -82,14 +82,6 @@ std::string line_name(const MethodSetting& s) {
   return std::string(method_name(s.method)) + (s.plain ? " plain" : "");
 }
 
-void use_plain_path(Options& options) {
-  options.rolling_regime = false;
-  options.sliding_regime = false;
-  options.swing_regime = false;
-  options.sleep_time = 0;
-  options.islands = false;
-}
-
 std::vector<MethodSetting> sweep(bool coarse) {
   std::vector<MethodSetting> out;
   // Fixed steps from 1e-4 s (about the explicit stability limit of the cloth friction, docs/model.md#fricstep) to 1e-6 s (coarse)

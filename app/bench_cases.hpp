@@ -25,9 +25,8 @@ struct BenchCase {
 std::vector<BenchCase> bench_cases();
 
 // One integrator configuration: an adaptive method at a tolerance (abs_tol = rel_tol = tol), or a fixed-step
-// method at a step, on the engine's default fast path (rolling regime and sleeping, regimes.hpp) or on the plain
-// all-ODE path (model.rolling_regime = false, model.sliding_regime = false, model.swing_regime = false,
-// model.sleep_time = 0, model.islands = false), which the references use.
+// method at a step, on the engine's default fast path or on the plain all-ODE path (SolverPath, model.hpp), which the
+// references use.
 struct MethodSetting {
   Method method;
   double value;        // tolerance (adaptive) or step in s (fixed)
@@ -36,8 +35,6 @@ struct MethodSetting {
 IntegratorOptions integrator_options(const MethodSetting& setting);
 // The setting's line in plots and tables: "cash_karp54", or "cash_karp54 plain".
 std::string line_name(const MethodSetting& setting);
-// Runs the scene on the plain all-ODE path: every ball integrated with the full model, none asleep.
-void use_plain_path(Options& options);
 
 // The sweep: Euler and RK4 over fixed steps, each adaptive method over tolerances, loosest first (the runner stops
 // a method once it gets too slow, and tighter settings are only slower). `coarse` takes whole decades only and

@@ -45,7 +45,7 @@ void count_contact_steps(const Model& model, const std::vector<Event>& events,
 RunResult run_case(const std::string& data_root, const BenchCase& c, const MethodSetting& setting, bool reference) {
   Scene scene = load_scene(data_root + "/" + c.file, c.overrides);
   scene.model.integrator = integrator_options(setting);
-  if (setting.plain) use_plain_path(scene.model.options);
+  if (setting.plain) use_path(scene.model.options, SolverPath::Plain);
   Prepared p = prepare(scene);
   RunResult r;
   for (const BallSpec& b : p.model.balls) r.radius.push_back(b.radius);

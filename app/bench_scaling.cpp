@@ -46,7 +46,7 @@ FieldRun time_field(int resting, bool plain, int repeats) {
   std::vector<double> walls;
   for (int k = 0; k < repeats; ++k) {
     Scene scene = resting_field(resting);
-    if (plain) use_plain_path(scene.model.options);
+    if (plain) use_path(scene.model.options, SolverPath::Plain);
     Prepared p = prepare(scene);
     Simulation sim(std::move(p.model), std::move(p.state));
     while (sim.time() < scene.duration && sim.status() == Status::Ok && !sim.at_rest()) sim.advance(1.0 / 60);

@@ -52,4 +52,10 @@ Model empty_model() {
   return m;
 }
 
+void use_path(Options& options, SolverPath path) {
+  const bool fast = path == SolverPath::Fast;
+  options.rolling_regime = options.sliding_regime = options.swing_regime = options.islands = fast;
+  options.sleep_time = fast ? kDefaultSleepTime : 0.0;
+}
+
 }  // namespace shotlab

@@ -49,6 +49,8 @@ struct IntegratorOptions {
   int max_steps_per_call = 20000; // steps one advance() call may take before it stops and reports
 };
 
+inline constexpr double kDefaultSleepTime = 0.2;  // s
+
 struct Options {
   Vec3 gravity{0.0, -9.81, 0.0};  // m/s^2
   double friction_sharpness = 1000.0;  // k of fricstep(k s), s/m: friction reaches full strength at 1/k m/s of slip
@@ -56,17 +58,19 @@ struct Options {
                                        // load the band widens instead (contact_force.hpp). 0: no limit
   double rest_speed = 1e-3;            // m/s: below this a ball (and R|w|) counts as stopped / rolling without slip
   double contact_margin = 1e-6;        // m: a step may bring a still separated pair this far into contact
-  double sleep_time = 0.2;             // s a group of touching balls must rest before it sleeps; 0: never
-  bool rolling_regime = true;          // closed-form rolling for a ball alone on the bed (regimes.hpp); false, with
-                                       // sliding_regime and swing_regime false, sleep_time 0 and islands false, gives
-                                       // the plain all-ODE path, kept as the reference
-  bool sliding_regime = true;          // a ball alone on the bed, settled onto it, slides at its static sink
-                                       // (regimes.hpp) instead of integrating its stiff vertical contact mode
-  bool swing_regime = true;            // a ball alone on its rod swings in the plane pendulum's closed form (swing.hpp)
-                                       // instead of being integrated
-  bool islands = true;                 // balls that cannot touch for a while integrate apart (partition.hpp); false:
-                                       // every ball in one ODE system
+  // The solver switches: SolverPath sets them all (use_path); a scene may then override each.
+  double sleep_time = kDefaultSleepTime;  // s a group of touching balls must rest before it sleeps; 0: never
+  bool rolling_regime = true;  // a ball alone on the bed rolls in closed form (regimes.hpp)
+  bool sliding_regime = true;  // a ball alone on the bed, settled onto it, slides at its static sink (regimes.hpp)
+  bool swing_regime = true;    // a ball alone on its rod swings in the pendulum's closed form (swing.hpp)
+  bool islands = true;         // balls that cannot touch for a while integrate apart (partition.hpp)
 };
+
+// How much of a scene the engine moves in closed form, puts to sleep or integrates apart (docs/model.md#regimes).
+// Fast: all of it, the default. Plain: every ball in one ODE system with the full model, none asleep: the thesis's
+// path, the reference the bench and the tests measure the fast one against.
+enum class SolverPath { Fast, Plain };
+void use_path(Options& options, SolverPath path);
 
 // Names of the three standard material pairs.
 inline const std::string kBallBall = "ball_ball";

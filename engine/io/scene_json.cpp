@@ -242,6 +242,11 @@ json parse_json_text(const std::string& text, const std::string& source) {
 namespace {
 
 void read_options(const JsonNode& m, Options& o) {
+  m.optional("path", [&](const JsonNode& v) {  // first: the switches below override it
+    if (v.string() == "fast") use_path(o, SolverPath::Fast);
+    else if (v.string() == "plain") use_path(o, SolverPath::Plain);
+    else v.fail("must be \"fast\" or \"plain\", got " + describe(v.raw()));
+  });
   m.optional("friction_sharpness", [&](const JsonNode& v) { o.friction_sharpness = v.positive(); });
   m.optional("friction_rate_limit", [&](const JsonNode& v) { o.friction_rate_limit = v.non_negative(); });
   m.optional("rest_speed", [&](const JsonNode& v) { o.rest_speed = v.positive(); });

@@ -76,7 +76,7 @@ std::string run_preset(const std::string& path) {
 std::string run_bench_case(const BenchCase& c, const MethodSetting& setting) {
   Scene scene = load_scene(kRoot + "/" + c.file, c.overrides);
   scene.model.integrator = integrator_options(setting);
-  if (setting.plain) use_plain_path(scene.model.options);
+  if (setting.plain) use_path(scene.model.options, SolverPath::Plain);
   Prepared p = prepare(scene);
   Simulation sim(std::move(p.model), std::move(p.state));
   if (c.until_rest)
