@@ -13,7 +13,7 @@
 #include <map>
 #include <sstream>
 
-#include "app/bench_cases.hpp"
+#include "app/bench/cases.hpp"
 #include "engine/io/scene_json.hpp"
 #include "engine/simulation.hpp"
 

@@ -1,8 +1,8 @@
-// The bench's error measure (app/bench_run.cpp): the figures in docs/bench rest on it, so its scales are pinned here
+// The bench's error measure (app/bench/run.cpp): the figures in docs/bench rest on it, so its scales are pinned here
 // with hand-made end states, not with runs of the engine.
 #include <gtest/gtest.h>
 
-#include "app/bench_run.hpp"
+#include "app/bench/run.hpp"
 
 namespace shotlab {
 namespace {

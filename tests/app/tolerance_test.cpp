@@ -1,4 +1,4 @@
-// Issue 5's accuracy target, measured as the bench measures it (app/bench_run.cpp, Errors::tolerance_pv and
+// Issue 5's accuracy target, measured as the bench measures it (app/bench/run.cpp, Errors::tolerance_pv and
 // tolerance_spin): on the bench scenes S1-S6 the fast path at the default tolerance ends within that tolerance of the
 // bench's reference (Dormand-Prince 5 on the plain path at 1e-13), in the stepper's own terms. Not a timing: the runs
 // take about half a second.
@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "app/bench_run.hpp"
+#include "app/bench/run.hpp"
 
 namespace shotlab {
 namespace {

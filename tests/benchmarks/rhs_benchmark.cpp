@@ -1,5 +1,5 @@
 // Cost of one right-hand-side call (shotlab::Dynamics::operator()) against the number of balls: issue 5 asks for
-// O(n), not O(n^2). n balls scattered over a large flat bed (app/bench_scaling.hpp: same density at every n, no
+// O(n), not O(n^2). n balls scattered over a large flat bed (app/bench/scaling.hpp: same density at every n, no
 // overlaps, all awake and sliding, so every ball takes the full model: bed contact and smoothed friction), no
 // cushions. The counter per_ball is the time per call divided by n: flat across n means O(n).
 //   ./rhs_benchmark [--svg=docs/bench/scaling_rhs.svg] [Google Benchmark options]
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "app/bench_scaling.hpp"
-#include "app/bench_svg.hpp"
+#include "app/bench/scaling.hpp"
+#include "app/bench/svg.hpp"
 #include "engine/dynamics.hpp"
 
 namespace {

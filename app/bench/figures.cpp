@@ -3,8 +3,8 @@
 #include <cmath>
 #include <map>
 
-#include "app/bench_report.hpp"
-#include "app/bench_svg.hpp"
+#include "app/bench/report.hpp"
+#include "app/bench/svg.hpp"
 
 namespace shotlab {
 namespace {

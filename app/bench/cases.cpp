@@ -1,4 +1,4 @@
-#include "bench_cases.hpp"
+#include "cases.hpp"
 
 #include <cmath>
 

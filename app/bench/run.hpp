@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "app/bench_cases.hpp"
+#include "app/bench/cases.hpp"
 #include "engine/simulation.hpp"
 
 namespace shotlab {

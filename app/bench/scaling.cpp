@@ -1,4 +1,4 @@
-#include "bench_scaling.hpp"
+#include "scaling.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,8 +7,8 @@
 #include <iostream>
 #include <random>
 
-#include "app/bench_cases.hpp"
-#include "app/bench_svg.hpp"
+#include "app/bench/cases.hpp"
+#include "app/bench/svg.hpp"
 #include "engine/simulation.hpp"
 
 namespace shotlab {

@@ -1,4 +1,4 @@
-#include "bench_run.hpp"
+#include "run.hpp"
 
 #include <algorithm>
 #include <map>

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "app/bench_run.hpp"
+#include "app/bench/run.hpp"
 
 namespace shotlab {
 
@@ -37,7 +37,7 @@ struct BenchReport {
 // Writes every output file into out_dir (which must exist); returns false and says why on stderr if one fails.
 bool write_report(const std::string& out_dir, const BenchReport& report);
 
-// The three SVG figures (bench_figures.cpp); called by write_report.
+// The three SVG figures (bench/figures.cpp); called by write_report.
 bool write_figures(const std::string& out_dir, const BenchReport& report);
 
 // Setting as a short string: "1e-06" for a tolerance, "h=1e-05" for a step.

@@ -1,5 +1,5 @@
 // `shotlab bench`: the work-precision report (issue 4). Runs every case with every integrator setting, measures the
-// error against a reference solution and the cost, and writes CSV, markdown and SVG figures (bench_report.hpp).
+// error against a reference solution and the cost, and writes CSV, markdown and SVG figures (bench/report.hpp).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,8 +11,8 @@
 #include <set>
 #include <sstream>
 
-#include "app/bench_report.hpp"
-#include "app/bench_scaling.hpp"
+#include "app/bench/report.hpp"
+#include "app/bench/scaling.hpp"
 #include "app/commands.hpp"
 #include "app/paths.hpp"
 #include "engine/io/json_reader.hpp"
@@ -22,7 +22,7 @@ namespace {
 
 struct BenchOptions {
   bool quick = false;
-  bool scaling = false;             // issue 5's scene scaling instead of the sweep (bench_scaling.hpp)
+  bool scaling = false;             // issue 5's scene scaling instead of the sweep (bench/scaling.hpp)
   std::string out_dir = "docs/bench";
   std::vector<std::string> scenes;  // S1..S8, empty: all
   int repeats = 0;                  // runs per setting; 0: 5, or 3 with --quick
