@@ -6,36 +6,18 @@ namespace shotlab {
 // C_s = 4/3 E* sqrt(R/2) = 5.0e8 N/m^1.5. Linear damping 20 N s/m gives the dimensionless damping
 // zeta = C_d m_eff^-0.6 C_s^-0.4 v^-0.2 = 0.029 at 1 m/s, i.e. restitution 0.95 (VALIDATION.md R6).
 // Friction 0.06: middle of the measured 0.03-0.08.
-ContactMaterial default_ball_ball() {
-  ContactMaterial m;
-  m.stiffness = 5.0e8;
-  m.damping = 20.0;
-  m.friction = 0.06;
-  return m;
-}
+ContactMaterial default_ball_ball() { return {.stiffness = 5.0e8, .damping = 20.0, .friction = 0.06}; }
 
 // The cloth over slate is softer than resin: C_s = 1e8 N/m^1.5 (a resting ball sinks 6.5 um). Damping 246 N s/m
 // gives zeta = 0.45 at 1 m/s for a 0.17 kg ball, restitution about 0.5 (measured ball-table value).
 // Sliding friction 0.2, rolling resistance 0.01 (deceleration 0.098 m/s^2), spin friction 0.0117
 // (angular deceleration 10 rad/s^2 for a pool ball at rest): all mid-range measured values.
 ContactMaterial default_ball_cloth() {
-  ContactMaterial m;
-  m.stiffness = 1.0e8;
-  m.damping = 246.0;
-  m.friction = 0.2;
-  m.rolling_resistance = 0.01;
-  m.spin_friction = 0.0117;
-  return m;
+  return {.stiffness = 1.0e8, .damping = 246.0, .friction = 0.2, .rolling_resistance = 0.01, .spin_friction = 0.0117};
 }
 
 // Rubber cushion: C_s = 1e8 N/m^1.5, damping 71 N s/m gives zeta = 0.13 at 1 m/s, restitution about 0.8
 // (measured 0.6-0.9); cushion friction 0.2.
-ContactMaterial default_ball_cushion() {
-  ContactMaterial m;
-  m.stiffness = 1.0e8;
-  m.damping = 71.0;
-  m.friction = 0.2;
-  return m;
-}
+ContactMaterial default_ball_cushion() { return {.stiffness = 1.0e8, .damping = 71.0, .friction = 0.2}; }
 
 }  // namespace shotlab
