@@ -54,16 +54,6 @@ struct ContactRecord {
   FrictionLaw friction;
 };
 
-struct Contact {
-  int ball;          // ball A
-  int other_ball;    // ball B, or -1 when B is a collider
-  int collider;      // collider index, or -1 when B is a ball
-  double depth;      // m
-  Vec3 normal;       // unit, from B towards A
-  Vec3 point;        // contact point (on A's surface), m
-  ContactForce force;  // on A
-};
-
 // A vertical column over the rectangle lo < x < hi, lo < z < hi (m) of the table's plane; empty when lo >= hi.
 struct ColumnXZ {
   double lo_x = 0, hi_x = 0, lo_z = 0, hi_z = 0;

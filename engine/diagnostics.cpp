@@ -1,5 +1,7 @@
 #include "diagnostics.hpp"
 
+#include "contacts.hpp"
+
 namespace shotlab {
 
 Energy energy(const Model& model, const State& state) {

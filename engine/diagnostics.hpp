@@ -2,11 +2,13 @@
 #pragma once
 #include <vector>
 
-#include "contacts.hpp"
+#include "contact.hpp"
 #include "model.hpp"
 #include "state.hpp"
 
 namespace shotlab {
+
+struct ContactCache;  // contacts.hpp
 
 struct Energy {
   double kinetic = 0;    // J, translation + rotation

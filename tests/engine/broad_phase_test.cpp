@@ -3,6 +3,7 @@
 #include <random>
 #include <set>
 
+#include "engine/contacts.hpp"
 #include "support.hpp"
 
 namespace shotlab::test {

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "engine/contacts.hpp"
 #include "support.hpp"
 
 namespace shotlab::test {

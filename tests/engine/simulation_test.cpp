@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/contacts.hpp"
 #include "support.hpp"
 
 namespace shotlab::test {
