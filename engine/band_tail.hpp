@@ -1,35 +1,7 @@
 // The tails of a regime ball's friction inside their smoothing bands, in closed form: the only parts of a rolling or
-// sliding ball's motion that are not polynomial in time.
-//
-// Why it matters: a friction term stops the motion it opposes at a constant rate until that motion's speed q is
-// within its band, |q| < 1/k (1 mm/s at k = 1000 s/m). There fricstep turns it into a damper that never quite stops
-// it: q decays at about 1.5 A k (430 1/s for the spin about the normal, 150 1/s for the rolling speed), and an
-// explicit method integrating that takes a dozen millisecond steps per tail, or a whole slide's worth where the band
-// is entered while sliding. Each tail below keeps its direction, so it can be followed in closed form:
-//  - Spin: the spin about the bed's normal, q = R w.n, in either regime. Nothing else in them reads w.n (the slip
-//    and the rolling constraint involve n x w only) and spin friction reads nothing else.
-//  - Speed: the speed of a rolling ball, q = |v|, against rolling resistance along the fixed direction of motion d;
-//    the rolling constraint carries the spin along: w_t = n x v / R.
-//  - Slip: the slip u = v + R n x w of a sliding ball about to roll, along its fixed direction u^ (rolling resistance
-//    leaves the slip alone: its torque is made so, contact_force.hpp). Sliding friction changes the velocity by the
-//    share s = (1/m) / (1/m + R^2/I) (2/7) of what it does to the slip, so v = v0 + s (q - q0) u^ + v_r; rolling
-//    resistance, which acts inside the slip's band at the weight 1 - fricstep(k q) along the direction of v, brings
-//    v_r = -a_r int (1 - fricstep) d dt (a_r: its deceleration at full weight). The friction turns that direction:
-//    to first order d = d0 + s (q - q0) P u^ / |v0| (P: the part across d0), so
-//      v_r = -a_r [(t - (q0 - q) / A) d0 + (s / |v0|) P u^ J],  J = int (1 - fricstep)(q - q0) = int q - q0 t + (q - q0)^2 / (2 A)
-//    (the integral of fricstep(k q) is (q0 - q) / A, and of fricstep (q - q0) it is -(q - q0)^2 / (2 A)). What is left
-//    out is second order in the turn (s q0 / |v0|, a few 1e-4 rad), and in the position the turn's own term (a_r times
-//    the turn times t^2 / 2, 1e-11 m); the caller keeps both far under the tolerance. The spin follows from the slip:
-//    w_t = (n x v - n x u) / R.
-//
-// Derivation (BandDecay). With A = (strength) x (mobility) (m/s^2, contact_force.hpp) and y = k q, |y| <= 1:
-//   dq/dt = -A fricstep(k q),  fricstep(y) = y (3 - y^2) / 2      (vec.hpp's cubic, expanded on [-1, 1])
-//   dy/dt = -(A k / 2) y (3 - y^2).
-// For z = y^2, dz/dt = -A k z (3 - z), and u = 1/z obeys the linear du/dt = 3 A k u - A k, so with b = 3 A k,
-// c = y0^2 / 3 and S(t) = sqrt(c + (1 - c) e^(b t)):
-//   q(t) = q0 / S(t)                                   (q0 = 0 stays 0; an exponential that overflows gives 0)
-// and, substituting s = S(t) (ds/dt = b (s^2 - c) / (2 s)) in the integral of 1 / S,
-//   int_0^t q = q0 / (b sqrt(c)) [ln((s - sqrt c) / (s + sqrt c))]_{s=1}^{S(t)}.
+// sliding ball's motion that are not polynomial in time. Inside its band a friction term is a damper that would hold
+// an explicit method to millisecond steps; each tail keeps its direction, so it is followed exactly instead: the spin
+// about the bed's normal, a rolling ball's speed, a sliding ball's slip. Derivation: docs/model.md#band-tails.
 #pragma once
 #include <cmath>
 

@@ -1,7 +1,5 @@
 // Bodies of the contact law (contact_force.hpp), inline; not for direct inclusion. The right-hand side calls them for
-// every contact, and inlined into its contact loop it runs a third faster (the rack's right-hand side, 16 balls and 36
-// contacts: 2.3 -> 1.6 us); link-time optimisation did not inline them, and with more than one caller (the event
-// detector's bisections) GCC stops inlining them by itself, hence always_inline.
+// every contact: always_inline, since with several callers GCC stops inlining them and the contact loop slows.
 #pragma once
 #include <cmath>
 

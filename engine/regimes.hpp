@@ -1,27 +1,12 @@
-// Regimes: what part of the model a ball needs right now, decided at step boundaries (MuJoCo's "only what the
-// scene needs"). Four regimes:
-//  - free: the full model (every contact, friction smoothed by fricstep);
-//  - sliding: the ball slides on the bed, touches nothing else and has settled onto the bed (no normal motion, its
-//    height at the static sink, where the normal force is its weight). That is an exact invariant set of the full
-//    model: nothing tangential changes the depth of a flat bed. On it the right-hand side drops the height, whose
-//    contact mode (about 1500 rad/s, damped at 0.5) would otherwise hold an explicit method to steps of 1-3 ms for
-//    the whole slide, and keeps the bed's friction, rolling resistance and spin friction at normal force m g;
-//  - rolling: the ball rolls on the bed and touches nothing else. Its slip is exactly zero and stays so, so
-//    instead of the stiff smoothed friction (a damper of rate 1.5 k mu g, about 1e4 1/s, docs/model.md#fricstep)
-//    the right-hand side uses the closed-form rolling dynamics: constant deceleration mu_r g along the
-//    motion with the matching spin, linear decay of the vertical spin, height fixed at the static sink depth.
-//    Explicit steps are then limited by accuracy and by the time to the next possible contact, not by stability;
-//  - asleep (Box2D's islands, reduced to what billiards needs): a group of touching balls that has rested (stationary
-//    on its support, hanging still on its rod, or still in free space) for sleep_time is frozen exactly (no
-//    equations, no contacts), so resting balls cost nothing and cannot drift. A sleeping ball is an obstacle to awake
-//    ones and wakes, with every sleeping ball touching it, as soon as an awake ball that is not at rest touches it.
-// Inside their smoothing bands a regime ball's spin about the normal and a rolling ball's speed decay exponentially,
-// which would hold every step to milliseconds; they follow their closed forms instead (band_tail.hpp), and a rolling
-// ball's last 1e-7 m/s of speed is cut to zero. Off the bed, a free ball that hangs alone on its rod swings in the
-// plane pendulum's closed form (swing.hpp), worked out afresh at each step's start rather than kept as a flag.
-// A ball leaves the rolling regime when anything other than the bed comes within contact_margin, when its support
-// is no longer the flat bed (a pocket rim), or when it stops rolling. Contact onsets end the integrator's step
-// (simulation.cpp), so regime changes happen at the instant of contact.
+// Regimes: what part of the model a ball needs right now, decided at step boundaries (docs/model.md#regimes).
+//  - free: the full model;
+//  - sliding: alone on the bed and settled onto it: held at its static sink, the bed's friction at its weight, no
+//    stiff vertical contact mode to integrate;
+//  - rolling: alone on the bed with no slip: closed-form rolling instead of the stiff smoothed friction;
+//  - asleep: a group of touching balls at rest for sleep_time is frozen exactly until a moving ball touches it.
+// Friction tails inside their bands follow band_tail.hpp, a ball alone on its rod swing.hpp. A ball leaves a regime
+// when anything but its bed comes within contact_margin or its support is no longer the flat bed; contact onsets end
+// steps, so regime changes happen at the instant of contact.
 #pragma once
 #include <optional>
 #include <vector>
