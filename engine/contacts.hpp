@@ -8,6 +8,7 @@
 
 #include "contact_force.hpp"
 #include "model.hpp"
+#include "model_index.hpp"
 #include "numerics.hpp"
 #include "state.hpp"
 
@@ -41,6 +42,7 @@ struct StepContacts {
   // that no polynomial follows, and that contact's e and v.
   double onset_strength = 0, onset_exponent = 1.5, onset_speed = 0;
 };
+inline const StepContacts kNoPlan{};  // no step's plan: every contact with its plain law, found by a sweep
 
 // One touching contact as an evaluation of the right-hand side saw it (Dynamics::recorded), seen from key.first: what
 // the event detector compares at a step's two ends (EventDetector::first_law_change).
@@ -54,52 +56,16 @@ struct ContactRecord {
   FrictionLaw friction;
 };
 
-// A vertical column over the rectangle lo < x < hi, lo < z < hi (m) of the table's plane; empty when lo >= hi.
-struct ColumnXZ {
-  double lo_x = 0, hi_x = 0, lo_z = 0, hi_z = 0;
-  // Whether a ball at p with the given reach (m) lies inside, all of it.
-  bool holds(const Vec3& p, double reach) const {
-    return p.x - reach > lo_x && p.x + reach < hi_x && p.z - reach > lo_z && p.z + reach < hi_z;
-  }
-  // Greedily clear of the box [lo, hi] (its x-z extent): if the box reaches in, move the one edge that keeps the
-  // most area (a cushion along an edge costs a strip of its width).
-  void exclude(const Vec3& lo, const Vec3& hi);
-};
-
-// Per-model lookups done once (material of each collider) plus reusable buffers, so that the right-hand side does
-// no map lookups and no allocation. Holds pointers into the Model it was made from: rebuild it with the model.
-struct ContactCache {
-  explicit ContactCache(const Model& model);
-  std::vector<const ContactMaterial*> collider_material;
-  std::vector<Bounds> collider_bounds;  // broad phase against static colliders
-  std::vector<Vec3> plane_normal;       // unit normal of each plane-like collider (Plane, BoundedPlane), else 0
-  // A vertical column that no collider other than the plane-like ones reaches: a ball inside it is probed against
-  // the plane-like colliders alone (on a table, the bed; the cushions and jaws line the edges).
-  std::vector<int> plane_like;
-  std::vector<int> others;  // the other colliders, in the order of the model
-  ColumnXZ clear;
-  // For each plane-like collider (in the order of plane_like), a column over which it is a level floor (normal exactly
-  // up) with no edge and no hole, at height floor_y (m; NaN and an empty column where it is none): a bounded plane's
-  // own extent cleared of its holes, an unbounded one's part of the clear column. A ball whose centre is over it is
-  // probed with one subtraction: the bed under a rack of 16 balls, in every right-hand side, and under a ball against
-  // a cushion, no longer visits the shape, its extent and its six pockets.
-  std::vector<ColumnXZ> floor;
-  std::vector<double> floor_y;
-  std::vector<int> floor_of;  // each collider's index in plane_like (and floor), or -1
-  const ContactMaterial* ball_ball;
-  double gravity;  // m/s^2, |g|: the step caps and the regimes' right-hand sides want it for every ball
-  // Each ball's mobilities (contact_force.hpp), constant for the model: 1/m (1/kg) and r^2/I (1/kg).
-  std::vector<double> inv_mass, inv_inertia_r2;
-  std::vector<std::pair<int, int>> pairs;
-  // Broad phase: awake balls sorted by the left end of their x extent on every call; sleepers sorted once per change
-  // of who sleeps (they do not move), so that a thousand resting balls cost a binary search, not a sweep.
+// The broad phase's buffers, kept from call to call so that it allocates nothing: each user of sweep_pairs owns one.
+struct BroadPhase {
+  std::vector<std::pair<int, int>> pairs;  // overlapping_pairs' answer
+  // Awake balls sorted by the left end of their x extent on every call; sleepers sorted once per change of who
+  // sleeps (they do not move), so that a thousand resting balls cost a binary search, not a sweep.
   std::vector<int> awake;
   std::vector<int> strip_start, strip_order, strip_fill;  // sweep_strips' buckets (contacts_impl.hpp)
   std::vector<int> sleepers;
   std::vector<double> sleeper_left;  // x - R of each sleeper, ascending
   std::vector<uint8_t> sleep_key;    // in_play and asleep flags the sleeper list was built for
-  double max_radius = 0;
-  StepContacts step;  // for the right-hand side of an island's step (set by Dynamics); empty elsewhere
 };
 
 // Calls fn(i, j) for every pair of balls in play, at least one of them awake, whose x extents come within `reach`
@@ -108,65 +74,57 @@ struct ContactCache {
 // O(awake log awake + candidates) when the caller passes the list of awake balls in play (`awake`), plus a pass over
 // the balls' flags without it.
 template <class Fn>
-void sweep_pairs(const Model& model, const State& state, const double* x, ContactCache& cache, double reach,
-                 bool sleeping_pairs, Fn&& fn, const std::vector<int>* awake = nullptr);
+void sweep_pairs(const Model& model, const ModelIndex& index, const State& state, const double* x, BroadPhase& broad,
+                 double reach, bool sleeping_pairs, Fn&& fn, const std::vector<int>* awake = nullptr);
 
 // The sleepers whose x extents come within `reach` of ball i's (i itself excluded).
 template <class Fn>
-void sleepers_near(const Model& model, const double* x, const ContactCache& cache, int i, double reach, Fn&& fn);
+void sleepers_near(const Model& model, const ModelIndex& index, const double* x, const BroadPhase& broad, int i,
+                   double reach, Fn&& fn);
 
 // Calls fn(c, pen) for every collider c whose gap to a ball (centre p, radius r) may be under `within` m, with its
 // penetration (pen.depth may still be <= -within: the bounds are a box). The colliders' bounds reject most of a
 // table's cushions before the exact test is called: every step runs this for every ball in several passes (contact
 // onsets, motion states, regimes, step caps), and the calls themselves were a quarter of a break's wall time.
 template <class Fn>
-void near_colliders(const Model& model, const ContactCache& cache, const Vec3& p, double r, double within, Fn&& fn);
-
-// The penetration of a ball (centre p, radius r) into the k-th plane-like collider where its centre is over that
-// collider's level floor (ContactCache::floor): one subtraction, none when the centre is below the floor (a plane is
-// one-sided); nullopt when it is not over the floor.
-inline std::optional<std::optional<Penetration>> floor_penetration(const ContactCache& cache, size_t k, const Vec3& p,
-                                                                   double r) {
-  if (!cache.floor[k].holds(p, 0.0)) return std::nullopt;
-  const double height = p.y - cache.floor_y[k];
-  return height >= 0 ? std::optional<Penetration>(Penetration{r - height, kUp}) : std::nullopt;
-}
+void near_colliders(const Model& model, const ModelIndex& index, const Vec3& p, double r, double within, Fn&& fn);
 
 // The penetration of a ball (centre p, radius r) into collider c (colliders.hpp, penetration), the way near_colliders
 // finds it: over a level floor by one subtraction instead of the shape's test of its extent and its holes.
-inline std::optional<Penetration> collider_penetration(const Model& model, const ContactCache& cache, int c, const Vec3& p,
+inline std::optional<Penetration> collider_penetration(const Model& model, const ModelIndex& index, int c, const Vec3& p,
                                                        double r, double within = std::numeric_limits<double>::infinity()) {
-  if (cache.floor_of[c] >= 0)
-    if (const auto on_floor = floor_penetration(cache, static_cast<size_t>(cache.floor_of[c]), p, r)) return *on_floor;
+  if (index.floor_of[c] >= 0)
+    if (const auto on_floor = floor_penetration(index, static_cast<size_t>(index.floor_of[c]), p, r)) return *on_floor;
   return penetration(model.colliders[c].shape, p, r, within);
 }
 
 // Ball pairs (at least one awake, or any with `sleeping_pairs`) whose spheres overlap or come closer than `slack` m.
-void overlapping_pairs(const Model& model, const State& state, const double* x, ContactCache& cache,
-                       double slack = 0.0, bool sleeping_pairs = false);
+// Into broad.pairs.
+void overlapping_pairs(const Model& model, const ModelIndex& index, const State& state, const double* x,
+                       BroadPhase& broad, double slack = 0.0, bool sleeping_pairs = false);
 
 // The kinematics of ball i (radius r, velocity v, spin w) against a static collider whose normal (towards the ball's
 // centre) is `normal`, penetrated by `depth`.
 template <class Normal>
-Kinematics<Normal> collider_kinematics(const ContactCache& cache, int i, double r, const Vec3& v, const Vec3& w,
+Kinematics<Normal> collider_kinematics(const ModelIndex& index, int i, double r, const Vec3& v, const Vec3& w,
                                        Normal normal, double depth) {
   return {normal, depth, v, v + r * normal_cross(normal, w), normal_component(w, normal), r,
-          cache.inv_mass[i] + cache.inv_inertia_r2[i], cache.inv_mass[i], cache.inv_inertia_r2[i]};
+          index.inv_mass[i] + index.inv_inertia_r2[i], index.inv_mass[i], index.inv_inertia_r2[i]};
 }
 
 // The force of the contact of ball i (radius r, velocity v, spin w) with collider c, whose material is `mat`, at
 // penetration `pen`: through the law's component form where the normal is straight up (the bed). Always inlined, like
 // the law itself, so that the 96-byte ContactForce stays in registers instead of going through memory.
-[[gnu::always_inline]] inline ContactForce collider_force(const ContactMaterial& mat, const ContactCache& cache, int i,
+[[gnu::always_inline]] inline ContactForce collider_force(const ContactMaterial& mat, const ModelIndex& index, int i,
                                                           double r, const Vec3& v, const Vec3& w, const Penetration& pen,
                                                           const Smoothing& smoothing, bool clamp = true) {
-  return pen.normal == kUp ? contact_force(mat, collider_kinematics(cache, i, r, v, w, UpNormal{}, pen.depth), smoothing, clamp)
-                           : contact_force(mat, collider_kinematics(cache, i, r, v, w, pen.normal, pen.depth), smoothing, clamp);
+  return pen.normal == kUp ? contact_force(mat, collider_kinematics(index, i, r, v, w, UpNormal{}, pen.depth), smoothing, clamp)
+                           : contact_force(mat, collider_kinematics(index, i, r, v, w, pen.normal, pen.depth), smoothing, clamp);
 }
 
 // The kinematics of balls i and j (centres d = |p_i - p_j| apart, d > 0 unless they coincide) from i's side: the normal
 // from j to i, A's contact point at -R_i n and B's at +R_j n.
-inline ContactKinematics pair_kinematics(const Model& model, const ContactCache& cache, const double* x, int i, int j) {
+inline ContactKinematics pair_kinematics(const Model& model, const ModelIndex& index, const double* x, int i, int j) {
   const double ri = model.balls[i].radius, rj = model.balls[j].radius;
   const Vec3 d = position(x, i) - position(x, j);
   const double dist = glm::length(d);
@@ -175,17 +133,18 @@ inline ContactKinematics pair_kinematics(const Model& model, const ContactCache&
   const Vec3 vrel = velocity(x, i) - velocity(x, j);
   const Vec3 slip = vrel + ri * glm::cross(nrm, wi) + rj * glm::cross(nrm, wj);
   return {nrm, ri + rj - dist, vrel, slip, glm::dot(wi - wj, nrm), ri,
-          cache.inv_mass[i] + cache.inv_inertia_r2[i] + cache.inv_mass[j] + cache.inv_inertia_r2[j],
-          cache.inv_mass[i] + cache.inv_mass[j], cache.inv_inertia_r2[i] + cache.inv_inertia_r2[j]};
+          index.inv_mass[i] + index.inv_inertia_r2[i] + index.inv_mass[j] + index.inv_inertia_r2[j],
+          index.inv_mass[i] + index.inv_mass[j], index.inv_inertia_r2[i] + index.inv_inertia_r2[j]};
 }
 
 // Calls fn(const Contact&) for every touching ball-collider and ball-ball pair of balls in play. `x` is the state
 // vector (9 numbers a ball), which may differ from state.x (the integrator's trial states). Contacts that no
 // ball's dynamics uses (between sleeping balls; the bed under a ball in the rolling or sliding regime, whose support is
-// in closed form) are left out unless `with_inactive` (diagnostics want them).
+// in closed form) are left out unless `with_inactive` (diagnostics want them). `plan`: the step's frozen contact laws
+// (StepContacts; none: every contact with its plain law, found by a sweep).
 template <class Fn>
-void for_each_contact(const Model& model, const State& state, const double* x, ContactCache& cache, Fn&& fn,
-                      bool with_inactive = false);
+void for_each_contact(const Model& model, const ModelIndex& index, const State& state, const double* x,
+                      BroadPhase& broad, const StepContacts* plan, Fn&& fn, bool with_inactive = false);
 
 // A lower bound on the time before any still-separated pair (ball-ball or ball-collider) could touch, given current
 // velocities and an acceleration bound; +inf when nothing can within `horizon` (the step the integrator wants).
@@ -193,20 +152,20 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
 // (docs/model.md#step-cap). Ball pairs use their relative speed, so a cluster moving together is not held back. With
 // `step`, also sorts the contacts it looks at into step->separated (every contact that could begin within the
 // horizon, none that cannot: the list is searched on every right-hand side) and step->pushing.
-double time_to_possible_contact(const Model& model, const State& state, const double* x, double horizon,
-                                ContactCache& cache, StepContacts* step = nullptr);
+double time_to_possible_contact(const Model& model, const ModelIndex& index, const State& state, const double* x,
+                                double horizon, BroadPhase& broad, StepContacts* step = nullptr);
 
 // m/s^2: a bound on ball i's acceleration while it touches nothing but the bed it rolls or slides on: rolling
 // resistance mu_r g when rolling, (mu + mu_r) g when sliding, generously 2 |g| otherwise (a ball in the air, one
 // settling onto the bed).
-double free_acceleration(const State& state, const ContactCache& cache, int i);
+double free_acceleration(const State& state, const ModelIndex& index, int i);
 
 // s: a lower bound on the time before ball i could come contact_margin into a collider other than the bed it rolls
 // or slides on (as far as a step may take it), or that far over a hole's edge in that bed; +inf when nothing can
 // within `horizon`. With `step`, lists the ball's contacts
 // in step->separated and step->pushing as time_to_possible_contact does (unsorted).
-double collider_contact_time(const Model& model, const State& state, const double* x, int i, double horizon,
-                             const ContactCache& cache, StepContacts* step = nullptr);
+double collider_contact_time(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
+                             double horizon, StepContacts* step = nullptr);
 
 // s: when two balls whose centres are d0 apart (m, d0 = p_i - p_j) and whose relative velocity is v (m/s) come within
 // `reach` (m) of each other on straight paths; +inf when they pass wider than that, 0 when they are that close now.

@@ -5,15 +5,16 @@
 
 namespace shotlab {
 
-void refresh_sleepers(const Model& model, const State& state, const double* x, ContactCache& cache);  // contacts.cpp
+void refresh_sleepers(const Model& model, const State& state, const double* x, BroadPhase& broad);  // contacts.cpp
 
 template <class Fn>
-void sleepers_near(const Model& model, const double* x, const ContactCache& cache, int i, double reach, Fn&& fn) {
+void sleepers_near(const Model& model, const ModelIndex& index, const double* x, const BroadPhase& broad, int i,
+                   double reach, Fn&& fn) {
   const double left = x[9 * i] - model.balls[i].radius - reach, right = x[9 * i] + model.balls[i].radius + reach;
   // Sleepers starting left of `right`, walked back while they may still reach `left` (extent at most 2 max_radius).
-  auto k = std::lower_bound(cache.sleeper_left.begin(), cache.sleeper_left.end(), right) - cache.sleeper_left.begin();
-  for (--k; k >= 0 && cache.sleeper_left[k] + 2 * cache.max_radius > left; --k)
-    if (cache.sleepers[k] != i) fn(cache.sleepers[k]);
+  auto k = std::lower_bound(broad.sleeper_left.begin(), broad.sleeper_left.end(), right) - broad.sleeper_left.begin();
+  for (--k; k >= 0 && broad.sleeper_left[k] + 2 * index.max_radius > left; --k)
+    if (broad.sleepers[k] != i) fn(broad.sleepers[k]);
 }
 
 // The awake balls in strips along z, each strip sorted by x and swept alone and against the next one: two balls whose
@@ -22,8 +23,9 @@ void sleepers_near(const Model& model, const double* x, const ContactCache& cach
 // on balls spread over an area the sweep along x alone finds about 0.3 sqrt(n) candidates a ball. False when a
 // position or the field's extent is not finite (the plain sweep then takes over).
 template <class Fn>
-bool sweep_strips(const Model& model, const double* x, ContactCache& cache, double reach, Fn&& fn) {
-  const std::vector<int>& awake = cache.awake;
+bool sweep_strips(const Model& model, const ModelIndex& index, const double* x, BroadPhase& broad, double reach,
+                  Fn&& fn) {
+  const std::vector<int>& awake = broad.awake;
   auto left = [&](int i) { return x[9 * i] - model.balls[i].radius; };
   auto width = [&](int i) { return 2 * model.balls[i].radius + reach; };  // of the extent, reach included
   double lo = x[9 * awake[0] + 2], hi = lo;
@@ -33,10 +35,10 @@ bool sweep_strips(const Model& model, const double* x, ContactCache& cache, doub
   }
   if (!std::isfinite(hi - lo)) return false;
   // No more strips than balls, however far apart they are.
-  const double height = std::max(2 * cache.max_radius + reach, (hi - lo) / static_cast<double>(awake.size()));
+  const double height = std::max(2 * index.max_radius + reach, (hi - lo) / static_cast<double>(awake.size()));
   auto strip = [&](int i) { return static_cast<size_t>((x[9 * i + 2] - lo) / height); };
   const size_t strips = static_cast<size_t>((hi - lo) / height) + 1;
-  std::vector<int> &start = cache.strip_start, &order = cache.strip_order, &fill = cache.strip_fill;
+  std::vector<int> &start = broad.strip_start, &order = broad.strip_order, &fill = broad.strip_fill;
   start.assign(strips + 1, 0);
   for (int i : awake) ++start[strip(i) + 1];
   for (size_t k = 0; k < strips; ++k) start[k + 1] += start[k];
@@ -56,7 +58,7 @@ bool sweep_strips(const Model& model, const double* x, ContactCache& cache, doub
     int from = start[k + 1];
     for (int a = start[k]; a < start[k + 1]; ++a) {
       const double la = left(order[a]), right = la + width(order[a]);
-      while (from < start[k + 2] && left(order[from]) + 2 * cache.max_radius + reach <= la) ++from;
+      while (from < start[k + 2] && left(order[from]) + 2 * index.max_radius + reach <= la) ++from;
       for (int b = from; b < start[k + 2] && left(order[b]) < right; ++b)
         if (left(order[b]) + width(order[b]) > la) fn(order[a], order[b]);
     }
@@ -65,11 +67,11 @@ bool sweep_strips(const Model& model, const double* x, ContactCache& cache, doub
 }
 
 template <class Fn>
-void sweep_pairs(const Model& model, const State& state, const double* x, ContactCache& cache, double reach,
-                 bool sleeping_pairs, Fn&& fn, const std::vector<int>* awake) {
+void sweep_pairs(const Model& model, const ModelIndex& index, const State& state, const double* x, BroadPhase& broad,
+                 double reach, bool sleeping_pairs, Fn&& fn, const std::vector<int>* awake) {
   // Most islands are a lone ball, and every step runs several broad phases.
   if (state.ball_count() < 2) return;
-  refresh_sleepers(model, state, x, cache);
+  refresh_sleepers(model, state, x, broad);
   auto left = [&](int i) { return x[9 * i] - model.balls[i].radius; };
   auto sweep = [&](const std::vector<int>& order) {
     for (size_t a = 0; a < order.size(); ++a) {
@@ -78,44 +80,45 @@ void sweep_pairs(const Model& model, const State& state, const double* x, Contac
     }
   };
   if (awake) {
-    cache.awake = *awake;
+    broad.awake = *awake;
   } else {
-    cache.awake.clear();
+    broad.awake.clear();
     for (int i = 0; i < state.ball_count(); ++i)
-      if (state.active(i)) cache.awake.push_back(i);
+      if (state.active(i)) broad.awake.push_back(i);
   }
   // A few dozen awake balls (a rack, an island) sweep along x; more go in strips.
   constexpr size_t kStripsFrom = 64;
-  if (cache.awake.size() < kStripsFrom || !sweep_strips(model, x, cache, reach, fn)) {
-    std::sort(cache.awake.begin(), cache.awake.end(), [&](int a, int b) { return left(a) < left(b); });
-    sweep(cache.awake);
+  if (broad.awake.size() < kStripsFrom || !sweep_strips(model, index, x, broad, reach, fn)) {
+    std::sort(broad.awake.begin(), broad.awake.end(), [&](int a, int b) { return left(a) < left(b); });
+    sweep(broad.awake);
   }
-  if (!cache.sleepers.empty())
-    for (int i : cache.awake) sleepers_near(model, x, cache, i, reach, [&](int j) { fn(i, j); });
-  if (sleeping_pairs) sweep(cache.sleepers);
+  if (!broad.sleepers.empty())
+    for (int i : broad.awake) sleepers_near(model, index, x, broad, i, reach, [&](int j) { fn(i, j); });
+  if (sleeping_pairs) sweep(broad.sleepers);
 }
 
 template <class Fn>
-void near_colliders(const Model& model, const ContactCache& cache, const Vec3& p, double r, double within, Fn&& fn) {
+void near_colliders(const Model& model, const ModelIndex& index, const Vec3& p, double r, double within, Fn&& fn) {
   auto probe = [&](size_t c) {
-    if (!cache.collider_bounds[c].may_touch(p, r + within)) return;
+    if (!index.collider_bounds[c].may_touch(p, r + within)) return;
     if (const auto pen = penetration(model.colliders[c].shape, p, r, within)) fn(static_cast<int>(c), *pen);
   };
   const double reach = r + within;
-  for (size_t k = 0; k < cache.plane_like.size(); ++k) {
-    const int c = cache.plane_like[k];
-    const auto on_floor = floor_penetration(cache, k, p, r);
+  for (size_t k = 0; k < index.plane_like.size(); ++k) {
+    const int c = index.plane_like[k];
+    const auto on_floor = floor_penetration(index, k, p, r);
     if (!on_floor) probe(c);
-    else if (*on_floor && cache.collider_bounds[c].may_touch(p, reach)) fn(c, **on_floor);
+    else if (*on_floor && index.collider_bounds[c].may_touch(p, reach)) fn(c, **on_floor);
   }
   // Inside the clear column nothing else can be in reach.
-  if (cache.clear.holds(p, reach)) return;
-  for (int c : cache.others) probe(c);
+  if (index.clear.holds(p, reach)) return;
+  for (int c : index.others) probe(c);
 }
 
 template <class Fn>
-void for_each_contact(const Model& model, const State& state, const double* x, ContactCache& cache, Fn&& fn,
-                      bool with_inactive) {
+void for_each_contact(const Model& model, const ModelIndex& index, const State& state, const double* x,
+                      BroadPhase& broad, const StepContacts* plan, Fn&& fn, bool with_inactive) {
+  const StepContacts& step = plan ? *plan : kNoPlan;
   const Smoothing k{model.options.friction_sharpness, model.options.friction_rate_limit};
   const int n = state.ball_count();
   auto listed = [](const std::vector<ContactKey>& keys, int a, int b) {
@@ -126,30 +129,30 @@ void for_each_contact(const Model& model, const State& state, const double* x, C
     if (!state.in_play[i] || ((state.sleeping(i) || state.rolling(i) || state.sliding(i)) && !with_inactive)) continue;
     const double r = model.balls[i].radius;
     const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
-    near_colliders(model, cache, p, r, 0.0, [&](int c, const Penetration& pen) {
-      if (pen.depth <= 0 || listed(cache.step.separated, i, -1 - c)) return;
-      const ContactForce f = collider_force(*cache.collider_material[c], cache, i, r, v, w, pen, k,
-                                            !listed(cache.step.pushing, i, -1 - c));
+    near_colliders(model, index, p, r, 0.0, [&](int c, const Penetration& pen) {
+      if (pen.depth <= 0 || listed(step.separated, i, -1 - c)) return;
+      const ContactForce f = collider_force(index.collider_material(c), index, i, r, v, w, pen, k,
+                                            !listed(step.pushing, i, -1 - c));
       fn(Contact{i, -1, c, pen.depth, pen.normal, p - r * pen.normal, f});
     });
   }
   // Ball against ball: n points from j to i; A's contact point is at -R_i n, B's at +R_j n.
-  const bool near_known = cache.step.near_known && !with_inactive;
-  if (!near_known) overlapping_pairs(model, state, x, cache, 0.0, with_inactive);
-  const ContactMaterial& bb = *cache.ball_ball;
-  for (const auto& [i, j] : near_known ? cache.step.near : cache.pairs) {
+  const bool near_known = step.near_known && !with_inactive;
+  if (!near_known) overlapping_pairs(model, index, state, x, broad, 0.0, with_inactive);
+  const ContactMaterial& bb = index.ball_ball();
+  for (const auto& [i, j] : near_known ? step.near : broad.pairs) {
     const int a = std::min(i, j), b = std::max(i, j);
     // The step's near pairs and its separated ones are apart by construction (time_to_possible_contact).
-    if ((state.sleeping(i) && state.sleeping(j) && !with_inactive) || (!near_known && listed(cache.step.separated, a, b)))
+    if ((state.sleeping(i) && state.sleeping(j) && !with_inactive) || (!near_known && listed(step.separated, a, b)))
       continue;
     const double ri = model.balls[i].radius, rj = model.balls[j].radius;
     if (near_known) {
       const Vec3 d = position(x, i) - position(x, j);
       if (glm::dot(d, d) >= (ri + rj) * (ri + rj) || !state.in_play[i] || !state.in_play[j]) continue;
     }
-    const ContactKinematics kin = pair_kinematics(model, cache, x, i, j);
+    const ContactKinematics kin = pair_kinematics(model, index, x, i, j);
     fn(Contact{i, j, -1, kin.depth, kin.normal, position(x, i) - ri * kin.normal,
-               contact_force(bb, kin, k, !listed(cache.step.pushing, a, b))});
+               contact_force(bb, kin, k, !listed(step.pushing, a, b))});
   }
 }
 

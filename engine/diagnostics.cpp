@@ -5,11 +5,11 @@
 namespace shotlab {
 
 Energy energy(const Model& model, const State& state) {
-  ContactCache cache(model);
-  return energy(model, state, cache, true);
+  BroadPhase broad;
+  return energy(model, ModelIndex(model), state, broad, true);
 }
 
-Energy energy(const Model& model, const State& state, ContactCache& cache, bool with_inactive) {
+Energy energy(const Model& model, const ModelIndex& index, const State& state, BroadPhase& broad, bool with_inactive) {
   Energy e;
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.in_play[i] || (state.sleeping(i) && !with_inactive)) continue;
@@ -17,8 +17,8 @@ Energy energy(const Model& model, const State& state, ContactCache& cache, bool 
     e.kinetic += b.translation + b.rotation;
     e.potential -= model.balls[i].mass * glm::dot(model.options.gravity, position(state.x, i));
   }
-  for_each_contact(model, state, state.x.data(), cache, [&](const Contact& c) {
-    const ContactMaterial& m = c.other_ball >= 0 ? *cache.ball_ball : *cache.collider_material[c.collider];
+  for_each_contact(model, index, state, state.x.data(), broad, nullptr, [&](const Contact& c) {
+    const ContactMaterial& m = c.other_ball >= 0 ? index.ball_ball() : index.collider_material(c.collider);
     e.elastic += elastic_energy(m, c.depth);
   }, with_inactive);
   return e;
@@ -39,8 +39,9 @@ Vec3 momentum(const Model& model, const State& state) {
 
 std::vector<Contact> contacts(const Model& model, const State& state) {
   std::vector<Contact> out;
-  ContactCache cache(model);
-  for_each_contact(model, state, state.x.data(), cache, [&](const Contact& c) { out.push_back(c); }, true);
+  BroadPhase broad;
+  for_each_contact(model, ModelIndex(model), state, state.x.data(), broad, nullptr,
+                   [&](const Contact& c) { out.push_back(c); }, true);
   return out;
 }
 

@@ -4,12 +4,12 @@
 
 namespace shotlab {
 
-Dynamics::Dynamics(const Model& model, const State& state)
-    : model_(model), state_(state), cache_(model), force_(model.balls.size()), torque_(model.balls.size()) {}
+Dynamics::Dynamics(const Model& model, const ModelIndex& index, const State& state)
+    : model_(model), index_(index), state_(state), force_(model.balls.size()), torque_(model.balls.size()) {}
 
 template <bool Record>
 void Dynamics::add_contacts(const StateVector& x) {
-  for_each_contact(model_, state_, x.data(), cache_, [&](const Contact& c) {
+  for_each_contact(model_, index_, state_, x.data(), broad_, &plan_, [&](const Contact& c) {
     const ContactForce& f = c.force;
     if constexpr (Record) {
       // A contact between two balls is recorded from the lower-numbered one: the other sees the friction and rolling
@@ -57,11 +57,11 @@ void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/)
     if (!state_.active(i)) continue;  // pocketed or asleep: frozen, zero derivative
     const BallSpec& b = model_.balls[i];
     if (state_.rolling(i)) {
-      rolling_derivative(model_, state_, cache_, x.data(), i, &dxdt[9 * i]);
+      rolling_derivative(model_, index_, state_, x.data(), i, &dxdt[9 * i]);
       continue;
     }
     if (state_.sliding(i)) {
-      sliding_derivative(model_, state_, cache_, x.data(), i, &dxdt[9 * i]);
+      sliding_derivative(model_, index_, state_, x.data(), i, &dxdt[9 * i]);
       continue;
     }
     set_position(dxdt, i, velocity(x, i));
@@ -98,16 +98,16 @@ void Dynamics::apply_rods(const StateVector& x, StateVector& dxdt) const {
 // the motion stay zero:
 //   dp/dt = v,  dv/dt = F_t / m,  dw/dt = T / I    (F_t, T: friction, rolling resistance and spin friction of the
 //                                                   bed at N = m g, contact_force.hpp, exactly as in the full model)
-void sliding_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+void sliding_derivative(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
                         double* dxdt) {
   const int bed = state.sliding_on[i];
-  const Vec3& n = cache.plane_normal[bed];
+  const Vec3& n = index.plane_normal[bed];
   const BallSpec& b = model.balls[i];
   const Vec3 v = velocity(x, i), w = spin(x, i);
   ContactForce f;
-  f.normal = b.mass * cache.gravity;
+  f.normal = b.mass * index.gravity;
   // The depth is the static sink; the friction terms do not read it.
-  add_friction(*cache.collider_material[bed], collider_kinematics(cache, i, b.radius, v, w, n, 0.0),
+  add_friction(index.collider_material(bed), collider_kinematics(index, i, b.radius, v, w, n, 0.0),
                {model.options.friction_sharpness, model.options.friction_rate_limit}, f);
   Vec3 a = f.force / b.mass;
   a -= glm::dot(a, n) * n;  // round-off of the projections in add_friction
@@ -125,15 +125,15 @@ void sliding_derivative(const Model& model, const State& state, const ContactCac
 //   dw/dt = (1/R) n x a  +  n (-(5 mu_sp g / (2 R)) fricstep(k R w.n))      (eq. 3.7; spin torque mu_sp R m g over
 //                                                                            I = 2/5 m R^2, eq. 3.8)
 // The slip v + R n x w stays exactly zero: d/dt of it is a + R n x ((1/R) n x a) = a - a = 0 for a along the bed.
-void rolling_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+void rolling_derivative(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
                         double* dxdt) {
-  const ContactMaterial& m = *cache.collider_material[state.rolling_on[i]];
-  const Vec3& n = cache.plane_normal[state.rolling_on[i]];
-  const double g = cache.gravity, r = model.balls[i].radius, weight = model.balls[i].mass * g;
+  const ContactMaterial& m = index.collider_material(state.rolling_on[i]);
+  const Vec3& n = index.plane_normal[state.rolling_on[i]];
+  const double g = index.gravity, r = model.balls[i].radius, weight = model.balls[i].mass * g;
   const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
   // The sharpness each term would get in contact_force (the static normal force is m g).
-  const double k_roll = sharpness_for(smooth, m.rolling_resistance * weight, cache.inv_mass[i]);
-  const double k_spin = sharpness_for(smooth, m.spin_friction * weight, cache.inv_inertia_r2[i]);
+  const double k_roll = sharpness_for(smooth, m.rolling_resistance * weight, index.inv_mass[i]);
+  const double k_spin = sharpness_for(smooth, m.spin_friction * weight, index.inv_inertia_r2[i]);
   const Vec3 v = velocity(x, i), w = spin(x, i);
   const double speed = glm::length(v);
   const Vec3 a = speed > 0 ? -(m.rolling_resistance * g * fricstep(k_roll * speed) / speed) * v : Vec3{0.0};

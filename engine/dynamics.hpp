@@ -19,24 +19,25 @@ namespace shotlab {
 
 class Dynamics {
  public:
-  // Both references must outlive the Dynamics; `state` supplies which balls are in play.
-  Dynamics(const Model& model, const State& state);
+  // The references must outlive the Dynamics; `state` supplies which balls are in play.
+  Dynamics(const Model& model, const ModelIndex& index, const State& state);
 
   // odeint's system signature: dxdt = f(x, t).
   void operator()(const StateVector& x, StateVector& dxdt, double t);
 
   long evaluations() const { return evaluations_; }
-  // How the step about to be taken treats its changing contacts (contacts.hpp; empty lists: the plain law). Swapped
-  // in, so that the caller's lists keep their storage and hold the last step's afterwards.
-  void swap_step(StepContacts& step) {
-    std::swap(cache_.step, step);
+  // The plan of the step about to be taken: how it treats its changing contacts (contacts.hpp, StepContacts; empty
+  // lists: the plain law), handed to every contact pass until the next. Swapped in, so that the caller's lists keep
+  // their storage and hold the last step's afterwards.
+  void swap_plan(StepContacts& plan) {
+    std::swap(plan_, plan);
     ++plan_swaps_;
   }
   long plan_swaps() const { return plan_swaps_; }  // how often the step's contact laws were swapped (invariant checks)
-  const StepContacts& step() const { return cache_.step; }
+  const StepContacts& plan() const { return plan_; }
   // The balls' flags changed since the step's lists were made (one woke, one left play): the right-hand side sweeps
   // for touching pairs again until the next step's lists come.
-  void sweep_again() { cache_.step.near_known = false; }
+  void sweep_again() { plan_.near_known = false; }
   // What each contact's friction did in the last evaluation made while recording (on unless a stepper turned it off
   // for the inner stages of its step, stepper.hpp): the island compares it at a step's two ends to find where a
   // friction term switched its law or a contact let go (EventDetector::first_law_change). In the order evaluated.
@@ -50,8 +51,10 @@ class Dynamics {
   void apply_rods(const StateVector& x, StateVector& dxdt) const;
 
   const Model& model_;
+  const ModelIndex& index_;
   const State& state_;
-  ContactCache cache_;
+  BroadPhase broad_;
+  StepContacts plan_;
   std::vector<Vec3> force_, torque_;
   long evaluations_ = 0;
   long plan_swaps_ = 0;
@@ -59,11 +62,10 @@ class Dynamics {
   std::vector<ContactRecord> recorded_;
 };
 
-// Right-hand sides of a ball in the rolling and the sliding regime (regimes.hpp), written into dxdt. `cache`
-// supplies the bed's material without a lookup by name (this runs in every right-hand side).
-void rolling_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+// Right-hand sides of a ball in the rolling and the sliding regime (regimes.hpp), written into dxdt.
+void rolling_derivative(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
                         double* dxdt);
-void sliding_derivative(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+void sliding_derivative(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
                         double* dxdt);
 
 }  // namespace shotlab

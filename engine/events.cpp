@@ -40,20 +40,20 @@ const char* motion_name(Motion m) {
   return names[static_cast<int>(m)];
 }
 
-Motion classify(const Model& model, const ContactCache& cache, const State& state, const double* x, int i) {
+Motion classify(const Model& model, const ModelIndex& index, const State& state, const double* x, int i) {
   if (!state.in_play[i]) return Motion::Pocketed;
   const double r = model.balls[i].radius;
   const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
   Vec3 n{0.0};
   double best_up = -2;
   // The support is the collider within kSupportGap whose normal points most nearly up. A level floor under the ball
-  // (ContactCache::floor) is as far up as a normal goes: the other colliders need no probe (a ball on the bed, in
+  // (ModelIndex::floor) is as far up as a normal goes: the other colliders need no probe (a ball on the bed, in
   // every step's scan).
-  for (size_t k = 0; k < cache.plane_like.size() && best_up < 1; ++k)
-    if (const auto on_floor = floor_penetration(cache, k, p, r); on_floor && *on_floor && (*on_floor)->depth > -kSupportGap)
+  for (size_t k = 0; k < index.plane_like.size() && best_up < 1; ++k)
+    if (const auto on_floor = floor_penetration(index, k, p, r); on_floor && *on_floor && (*on_floor)->depth > -kSupportGap)
       best_up = 1, n = kUp;
   if (best_up < 1)
-    near_colliders(model, cache, p, r, kSupportGap, [&](int, const Penetration& pen) {
+    near_colliders(model, index, p, r, kSupportGap, [&](int, const Penetration& pen) {
       if (pen.depth > -kSupportGap && glm::dot(pen.normal, kUp) > best_up) {
         best_up = glm::dot(pen.normal, kUp);
         n = pen.normal;
@@ -87,8 +87,8 @@ void EventDetector::collect(const State& state, const double* x, std::vector<Key
   // is consistent, because the snapshot is retaken whenever a ball falls asleep or wakes.
   for (int i = 0; i < n; ++i)
     if (state.active(i)) collider_contacts(i, x, keys);
-  overlapping_pairs(model_, state, x, cache_);
-  for (const auto& [i, j] : cache_.pairs) {
+  overlapping_pairs(model_, index_, state, x, broad_);
+  for (const auto& [i, j] : broad_.pairs) {
     const Key k{std::min(i, j), std::max(i, j)};
     if (depth(k, x) > kTouch) keys.push_back(k);
   }
@@ -129,7 +129,7 @@ void EventDetector::collect(const State& state, const StepSpan& span, const Step
 }
 
 void EventDetector::collider_contacts(int i, const double* x, std::vector<Key>& keys) const {
-  near_colliders(model_, cache_, position(x, i), model_.balls[i].radius, kTouch, [&](int c, const Penetration& pen) {
+  near_colliders(model_, index_, position(x, i), model_.balls[i].radius, kTouch, [&](int c, const Penetration& pen) {
     if (pen.depth > kTouch) keys.emplace_back(i, -1 - c);
   });
 }
@@ -138,7 +138,7 @@ double EventDetector::depth(const Key& key, const double* x) const {
   const auto [i, other] = key;
   const double ri = model_.balls[i].radius;
   if (other >= 0) return ri + model_.balls[other].radius - glm::length(position(x, i) - position(x, other));
-  const auto pen = collider_penetration(model_, cache_, -1 - other, position(x, i), ri, kTouch);
+  const auto pen = collider_penetration(model_, index_, -1 - other, position(x, i), ri, kTouch);
   return pen ? pen->depth : -1.0;
 }
 
@@ -146,13 +146,13 @@ ContactForce EventDetector::force_at(const Key& key, const double* x) const {
   const auto [i, other] = key;
   const Smoothing smoothing{model_.options.friction_sharpness, model_.options.friction_rate_limit};
   if (other >= 0) {
-    const ContactKinematics kin = pair_kinematics(model_, cache_, x, i, other);
-    return kin.depth > 0 ? contact_force(*cache_.ball_ball, kin, smoothing) : ContactForce{};
+    const ContactKinematics kin = pair_kinematics(model_, index_, x, i, other);
+    return kin.depth > 0 ? contact_force(index_.ball_ball(), kin, smoothing) : ContactForce{};
   }
   const double r = model_.balls[i].radius;
-  const auto pen = collider_penetration(model_, cache_, -1 - other, position(x, i), r, 0.0);
+  const auto pen = collider_penetration(model_, index_, -1 - other, position(x, i), r, 0.0);
   if (!pen || pen->depth <= 0) return {};
-  return collider_force(*cache_.collider_material[-1 - other], cache_, i, r, velocity(x, i), spin(x, i), *pen, smoothing);
+  return collider_force(index_.collider_material(-1 - other), index_, i, r, velocity(x, i), spin(x, i), *pen, smoothing);
 }
 
 bool EventDetector::touches(const Key& key, const double* x) const { return depth(key, x) > 0; }
@@ -229,8 +229,8 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
 // is no kink worth a cut: a rolling resistance crossing its band while the ball slides, where its weight is nothing,
 // or a resting contact's terms stirred by round-off.
 bool EventDetector::moves(const Key& k, const FrictionLaw& a, const FrictionLaw& b, double h) const {
-  double mobility = cache_.inv_mass[k.first] + cache_.inv_inertia_r2[k.first];
-  if (k.second >= 0) mobility += cache_.inv_mass[k.second] + cache_.inv_inertia_r2[k.second];
+  double mobility = index_.inv_mass[k.first] + index_.inv_inertia_r2[k.first];
+  if (k.second >= 0) mobility += index_.inv_mass[k.second] + index_.inv_inertia_r2[k.second];
   const double df = glm::length(b.friction - a.friction) + glm::length(b.rolling - a.rolling) +
                     std::abs(b.spin_torque - a.spin_torque) / model_.balls[k.first].radius;
   return df * mobility * h >= kSwitchMoveShare * model_.integrator.abs_tol;
@@ -242,11 +242,11 @@ bool EventDetector::released(const Key& key, const double* x) const {
   if (other >= 0) {
     const Vec3 d = position(x, i) - position(x, other);
     const double dist = glm::length(d), depth = ri + model_.balls[other].radius - dist;
-    return depth <= 0 || normal_force(*cache_.ball_ball, depth, -glm::dot(velocity(x, i) - velocity(x, other), d) / dist) <= 0;
+    return depth <= 0 || normal_force(index_.ball_ball(), depth, -glm::dot(velocity(x, i) - velocity(x, other), d) / dist) <= 0;
   }
-  const auto pen = collider_penetration(model_, cache_, -1 - other, position(x, i), ri, 0.0);
+  const auto pen = collider_penetration(model_, index_, -1 - other, position(x, i), ri, 0.0);
   return !pen || pen->depth <= 0 ||
-         normal_force(*cache_.collider_material[-1 - other], pen->depth, -glm::dot(velocity(x, i), pen->normal)) <= 0;
+         normal_force(index_.collider_material(-1 - other), pen->depth, -glm::dot(velocity(x, i), pen->normal)) <= 0;
 }
 
 double EventDetector::first(const StepSpan& span, const std::vector<ContactKey>& keys, double resolution,
@@ -278,7 +278,7 @@ double EventDetector::time_to_touch(const StepSpan& span, const ContactKey& key)
     if (gap < 0) return 0.0;
     closing = -glm::dot(velocity(x, i) - velocity(x, other), d) / dist;
   } else {
-    const auto pen = collider_penetration(model_, cache_, -1 - other, position(x, i), model_.balls[i].radius);
+    const auto pen = collider_penetration(model_, index_, -1 - other, position(x, i), model_.balls[i].radius);
     if (!pen) return inf;
     gap = -pen->depth;
     if (gap < 0) return 0.0;
@@ -303,7 +303,7 @@ void EventDetector::reset(const State& state) {
     if (const auto at = std::lower_bound(contacts_.begin(), contacts_.end(), k); at == contacts_.end() || *at != k)
       contacts_.insert(at, k);
   motion_.resize(state.ball_count());
-  for (int i = 0; i < state.ball_count(); ++i) motion_[i] = classify(model_, cache_, state, state.x.data(), i);
+  for (int i = 0; i < state.ball_count(); ++i) motion_[i] = classify(model_, index_, state, state.x.data(), i);
 }
 
 void EventDetector::changes(const State& state, const StepSpan& span, const StepContacts& kept,
@@ -380,10 +380,10 @@ void EventDetector::scan(const StepSpan& span, const State& state, const StepCon
   // Motion state changes (a sleeper stays stationary).
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.active(i)) continue;
-    const Motion m1 = classify(model_, cache_, state, span.x1.data(), i);
+    const Motion m1 = classify(model_, index_, state, span.x1.data(), i);
     if (m1 == motion_[i]) continue;
     const Motion m0 = motion_[i];
-    const double t = bisect(span.t0, span.t1, [&](double s) { return classify(model_, cache_, state, ball_at(s, i), i) != m0; });
+    const double t = bisect(span.t0, span.t1, [&](double s) { return classify(model_, index_, state, ball_at(s, i), i) != m0; });
     events.push_back({t, transition_kind(m0, m1), {model_.balls[i].id}});
     motion_[i] = m1;
   }

@@ -16,9 +16,8 @@
 namespace shotlab {
 
 // Motion state of ball i in state vector x: judged relative to its supporting collider (the touching collider
-// whose normal points most upwards) with the model's rest_speed threshold on tangential speed and slip. `cache` is any
-// ContactCache of the model (its collider bounds).
-Motion classify(const Model& model, const ContactCache& cache, const State& state, const double* x, int i);
+// whose normal points most upwards) with the model's rest_speed threshold on tangential speed and slip.
+Motion classify(const Model& model, const ModelIndex& index, const State& state, const double* x, int i);
 
 // A ball that leaves play during a step (fell through a pocket or off the table).
 struct Exit {
@@ -32,7 +31,7 @@ inline double switch_resolution(double step) { return std::max(kTimeResolution, 
 
 class EventDetector {
  public:
-  explicit EventDetector(const Model& model) : model_(model), cache_(model) {}
+  EventDetector(const Model& model, const ModelIndex& index) : model_(model), index_(index) {}
   // Snapshot of what holds in `state` (call at the start and after any discontinuity); the contacts begun at zero
   // depth before it that still touch stay on.
   void reset(const State& state);
@@ -99,7 +98,8 @@ class EventDetector {
   const double* balls_at(const StepSpan& span, double t, const Key& key) const;
 
   const Model& model_;
-  ContactCache cache_;
+  const ModelIndex& index_;
+  BroadPhase broad_;
   std::vector<Key> contacts_;
   std::vector<Key> now_, begun_, ended_;  // changes()' results, kept to spare allocations per step
   State memo_;                 // the flags and state of the last collect (its time unused) ...

@@ -9,7 +9,7 @@
 namespace shotlab {
 
 std::optional<FreePath> free_path(const Model& model, const State& state, const double* x, int i,
-                                  const ContactCache& cache, double horizon) {
+                                  const ModelIndex& index, double horizon) {
   if (!state.in_play[i]) return std::nullopt;
   if (state.sleeping(i)) return FreePath{position(x, i), Vec3{0.0}, 0.0, 0.0, 0.0, std::numeric_limits<double>::infinity()};
   if (!state.rolling(i) && !state.sliding(i)) return std::nullopt;
@@ -20,8 +20,8 @@ std::optional<FreePath> free_path(const Model& model, const State& state, const 
   const double jump = 2.0 / 7.0 * entry_slip(model) + kStopSpeed + (model.options.sleep_time > 0 ? rest : 0.0);
   // Up to free_for the ball may come contact_margin into a collider (collider_contact_time), which pushes it back by
   // at most that much.
-  return FreePath{position(x, i), velocity(x, i), free_acceleration(state, cache, i), jump,
-                  model.options.contact_margin, std::min(horizon, collider_contact_time(model, state, x, i, horizon, cache))};
+  return FreePath{position(x, i), velocity(x, i), free_acceleration(state, index, i), jump,
+                  model.options.contact_margin, std::min(horizon, collider_contact_time(model, index, state, x, i, horizon))};
 }
 
 double path_meeting_time(const FreePath& a, const FreePath& b, double reach, double closing) {

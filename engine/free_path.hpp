@@ -26,7 +26,7 @@ struct FreePath {
 // The free path of ball i at (state, x), if it is asleep or in the rolling or sliding regime (the caller makes sure
 // that nothing else in its island can touch it), looked at for `horizon` seconds at most: free_for <= horizon.
 std::optional<FreePath> free_path(const Model& model, const State& state, const double* x, int i,
-                                  const ContactCache& cache, double horizon);
+                                  const ModelIndex& index, double horizon);
 
 // s: a lower bound on when two balls on free paths come within `reach` (m) of each other, given that neither can
 // close in faster than `closing` (m/s, the sum of their speed bounds) once its path ends: the paths are followed to

@@ -61,17 +61,17 @@ State sub_state(const State& world, const std::vector<int>& balls) {
 
 }  // namespace
 
-Island::Island(const Model& world, const State& world_state, std::vector<int> balls, double first_step,
-               double energy_bound, double onset_factor)
+Island::Island(const Model& world, const ModelIndex& world_index, const State& world_state, std::vector<int> balls,
+               double first_step, double energy_bound, double onset_factor)
     : balls_(std::move(balls)),
       model_(sub_model(world, balls_)),
+      index_(world_index, model_),
       integ_(sub_state(world_state, balls_)),
-      dynamics_(model_, integ_),
+      dynamics_(model_, index_, integ_),
       onset_growth_(std::pow(onset_factor, 0.2)),
       stepper_(make_stepper(model_.integrator, onset_factor, radii(model_))),
-      detector_(model_),
-      regimes_(model_),
-      cap_cache_(model_),
+      detector_(model_, index_),
+      regimes_(model_, index_),
       dt_next_(is_adaptive(model_.integrator.method) ? first_step : model_.integrator.fixed_step),
       energy_bound_(energy_bound) {
   span_.t0 = span_.t1 = integ_.time;
@@ -85,7 +85,7 @@ double Island::energy() {
   if (energy_steps_ != stats_.steps) {
     energy_state_ = integ_;
     span_.interpolate(span_.t1, energy_state_.x);
-    energy_ = shotlab::energy(model_, energy_state_, cap_cache_, true).total();
+    energy_ = shotlab::energy(model_, index_, energy_state_, cap_broad_, true).total();
     energy_steps_ = stats_.steps;
   }
   return energy_;
@@ -118,7 +118,7 @@ void Island::write(double t, State& world) {
 std::optional<FreePath> Island::free_path(double t, double horizon) {
   if (balls_.size() != 1) return std::nullopt;
   span_.interpolate(t, scratch_);
-  return shotlab::free_path(model_, flags_at(t), scratch_.data(), 0, cap_cache_, horizon);
+  return shotlab::free_path(model_, flags_at(t), scratch_.data(), 0, index_, horizon);
 }
 
 bool Island::rewind(double t) {
@@ -188,19 +188,19 @@ double Island::plan(double limit, bool& constant) {
   if (!adaptive) return dt;
   continuing_ = span_.swings;
   for (Swing& s : continuing_) s.phase += s.omega * (span_.t1 - span_.t0);  // as apply() reached the step's end
-  const double band = time_to_band_edge(model_, integ_, cap_cache_, span_.x1.data(), &constant, &trial_.tails,
+  const double band = time_to_band_edge(model_, integ_, index_, span_.x1.data(), &constant, &trial_.tails,
                                         &trial_.swings, &continuing_);
   if (!constant) trial_.tails.clear(), trial_.swings.clear();
   const double horizon = constant ? std::min(limit - span_.t1, kLoneHorizon) : dt;
-  return std::min({horizon, band, time_to_possible_contact(model_, integ_, span_.x1.data(), horizon, cap_cache_, &plan_)});
+  return std::min({horizon, band, time_to_possible_contact(model_, index_, integ_, span_.x1.data(), horizon, cap_broad_, &plan_)});
 }
 
 // The changing contacts keep their law through the step (StepContacts). A contact left out has no force at the step's
 // start, nor has an unclamped one a different force there, so f there stays as it was, unless a contact left out of
 // the last step touches now or one unclamped in it has stopped pushing (it was cut there).
 void Island::freeze_laws() {
-  dynamics_.swap_step(plan_);  // plan_ now holds the last step's lists
-  const StepContacts &now = dynamics_.step(), &last = plan_;
+  dynamics_.swap_plan(plan_);  // plan_ now holds the last step's lists
+  const StepContacts &now = dynamics_.plan(), &last = plan_;
   const bool changed = !std::includes(now.separated.begin(), now.separated.end(), last.separated.begin(), last.separated.end()) ||
                        !std::includes(now.pushing.begin(), now.pushing.end(), last.pushing.begin(), last.pushing.end());
   f_start_ = span_.f1;
@@ -215,8 +215,8 @@ void Island::freeze_laws() {
 double Island::closed_form_to(double t) {
   aim_ = std::numeric_limits<double>::infinity();
   closed_form_step(t);
-  const double touch = std::min(detector_.first_contact_change(trial_, integ_, dynamics_.step(), nullptr).begin,
-                                detector_.first_touch(trial_, dynamics_.step().separated));
+  const double touch = std::min(detector_.first_contact_change(trial_, integ_, dynamics_.plan(), nullptr).begin,
+                                detector_.first_touch(trial_, dynamics_.plan().separated));
   if (touch < t - kOnsetResolution) {
     t = touch;
     closed_form_step(t);
@@ -263,7 +263,7 @@ void Island::commit(double t) {
 // `recorded`: an integrated step's last evaluation recorded the contacts at its end (end_record_, sorted).
 void Island::settle(double t, bool recorded) {
   std::vector<Exit> exits;
-  detector_.scan(span_, integ_, dynamics_.step(), recorded ? &end_record_ : nullptr, events_, exits);
+  detector_.scan(span_, integ_, dynamics_.plan(), recorded ? &end_record_ : nullptr, events_, exits);
   StateVector at;
   for (const Exit& e : exits) {
     span_.interpolate(e.time, at);

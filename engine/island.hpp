@@ -32,8 +32,8 @@ class Island {
   // (s) is the adaptive methods' first trial step; `energy_bound` (J) bounds what any of its balls can ever gain
   // (partition.hpp: an island touches nothing else, so its energy cannot grow). `onset_factor`: the world's
   // onset_factor (stepper.hpp), worked out once for all islands.
-  Island(const Model& world, const State& world_state, std::vector<int> balls, double first_step, double energy_bound,
-         double onset_factor);
+  Island(const Model& world, const ModelIndex& world_index, const State& world_state, std::vector<int> balls,
+         double first_step, double energy_bound, double onset_factor);
   Island(const Island&) = delete;
   Island& operator=(const Island&) = delete;
 
@@ -119,6 +119,7 @@ class Island {
 
   std::vector<int> balls_;
   Model model_;
+  ModelIndex index_;  // of model_, shared by the dynamics, the detector, the regimes and the step cap
   State integ_;  // integrator state at span_.t1 (its in_play is what the right-hand side sees)
   State start_;  // the regime flags at span_.t0 (its x unused)
   Dynamics dynamics_;
@@ -126,7 +127,7 @@ class Island {
   std::unique_ptr<Stepper> stepper_;
   EventDetector detector_;
   Regimes regimes_;
-  ContactCache cap_cache_;  // broad phase of the step cap
+  BroadPhase cap_broad_;  // broad phase of the step cap
   StepContacts plan_;       // the step's contact lists as the cap finds them (then the last step's, swapped out)
   StateVector f_start_;     // f at the step's start
   std::vector<ContactRecord> start_record_, end_record_;  // the contacts there and at a trial's end (Dynamics::recorded),

@@ -39,7 +39,7 @@ void Partitioner::join_sleeper(int i, int sleeper, const State& state) {
   for (size_t k = 0; k < group.size(); ++k) {
     const int s = group[k];
     join(i, s);
-    sleepers_near(model_, x, cache_, s, kTouch, [&](int j) {
+    sleepers_near(model_, index_, x, broad_, s, kTouch, [&](int j) {
       if (reached_[j]) return;
       const double gap = glm::length(position(x, s) - position(x, j)) - model_.balls[s].radius - model_.balls[j].radius;
       if (gap < kTouch) {
@@ -88,15 +88,15 @@ void Partitioner::add_energies(const State& state, const std::vector<int>& awake
     energy_[i] = 0.5 * b.mass * glm::dot(v, v) + 0.5 * b.inertia() * glm::dot(w, w);
     if (model_.balls_leave_below_bed) energy_[i] += b.mass * g * std::max(0.0, x[9 * i + 1] - b.radius);
     if (!state.rolling(i) && !state.sliding(i))  // the bed contact of a rolling or sliding ball is its static sink
-      near_colliders(model_, cache_, position(x, i), b.radius, 0.0, [&](int c, const Penetration& pen) {
-        if (pen.depth > 0) energy_[i] += elastic_energy(*cache_.collider_material[c], pen.depth);
+      near_colliders(model_, index_, position(x, i), b.radius, 0.0, [&](int c, const Penetration& pen) {
+        if (pen.depth > 0) energy_[i] += elastic_energy(index_.collider_material(c), pen.depth);
       });
   }
-  sweep_pairs(model_, state, x, cache_, 0.0, false, [&](int i, int j) {
+  sweep_pairs(model_, index_, state, x, broad_, 0.0, false, [&](int i, int j) {
     const double depth = model_.balls[i].radius + model_.balls[j].radius - glm::length(position(x, i) - position(x, j));
     if (depth <= 0) return;
     for (int k : {i, j})  // a sleeper's share would stay behind in its entry: the awake one holds the pair's
-      if (!state.sleeping(k)) energy_[k] += elastic_energy(*cache_.ball_ball, depth);
+      if (!state.sleeping(k)) energy_[k] += elastic_energy(index_.ball_ball(), depth);
   }, &awake);
 }
 
@@ -119,11 +119,11 @@ void Partitioner::near_pairs(const State& state, const std::vector<int>& awake, 
         glm::length(position(x, i) - position(x, j)) - model_.balls[i].radius - model_.balls[j].radius - margin;
     fn(i, j, gap, speed(state, i) + speed(state, j));
   };
-  sweep_pairs(model_, state, x, cache_, reach, false, visit, &awake);
+  sweep_pairs(model_, index_, state, x, broad_, reach, false, visit, &awake);
   // sweep_pairs leaves out pairs of sleepers: those of a reached one matter.
   for (size_t k = 0; k < woken_.size(); ++k) {
     const int s = woken_[k];
-    sleepers_near(model_, x, cache_, s, reach, [&](int j) { visit(s, j); });
+    sleepers_near(model_, index_, x, broad_, s, reach, [&](int j) { visit(s, j); });
   }
 }
 
@@ -181,7 +181,7 @@ const std::optional<FreePath>& Partitioner::path(const State& state, const Parti
     path_found_[i] = 1;
     const int s = slot_[root(i)];
     const bool lone = s >= 0 ? p.islands[s].size() == 1 && !reached_[i] : state.sleeping(i);
-    path_[i] = lone ? free_path(model_, state, state.x.data(), i, cache_, kLoneHorizon) : std::nullopt;
+    path_[i] = lone ? free_path(model_, state, state.x.data(), i, index_, kLoneHorizon) : std::nullopt;
     if (s < 0) found_.push_back(i);  // a sleeper: not among the members reset below
   }
   return path_[i];

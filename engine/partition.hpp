@@ -36,7 +36,7 @@ struct Partition {
 
 class Partitioner {
  public:
-  explicit Partitioner(const Model& model) : model_(model), cache_(model) {}
+  Partitioner(const Model& model, const ModelIndex& index) : model_(model), index_(index) {}
   // Islands of the awake balls in play, `awake` (with the sleepers they may reach); balls out of play and sleepers
   // nothing can reach are in none.
   Partition operator()(const State& state, const std::vector<int>& awake);
@@ -61,7 +61,8 @@ class Partitioner {
   const std::optional<FreePath>& path(const State& state, const Partition& p, int i);
 
   const Model& model_;
-  ContactCache cache_;
+  const ModelIndex& index_;
+  BroadPhase broad_;
   std::vector<int> parent_;       // union-find over balls
   std::vector<double> energy_;    // J, at each root: the island's energy
   std::vector<uint8_t> reached_;  // sleepers whose frozen group has joined an island ...

@@ -25,7 +25,7 @@ double static_sink(const BallSpec& b, const ContactMaterial& m, double g) {
 }
 
 // The flat, horizontal bed a ball can roll on in closed form: a plane (bounded or not) whose unit normal (from the
-// contact cache, 0 for other shapes) is along -gravity; `point` is a point of it.
+// contact index, 0 for other shapes) is along -gravity; `point` is a point of it.
 bool flat_bed(const Collider& c, const Vec3& normal, const Vec3& gravity, Vec3& point) {
   if (const auto* s = std::get_if<Plane>(&c.shape)) point = s->point;
   else if (const auto* s = std::get_if<BoundedPlane>(&c.shape)) point = s->origin;
@@ -46,19 +46,19 @@ double time_to_edge(const Smoothing& s, double q, double strength, double mobili
 // slip already at the entry, rolling resistance inside its own band before the end, or v turning so far (by
 // s q0 |u^ x d| / |v| at most) that what the closed form leaves out, a_r T times the turn squared in the velocity and
 // a_r T^2 / 2 times the turn in the position, comes over kSnapShare abs_tol.
-std::optional<std::pair<BandTail, double>> slip_tail(const Model& model, const ContactCache& cache, const Smoothing& smooth,
+std::optional<std::pair<BandTail, double>> slip_tail(const Model& model, const ModelIndex& index, const Smoothing& smooth,
                                                      const ContactMaterial& m, int i, const Vec3& n, const Vec3& p,
                                                      const Vec3& v, const Vec3& u) {
   const double q0 = glm::length(u), entry = entry_slip(model);
   if (!model.options.rolling_regime || q0 <= entry) return std::nullopt;
   const double weight = model.balls[i].mass * glm::length(model.options.gravity);
-  const double mobility = cache.inv_mass[i] + cache.inv_inertia_r2[i], share = cache.inv_mass[i] / mobility;
+  const double mobility = index.inv_mass[i] + index.inv_inertia_r2[i], share = index.inv_mass[i] / mobility;
   const BandDecay decay{q0, sharpness_for(smooth, m.friction * weight, mobility), m.friction * weight * mobility};
   const double until = decay.time_to(kDeadTail);
-  const double a_r = m.rolling_resistance * weight * cache.inv_mass[i], speed = glm::length(v) - share * q0;
+  const double a_r = m.rolling_resistance * weight * index.inv_mass[i], speed = glm::length(v) - share * q0;
   const Vec3 dir = u / q0;
   if (a_r > 0) {
-    const double band = 1.0 / sharpness_for(smooth, m.rolling_resistance * weight, cache.inv_mass[i]);
+    const double band = 1.0 / sharpness_for(smooth, m.rolling_resistance * weight, index.inv_mass[i]);
     if (!(speed - a_r * until > band)) return std::nullopt;
     const double turn = share * q0 * glm::length(glm::cross(dir, v / glm::length(v))) / speed;
     if (a_r * until * std::max(turn * turn, 0.5 * until * turn) > kSnapShare * model.integrator.abs_tol) return std::nullopt;
@@ -77,10 +77,10 @@ void add_hop_rest(StateVector& x, int i, double vn, double offset, double g, con
 }
 }  // namespace
 
-Regimes::Regimes(const Model& model) : model_(model), cache_(model) {
+Regimes::Regimes(const Model& model, const ModelIndex& index) : model_(model), index_(index) {
   const double g = glm::length(model.options.gravity);
   for (const BallSpec& b : model.balls)
-    for (int c : cache_.plane_like) sink_.push_back(static_sink(b, *cache_.collider_material[c], g));
+    for (int c : index_.plane_like) sink_.push_back(static_sink(b, index_.collider_material(c), g));
 }
 
 namespace {
@@ -89,7 +89,7 @@ namespace {
 // every term is outside its band or follows a tail's closed form (outside).
 struct BandScan {
   const Model& model;
-  const ContactCache& cache;
+  const ModelIndex& index;
   const double* x;
   std::vector<BandTail>* tails;
   Smoothing smooth;
@@ -112,24 +112,24 @@ struct BandScan {
 // Inside its band the spin about the normal, and a rolling ball's speed, follow their tails' closed forms where the
 // caller takes tails (band_tail.hpp). A speed tail lasts until the stop cut (settle_rolling).
 void BandScan::ball(const State& state, int i, int bed) {
-  const ContactMaterial& m = *cache.collider_material[bed];
-  const Vec3& n = cache.plane_normal[bed];
+  const ContactMaterial& m = index.collider_material(bed);
+  const Vec3& n = index.plane_normal[bed];
   const double weight = model.balls[i].mass * g, r = model.balls[i].radius;
   const Vec3 v = velocity(x, i), w = spin(x, i);
   const double spin_strength = m.spin_friction * weight, wn = glm::dot(w, n);
-  if (m.spin_friction > 0 && edge(r * std::abs(wn), spin_strength, cache.inv_inertia_r2[i], true)) {
+  if (m.spin_friction > 0 && edge(r * std::abs(wn), spin_strength, index.inv_inertia_r2[i], true)) {
     if (tails)
       tails->push_back({BandTail::Kind::Spin, i, n, Vec3{0.0}, Vec3{0.0}, r,
-                        {r * wn, sharpness_for(smooth, spin_strength, cache.inv_inertia_r2[i]),
-                         spin_strength * cache.inv_inertia_r2[i]}});
+                        {r * wn, sharpness_for(smooth, spin_strength, index.inv_inertia_r2[i]),
+                         spin_strength * index.inv_inertia_r2[i]}});
     else
       outside = false;
   }
   if (state.rolling(i)) {  // the speed, against rolling resistance
     const double strength = m.rolling_resistance * weight, speed = glm::length(v);
-    if (m.rolling_resistance > 0 && edge(speed, strength, cache.inv_mass[i], true)) {
+    if (m.rolling_resistance > 0 && edge(speed, strength, index.inv_mass[i], true)) {
       if (tails && speed > kStopSpeed) {
-        const BandDecay decay{speed, sharpness_for(smooth, strength, cache.inv_mass[i]), strength * cache.inv_mass[i]};
+        const BandDecay decay{speed, sharpness_for(smooth, strength, index.inv_mass[i]), strength * index.inv_mass[i]};
         tails->push_back({BandTail::Kind::Speed, i, n, v / speed, position(x, i), r, decay});
         best = std::min(best, decay.time_to(0.5 * kStopSpeed));
       } else {
@@ -139,8 +139,8 @@ void BandScan::ball(const State& state, int i, int bed) {
   } else if (m.friction > 0) {  // the slip, against sliding friction (rolling resistance acts only inside its band)
     Vec3 u = v + r * glm::cross(n, w);
     u -= glm::dot(u, n) * n;
-    if (edge(glm::length(u), m.friction * weight, cache.inv_mass[i] + cache.inv_inertia_r2[i], false)) {
-      const auto tail = tails ? slip_tail(model, cache, smooth, m, i, n, position(x, i), v, u) : std::nullopt;
+    if (edge(glm::length(u), m.friction * weight, index.inv_mass[i] + index.inv_inertia_r2[i], false)) {
+      const auto tail = tails ? slip_tail(model, index, smooth, m, i, n, position(x, i), v, u) : std::nullopt;
       if (tail) tails->push_back(tail->first), best = std::min(best, tail->second);
       else outside = false;
     }
@@ -150,7 +150,7 @@ void BandScan::ball(const State& state, int i, int bed) {
 }
 
 // The swings of the balls in the full model, each alone on its rod; false at the first that is not.
-bool add_swings(const Model& model, const State& state, const ContactCache& cache, const double* x,
+bool add_swings(const Model& model, const State& state, const ModelIndex& index, const double* x,
                 std::vector<Swing>& swings, const std::vector<Swing>* continuing) {
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.active(i) || state.rolling(i) || state.sliding(i)) continue;
@@ -158,7 +158,7 @@ bool add_swings(const Model& model, const State& state, const ContactCache& cach
     if (continuing)
       for (const Swing& s : *continuing)
         if (s.ball == i) last = &s;
-    const auto swing = swing_of(model, state, cache, x, i, last);
+    const auto swing = swing_of(model, state, index, x, i, last);
     if (!swing) return false;
     swings.push_back(*swing);
   }
@@ -167,10 +167,10 @@ bool add_swings(const Model& model, const State& state, const ContactCache& cach
 
 }  // namespace
 
-double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
+double time_to_band_edge(const Model& model, const State& state, const ModelIndex& index, const double* x,
                          bool* constant, std::vector<BandTail>* tails, std::vector<Swing>* swings,
                          const std::vector<Swing>* continuing) {
-  BandScan scan{model, cache, x, tails, {model.options.friction_sharpness, model.options.friction_rate_limit},
+  BandScan scan{model, index, x, tails, {model.options.friction_sharpness, model.options.friction_rate_limit},
                 glm::length(model.options.gravity)};
   if (tails) tails->clear();
   if (swings) swings->clear();
@@ -184,7 +184,7 @@ double time_to_band_edge(const Model& model, const State& state, const ContactCa
   // The swings last: worked out only where nothing else keeps the island from its closed form.
   bool outside = scan.outside;
   if (full && !(swings && !model.rods.empty())) outside = false;
-  if (full && outside) outside = add_swings(model, state, cache, x, *swings, continuing);
+  if (full && outside) outside = add_swings(model, state, index, x, *swings, continuing);
   if (constant) *constant = outside;
   return scan.best;
 }
@@ -205,10 +205,10 @@ int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& heig
     if (rod.ball == i) return -1;
   int support = -1;
   bool other = false;  // something other than one flat bed is within the margin
-  near_colliders(model_, cache_, p, r, margin, [&](int c, const Penetration& pen) {
+  near_colliders(model_, index_, p, r, margin, [&](int c, const Penetration& pen) {
     if (other || pen.depth <= -margin) return;
     Vec3 point;
-    normal = cache_.plane_normal[c];
+    normal = index_.plane_normal[c];
     if (support >= 0 || !flat_bed(model_.colliders[c], normal, model_.options.gravity, point) ||
         glm::dot(pen.normal, normal) < 1.0 - 1e-12) {  // over a pocket the rim, not the bed, holds the ball
       other = true;
@@ -232,13 +232,13 @@ int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& heig
 // m/s: the bed's vertical motion of ball i (normal speed vn, height offset from the static sink) as the speed of its
 // amplitude in the linearised bed contact (stiffness e m g / sink, so omega^2 = e g / sink).
 double Regimes::hop(int i, int bed, double vn, double offset) const {
-  const double omega2 = cache_.collider_material[bed]->exponent * glm::length(model_.options.gravity) / sink(i, bed);
+  const double omega2 = index_.collider_material(bed).exponent * glm::length(model_.options.gravity) / sink(i, bed);
   return std::hypot(vn, std::sqrt(omega2) * offset);
 }
 
 bool Regimes::settles(const StateVector& x, int i, int bed, const Vec3& n, double vn, double offset) const {
   const BallSpec& b = model_.balls[i];
-  const ContactMaterial& m = *cache_.collider_material[bed];
+  const ContactMaterial& m = index_.collider_material(bed);
   const double g = glm::length(model_.options.gravity), sink = this->sink(i, bed);
   const double omega2 = m.exponent * g / sink;
   const double hop = this->hop(i, bed, vn, offset);
@@ -253,13 +253,13 @@ bool Regimes::settles(const StateVector& x, int i, int bed, const Vec3& n, doubl
   const Smoothing smooth{model_.options.friction_sharpness, model_.options.friction_rate_limit};
   const double saturated_for =
       m.friction > 0 ? std::max(0.0, time_to_edge(smooth, glm::length(u), m.friction * (b.mass * g),
-                                                  cache_.inv_mass[i] + cache_.inv_inertia_r2[i]))
+                                                  index_.inv_mass[i] + index_.inv_inertia_r2[i]))
                      : 0.0;
   return hop * std::exp(-slowest * saturated_for) < kSnapShare * model_.integrator.abs_tol * slowest / mu;
 }
 
 double Regimes::sink(int i, int plane) const {
-  const auto& planes = cache_.plane_like;
+  const auto& planes = index_.plane_like;
   return sink_[i * planes.size() + (std::find(planes.begin(), planes.end(), plane) - planes.begin())];
 }
 
@@ -273,8 +273,8 @@ bool Regimes::update(State& state, StateVector& x, double dt) {
   // Neighbour lists within contact_margin (sleep groups use only the frozen-touching ones).
   touching_.resize(n);
   for (auto& list : touching_) list.clear();  // keeps each list's buffer: this runs after every step
-  overlapping_pairs(model_, state, x.data(), cache_, std::max(model_.options.contact_margin, kTouch));
-  for (const auto& [i, j] : cache_.pairs) {
+  overlapping_pairs(model_, index_, state, x.data(), broad_, std::max(model_.options.contact_margin, kTouch));
+  for (const auto& [i, j] : broad_.pairs) {
     touching_[i].push_back(j);
     touching_[j].push_back(i);
   }
@@ -326,7 +326,7 @@ bool Regimes::update_rolling(State& state, StateVector& x) {
       state.rolling_on[i] = bed;
       state.sliding_on[i] = -1;
       double dxdt[kBallDofs];
-      rolling_derivative(model_, state, cache_, x.data(), i, dxdt);
+      rolling_derivative(model_, index_, state, x.data(), i, dxdt);
       add_hop_rest(x, i, vn, offset, glm::length(model_.options.gravity), dxdt);
       changed = true;
     }
@@ -364,7 +364,7 @@ bool Regimes::update_sliding(State& state, StateVector& x) {
     set_velocity(x, i, v - vn * n);
     state.sliding_on[i] = bed;
     double dxdt[kBallDofs];
-    sliding_derivative(model_, state, cache_, x.data(), i, dxdt);
+    sliding_derivative(model_, index_, state, x.data(), i, dxdt);
     add_hop_rest(x, i, vn, offset, g, dxdt);
     changed = true;
   }

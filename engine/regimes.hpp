@@ -22,7 +22,7 @@ namespace shotlab {
 
 class Regimes {
  public:
-  explicit Regimes(const Model& model);
+  Regimes(const Model& model, const ModelIndex& index);
   // After an accepted step of dt seconds ending at state x: updates state.asleep, state.rolling_on, state.sliding_on
   // and state.still_for, zeroes the velocities of new sleepers, snaps new rollers onto the rolling constraint and new
   // sliders onto the bed.
@@ -56,11 +56,12 @@ class Regimes {
   bool settles(const StateVector& x, int i, int bed, const Vec3& n, double vn, double offset) const;
 
   const Model& model_;
-  ContactCache cache_;
+  const ModelIndex& index_;
+  BroadPhase broad_;
   std::vector<std::vector<int>> touching_;  // neighbours (frozen-touching included), rebuilt each update
   std::vector<uint8_t> resting_, seen_;  // update_sleep's work lists, kept to spare an allocation per step
   std::vector<int> stack_, group_;
-  std::vector<double> sink_;  // m: each ball's static sink into each plane-like collider (ball-major, cache_.plane_like)
+  std::vector<double> sink_;  // m: each ball's static sink into each plane-like collider (ball-major, index_.plane_like)
   struct Support {
     int collider = -1;  // only_on_bed's answer, with its normal and height
     Vec3 normal{0.0};
@@ -85,7 +86,7 @@ double entry_slip(const Model& model);
 // stop cut, the rolling entry) counts as an edge. With `swings`, neither does a ball in the full model that swings
 // alone on its rod (swing_of): it is listed there, to follow the pendulum's closed form (`continuing`: the swings of
 // the step that ended at x, their phases moved on to its end).
-double time_to_band_edge(const Model& model, const State& state, const ContactCache& cache, const double* x,
+double time_to_band_edge(const Model& model, const State& state, const ModelIndex& index, const double* x,
                          bool* constant = nullptr, std::vector<BandTail>* tails = nullptr,
                          std::vector<Swing>* swings = nullptr, const std::vector<Swing>* continuing = nullptr);
 

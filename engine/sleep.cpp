@@ -9,7 +9,7 @@ namespace shotlab {
 bool Regimes::at_rest(const State& state, const StateVector& x, int i) const {
   const double eps = model_.options.rest_speed, r = model_.balls[i].radius;
   return glm::length(velocity(x, i)) < eps && r * glm::length(spin(x, i)) < eps &&
-         ((classify(model_, cache_, state, x.data(), i) == Motion::Stationary && !unbalanced(x, i)) ||
+         ((classify(model_, index_, state, x.data(), i) == Motion::Stationary && !unbalanced(x, i)) ||
           held_still(x, i));
 }
 
@@ -23,10 +23,10 @@ bool Regimes::unbalanced(const StateVector& x, int i) const {
   for (int j : touching_[i]) {
     const Vec3 d = p - position(x, j);
     const double len = glm::length(d);
-    if (len > 0) push(*cache_.ball_ball, b.radius + model_.balls[j].radius - len, d / len);
+    if (len > 0) push(index_.ball_ball(), b.radius + model_.balls[j].radius - len, d / len);
   }
-  near_colliders(model_, cache_, p, b.radius, 0.0,
-                 [&](int c, const Penetration& pen) { push(*cache_.collider_material[c], pen.depth, pen.normal); });
+  near_colliders(model_, index_, p, b.radius, 0.0,
+                 [&](int c, const Penetration& pen) { push(index_.collider_material(c), pen.depth, pen.normal); });
   return glm::length(force) / b.mass * model_.options.sleep_time >= model_.options.rest_speed;
 }
 
@@ -43,7 +43,7 @@ bool Regimes::held_still(const StateVector& x, int i) const {
   for (int j : touching_[i])
     if (glm::length(p - position(x, j)) - r - model_.balls[j].radius < 0) return false;
   bool pressed = false;
-  near_colliders(model_, cache_, p, r, 0.0, [&](int, const Penetration& pen) { pressed = pressed || pen.depth > 0; });
+  near_colliders(model_, index_, p, r, 0.0, [&](int, const Penetration& pen) { pressed = pressed || pen.depth > 0; });
   if (pressed) return false;
   // What is left at zero speed: gravity, less what the rod (dynamics.cpp) takes along d^ (plus its length
   // correction, nil at the rod's length). Hanging below the anchor or level with it (g.d^ >= 0: above it the balance
@@ -102,7 +102,7 @@ bool Regimes::wake_touched(State& state, const StateVector& x) {
     for (int j : touching_[i])
       if (!resting_[i]) wake(j);
     // touching_ leaves out sleeper pairs (the broad phase skips them); look those up directly.
-    sleepers_near(model_, x.data(), cache_, i, kTouch, [&](int j) {
+    sleepers_near(model_, index_, x.data(), broad_, i, kTouch, [&](int j) {
       if (frozen_touch(x, i, j)) wake(j);
     });
   }

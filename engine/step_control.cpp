@@ -22,7 +22,7 @@ bool by_key(const ContactRecord& a, const ContactRecord& b) { return a.key < b.k
 // comes to `tolerance` (m/s): that error is coefficient k h^(e+1) (stepper.hpp, onset_error_coefficient) with
 // k = onset_strength.
 double Island::onset_step(double tolerance) {
-  const StepContacts& s = dynamics_.step();
+  const StepContacts& s = dynamics_.plan();
   if (s.onset_exponent != onset_exponent_) {
     onset_exponent_ = s.onset_exponent;
     onset_coefficient_ = onset_error_coefficient(model_.integrator.method, onset_exponent_);
@@ -55,9 +55,9 @@ bool Island::integrate(double dt, double limit, double& t) {
   // A step from an onset starts where the onset's own error is 0.9 of the tolerance at the closing speed, and is held
   // to the strict tolerance where that error can matter, over a tenth of abs_tol (stepper.hpp).
   bool from_onset = false;
-  if (dynamics_.step().onset) {
+  if (dynamics_.plan().onset) {
     const IntegratorOptions& o = model_.integrator;
-    dt = std::min(dt, onset_step(0.9 * (o.abs_tol + o.rel_tol * dynamics_.step().onset_speed)));
+    dt = std::min(dt, onset_step(0.9 * (o.abs_tol + o.rel_tol * dynamics_.plan().onset_speed)));
     from_onset = dt > onset_step(0.1 * o.abs_tol);
   }
   Trials trials;
@@ -97,7 +97,7 @@ bool Island::integrate(double dt, double limit, double& t) {
 bool Island::cut_at_change(Trials& tr, double t, double& dt) {
   if (tr.retries == 0) tr.passed = tr.tried;
   trial_.t1 = t;
-  const StepContacts& kept = dynamics_.step();
+  const StepContacts& kept = dynamics_.plan();
   end_record_ = dynamics_.recorded();
   std::sort(end_record_.begin(), end_record_.end(), by_key);
   const auto change = detector_.first_contact_change(trial_, integ_, kept, &end_record_);
@@ -118,7 +118,7 @@ bool Island::cut_at_change(Trials& tr, double t, double& dt) {
   if (tr.retries == kMaxRedos) {
     if (kept.separated.empty() && kept.pushing.empty()) return false;
     StepContacts plain;  // still a change inside: the step again with the plain law, its kinks left to the control
-    dynamics_.swap_step(plain);
+    dynamics_.swap_plan(plain);
     tr.plain = true;
     dt = tr.tried;
     return true;

@@ -47,9 +47,9 @@ void Swing::apply(double h, double* b) const {
   set_velocity(b, 0, (length * 2.0 * modulus * omega * cn) * (c * across - s * down));
 }
 
-std::optional<Swing> swing_of(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+std::optional<Swing> swing_of(const Model& model, const State& state, const ModelIndex& index, const double* x, int i,
                               const Swing* last) {
-  if (!model.options.swing_regime || cache.gravity <= 0) return std::nullopt;
+  if (!model.options.swing_regime || index.gravity <= 0) return std::nullopt;
   const Rod* rod = nullptr;
   for (const Rod& r : model.rods)
     if (r.ball == i) {
@@ -65,7 +65,7 @@ std::optional<Swing> swing_of(const Model& model, const State& state, const Cont
     if (j != i && state.in_play[j] && glm::length(p - position(x, j)) - r - model.balls[j].radius < margin)
       return std::nullopt;
   bool near = false;
-  near_colliders(model, cache, p, r, margin, [&](int, const Penetration&) { near = true; });
+  near_colliders(model, index, p, r, margin, [&](int, const Penetration&) { near = true; });
   if (near) return std::nullopt;
   if (last) {  // bit for bit where the last step's closed form put it (closed_form_step): nothing changed it since
     double b[kBallDofs];
@@ -75,7 +75,7 @@ std::optional<Swing> swing_of(const Model& model, const State& state, const Cont
   // On the rod, moving across it and in the plane through it and ĝ, to within what a snap may move it (the
   // out-of-plane speed over the longest closed-form step, kLoneHorizon).
   const double snap = kSnapShare * model.integrator.abs_tol;
-  const Vec3 d = p - rod->anchor, g = model.options.gravity / cache.gravity;
+  const Vec3 d = p - rod->anchor, g = model.options.gravity / index.gravity;
   const double len = glm::length(d);
   if (len <= 0 || std::abs(len - rod->length) > snap) return std::nullopt;
   const Vec3 dh = d / len;
@@ -89,7 +89,7 @@ std::optional<Swing> swing_of(const Model& model, const State& state, const Cont
   // cos(θ/2) = sqrt((1 + cos θ) / 2), accurate at small angles where 1 - cos θ would not be.
   const double cos_t = glm::dot(dh, g), sin_t = glm::dot(dh, e);
   if (cos_t <= 0) return std::nullopt;  // level with the anchor or above it
-  const double omega = std::sqrt(cache.gravity / rod->length);
+  const double omega = std::sqrt(index.gravity / rod->length);
   const double rate = glm::dot(v, cos_t * e - sin_t * g) / rod->length;  // θ', rad/s
   const double s0 = sin_t / std::sqrt(2.0 * (1.0 + cos_t)), c0 = rate / (2.0 * omega);
   const double k = std::sqrt(s0 * s0 + c0 * c0);

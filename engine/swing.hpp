@@ -26,7 +26,7 @@
 namespace shotlab {
 
 struct Model;
-struct ContactCache;
+struct ModelIndex;
 
 struct Swing {
   int ball;          // in the state vector
@@ -50,7 +50,7 @@ struct Swing {
 // anchor (90 degrees), where free_acceleration's bound of 2 |g| (contacts.hpp) still holds for the step cap.
 // `last`: the swing the ball followed over the step that ended at x, its phase moved on to that end (or none). Where x
 // is exactly where it led, the ball goes on with it, skipping the elliptic integral that finds the phase afresh.
-std::optional<Swing> swing_of(const Model& model, const State& state, const ContactCache& cache, const double* x, int i,
+std::optional<Swing> swing_of(const Model& model, const State& state, const ModelIndex& index, const double* x, int i,
                               const Swing* last = nullptr);
 
 }  // namespace shotlab

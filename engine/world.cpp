@@ -16,12 +16,12 @@ World::World(Model model, State initial)
     : model_(std::move(model)),
       onset_factor_(onset_factor(model_)),
       integ_(std::move(initial)),
-      cache_(model_),
-      partition_(model_) {
+      index_(model_),
+      partition_(model_, index_) {
   // Balls that start at rest (in their static sink on the bed, nothing moving against them, or held still off any
   // support: under a rod's anchor, in free space without gravity) sleep from the start instead of after sleep_time of
   // integrating what cannot move. The update also sizes the regime flags.
-  Regimes(model_).update(integ_, integ_.x, model_.options.sleep_time);
+  Regimes(model_, index_).update(integ_, integ_.x, model_.options.sleep_time);
   state_ = integ_;
   const Energy e = energy();
   energy_start_ = e.total();
@@ -103,7 +103,7 @@ Partition World::split_group(double t, std::vector<Island*>& group, std::vector<
       deadline[n] = t + p.horizon[n];
       const std::vector<int>& balls = p.islands[n];
       if (balls.size() == 1 && integ_.in_play[balls[0]] && islands_.size() > group.size())
-        paths[n] = free_path(model_, integ_, integ_.x.data(), balls[0], cache_, kLoneHorizon);
+        paths[n] = free_path(model_, integ_, integ_.x.data(), balls[0], index_, kLoneHorizon);
     }
     bool grew = false;
     for (const auto& other : islands_) {
@@ -157,7 +157,7 @@ void World::replace_group(double t, const std::vector<Island*>& group, Partition
           for (int i : island->balls())
             if (std::binary_search(balls.begin(), balls.end(), i)) first = std::min(first, island->next_step());
       if (!std::isfinite(first)) first = model_.integrator.initial_step;
-      next.push_back(std::make_unique<Island>(model_, integ_, std::move(balls), first, p.energy[n], onset_factor_));
+      next.push_back(std::make_unique<Island>(model_, index_, integ_, std::move(balls), first, p.energy[n], onset_factor_));
       // While it holds them, its balls are no sleepers to the partitioner (their flags here are as they joined).
       for (int i : next.back()->balls()) integ_.asleep[i] = 0;
     }

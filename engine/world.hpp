@@ -40,7 +40,7 @@ class World {
   Status status() const { return status_; }
   const std::string& diagnostic() const { return diagnostic_; }
 
-  Motion motion(int ball) const { return classify(model_, cache_, state_, state_.x.data(), ball); }
+  Motion motion(int ball) const { return classify(model_, index_, state_, state_.x.data(), ball); }
   Energy energy() const { return shotlab::energy(model_, state_); }
   Vec3 momentum() const { return shotlab::momentum(model_, state_); }
   std::vector<Contact> contacts() const { return shotlab::contacts(model_, state_); }
@@ -71,7 +71,7 @@ class World {
   double onset_factor_;  // of the stepper (stepper.hpp), for every island
   State integ_;  // balls in no island as they are; the others as their island last left or joined them
   State state_;  // the state at the caller's clock, interpolated
-  ContactCache cache_;  // motion states of the whole scene
+  ModelIndex index_;  // of model_: the scene's material names resolved, once
   Partitioner partition_;
   std::vector<std::unique_ptr<Island>> islands_;
   StateVector scratch_;

@@ -18,7 +18,8 @@ namespace {
 void BM_Rhs(benchmark::State& st) {
   const int n = static_cast<int>(st.range(0));
   const shotlab::Prepared p = shotlab::prepare(shotlab::scattered_scene(n, 20261122));
-  shotlab::Dynamics f(p.model, p.state);
+  const shotlab::ModelIndex index(p.model);
+  shotlab::Dynamics f(p.model, index, p.state);
   shotlab::StateVector dxdt(p.state.x.size());
   for (auto _ : st) {
     f(p.state.x, dxdt, 0.0);

@@ -26,9 +26,10 @@ void expect_every_close_pair(int n, double side, double reach, unsigned seed) {
   state.rolling_on.assign(n, -1);
   state.sliding_on.assign(n, -1);
   state.still_for.assign(n, 0.0);
-  ContactCache cache(model);
+  const ModelIndex index(model);
+  BroadPhase broad;
   std::multiset<std::pair<int, int>> found;
-  sweep_pairs(model, state, state.x.data(), cache, reach, false,
+  sweep_pairs(model, index, state, state.x.data(), broad, reach, false,
               [&](int i, int j) { found.insert({std::min(i, j), std::max(i, j)}); });
   int close = 0;
   for (int i = 0; i < n; ++i)

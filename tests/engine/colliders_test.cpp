@@ -79,16 +79,16 @@ TEST(Colliders, CapsuleMiddleAndEnds) {
 }
 
 
-// ContactCache's clear column (contacts.hpp): a ball inside it is probed against the plane-like colliders only. On a
+// ModelIndex's clear column (model_index.hpp): a ball inside it is probed against the plane-like colliders only. On a
 // pool table, near_colliders must still find every collider the plain probe of each finds, wherever the ball is:
 // mid-table, at a cushion's nose, in a pocket's jaws, over a hole, off the table. Where the bed is probed as a level
 // floor, it gives exactly what the plain probe gives.
 TEST(Colliders, ClearColumnHidesNoCollider) {
   Model model = empty_model();
   add_table(model, pool_table());
-  const ContactCache cache(model);
-  ASSERT_LT(cache.clear.lo_x, cache.clear.hi_x);
-  ASSERT_LT(cache.clear.lo_z, cache.clear.hi_z);
+  const ModelIndex index(model);
+  ASSERT_LT(index.clear.lo_x, index.clear.hi_x);
+  ASSERT_LT(index.clear.lo_z, index.clear.hi_z);
   const double ball = 0.028575;
   int column = 0, near_edge = 0, level = 0;
   for (double x = -1.45; x <= 1.45; x += 0.0061)
@@ -96,7 +96,7 @@ TEST(Colliders, ClearColumnHidesNoCollider) {
       for (double within : {0.0, 1e-3}) {
         const Vec3 p{x, ball - 1e-5, z};
         std::vector<int> found, expected;
-        near_colliders(model, cache, p, ball, within, [&](int c, const Penetration& pen) {
+        near_colliders(model, index, p, ball, within, [&](int c, const Penetration& pen) {
           found.push_back(c);
           // Over the level floor (contacts.hpp) the bed's depth and normal are the plain probe's, to the bit.
           const auto plain = penetration(model.colliders[c].shape, p, ball, within);
@@ -105,7 +105,7 @@ TEST(Colliders, ClearColumnHidesNoCollider) {
           EXPECT_EQ(pen.normal, plain->normal);
         });
         for (size_t c = 0; c < model.colliders.size(); ++c)
-          if (penetration(model.colliders[c].shape, p, ball, within) && cache.collider_bounds[c].may_touch(p, ball + within))
+          if (penetration(model.colliders[c].shape, p, ball, within) && index.collider_bounds[c].may_touch(p, ball + within))
             expected.push_back(static_cast<int>(c));
         // Every collider the plain probe reports as within reach (depth > -within) is found.
         for (int c : expected) {
@@ -116,7 +116,7 @@ TEST(Colliders, ClearColumnHidesNoCollider) {
           }
         }
         (found.size() == 1 && expected.size() == 1 ? column : near_edge)++;
-        level += cache.floor[0].holds(p, 0.0);
+        level += index.floor[0].holds(p, 0.0);
       }
   EXPECT_GT(column, 0);
   EXPECT_GT(near_edge, 0);

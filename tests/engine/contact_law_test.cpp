@@ -81,7 +81,8 @@ TEST(ContactLaw, TrialReportsTheNextSwitchAfterTheFirst) {
   for (int i = 0; i < 3; ++i)
     balls.push_back({{"id", std::to_string(i)}, {"position", {0.5 * i, kR, 0}}, {"velocity", {0, 0, u[i]}}});
   Prepared p = prepare(scene(cloth_scene(balls)));
-  Dynamics f(p.model, p.state);
+  const ModelIndex index(p.model);
+  Dynamics f(p.model, index, p.state);
   StepSpan span;
   span.t1 = h;
   span.x0 = span.x1 = p.state.x;
@@ -105,7 +106,7 @@ TEST(ContactLaw, TrialReportsTheNextSwitchAfterTheFirst) {
   auto by_key = [](const ContactRecord& x, const ContactRecord& y) { return x.key < y.key; };
   std::sort(start.begin(), start.end(), by_key);
   std::sort(end.begin(), end.end(), by_key);
-  const EventDetector::LawChanges law = EventDetector(p.model).first_law_change(span, start, end);
+  const EventDetector::LawChanges law = EventDetector(p.model, index).first_law_change(span, start, end);
   const double rate = 3.5 * mu * kG;
   // Each located just past the switch, to the resolution of a switch on a span this long.
   EXPECT_NEAR(law.friction, (u[2] - 1e-3) / rate, switch_resolution(h));

@@ -45,13 +45,14 @@ TEST(Islands, SleeperTwoIslandsMayReachJoinsThem) {
   Prepared p = prepare(scene(cloth_scene({ball("left", -2 * kR - 2e-4, 0, 1.0), ball("mid", 0, 0),
                                           ball("right", 2 * kR + 2e-4, 0, -1.0)})));
   p.state.asleep = {0, 1, 0};
-  const Partition part = Partitioner(p.model)(p.state, {0, 2});
+  const ModelIndex index(p.model);
+  const Partition part = Partitioner(p.model, index)(p.state, {0, 2});
   EXPECT_EQ(part.islands, (std::vector<std::vector<int>>{{0, 1, 2}}));
   // Farther apart instead: two islands, each with a horizon before which it cannot reach the sleeper (gap / its
   // speed bound, over the 1 m/s it moves at); the right one starts nearer.
   set_position(p.state.x, 0, Vec3(-2 * kR - 0.015, kR, 0));
   set_position(p.state.x, 2, Vec3(2 * kR + 0.01, kR, 0));
-  const Partition apart = Partitioner(p.model)(p.state, {0, 2});
+  const Partition apart = Partitioner(p.model, index)(p.state, {0, 2});
   EXPECT_EQ(apart.islands, (std::vector<std::vector<int>>{{0}, {2}}));
   ASSERT_EQ(apart.horizon.size(), 2u);
   EXPECT_GT(apart.horizon[1], 0.0);
@@ -125,10 +126,11 @@ TEST(Islands, StepListsHoldEveryPairThatTouchesInTheStep) {
   sim->set_observer([&](const StepView& step) {
     const State& flags = step.flags;
     StepContacts lists;
-    ContactCache cache(step.model);
+    const ModelIndex index(step.model);
+    BroadPhase broad;
     StateVector x0;
     step.state_at(step.t0, x0);
-    time_to_possible_contact(step.model, flags, x0.data(), step.t1 - step.t0, cache, &lists);
+    time_to_possible_contact(step.model, index, flags, x0.data(), step.t1 - step.t0, broad, &lists);
     if (!lists.near_known) return;  // the step did not use the lists either
     ++steps;
     StateVector x;

@@ -32,7 +32,8 @@ Prepared touching_pair(double v) {
 // reference integration of the same step at 1e-16: ball a's velocity error, true and estimated.
 template <class ErrorStepper>
 std::pair<double, double> onset_step_errors(ErrorStepper stepper, Prepared& p, double h) {
-  Dynamics f(p.model, p.state);
+  const ModelIndex index(p.model);
+  Dynamics f(p.model, index, p.state);
   const StateVector& x0 = p.state.x;
   StateVector dxdt(x0.size()), out(x0.size()), err(x0.size()), dxdt_out(x0.size());
   f(x0, dxdt, 0.0);

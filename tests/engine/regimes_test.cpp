@@ -167,33 +167,33 @@ TEST(Regimes, RollingEntryErrorFallsWithTheTolerance) {
 // 0.0981 m/s^2, the contact patch's speed R w_n at 5/2 mu_sp g = 0.2869 m/s^2.
 TEST(Regimes, StepsEndAtTheSmoothingBandsEdge) {
   Prepared p = prepare(scene(cloth_scene({{{"id", "cue"}, {"position", {0, kR, 0}}}, {{"id", "obj"}, {"position", {1, kR, 0}}}})));
-  const ContactCache cache(p.model);
+  const ModelIndex index(p.model);
   State& s = p.state;
   s.sliding_on = {0, -1};
   s.rolling_on = {-1, -1};
   set_velocity(s.x, 0, Vec3(1.0, 0, 0));  // sliding without spin: slip 1 m/s
   bool constant = false;
-  EXPECT_NEAR(time_to_band_edge(p.model, s, cache, s.x.data(), &constant), (1.0 - 1e-3) / 6.867, 1e-5);
+  EXPECT_NEAR(time_to_band_edge(p.model, s, index, s.x.data(), &constant), (1.0 - 1e-3) / 6.867, 1e-5);
   EXPECT_FALSE(constant);  // obj is in the full model
   s.asleep = {0, 1};
-  time_to_band_edge(p.model, s, cache, s.x.data(), &constant);
+  time_to_band_edge(p.model, s, index, s.x.data(), &constant);
   EXPECT_TRUE(constant);  // cue outside its bands, obj asleep: the island may step in closed form
   set_velocity(s.x, 0, Vec3(0.0));  // no slip left: no edge ahead
-  time_to_band_edge(p.model, s, cache, s.x.data(), &constant);
+  time_to_band_edge(p.model, s, index, s.x.data(), &constant);
   EXPECT_FALSE(constant);  // a slider without slip would feel rolling resistance: no closed form
   s.asleep = {1, 0};
   s.rolling_on = {-1, 0};           // a ball rolling at 0.3 m/s with 1 m/s of patch speed: its speed's edge first
   set_velocity(s.x, 1, Vec3(0.3, 0, 0));
   set_spin(s.x, 1, Vec3(0, 1.0 / kR, -0.3 / kR));
-  EXPECT_NEAR(time_to_band_edge(p.model, s, cache, s.x.data()), (0.3 - 1e-3) / 0.0981, 1e-3);
+  EXPECT_NEAR(time_to_band_edge(p.model, s, index, s.x.data()), (0.3 - 1e-3) / 0.0981, 1e-3);
   set_spin(s.x, 1, Vec3(0, 0.1 / kR, -0.3 / kR));  // with 0.1 m/s of patch speed, the spin's
-  EXPECT_NEAR(time_to_band_edge(p.model, s, cache, s.x.data()), (0.1 - 1e-3) / 0.2869, 1e-4);
+  EXPECT_NEAR(time_to_band_edge(p.model, s, index, s.x.data()), (0.1 - 1e-3) / 0.2869, 1e-4);
   set_spin(s.x, 1, Vec3(0, 1e-3 / kR, -1e-3 / kR));  // on the bands' edges themselves: nothing left to cut
   set_velocity(s.x, 1, Vec3(1e-3, 0, 0));
-  EXPECT_EQ(time_to_band_edge(p.model, s, cache, s.x.data(), &constant), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(time_to_band_edge(p.model, s, index, s.x.data(), &constant), std::numeric_limits<double>::infinity());
   EXPECT_FALSE(constant);  // its speed and spin now decay inside their bands: no closed form
   std::vector<BandTail> tails;  // unless the caller follows those decays as tails (band_tail.hpp)
-  const double to_stop = time_to_band_edge(p.model, s, cache, s.x.data(), &constant, &tails);
+  const double to_stop = time_to_band_edge(p.model, s, index, s.x.data(), &constant, &tails);
   EXPECT_TRUE(constant);
   ASSERT_EQ(tails.size(), 2u);
   EXPECT_EQ(tails[0].kind, BandTail::Kind::Spin);
@@ -201,13 +201,13 @@ TEST(Regimes, StepsEndAtTheSmoothingBandsEdge) {
   // The speed tail ends at the stop cut: from the edge (y0 = 1) to 5e-8 m/s, ln((2e4^2 - 1/3) / (2/3)) / (3 mu_r g k).
   EXPECT_NEAR(to_stop, std::log((4e8 - 1.0 / 3) / (2.0 / 3)) / (3 * 0.0981 * 1000), 1e-3);
   set_velocity(s.x, 1, Vec3(0.0));  // stopped rolling, the spin still decaying
-  time_to_band_edge(p.model, s, cache, s.x.data(), &constant);
+  time_to_band_edge(p.model, s, index, s.x.data(), &constant);
   EXPECT_FALSE(constant);
   set_spin(s.x, 1, Vec3(0.0));  // at rest: constant (zero)
-  time_to_band_edge(p.model, s, cache, s.x.data(), &constant);
+  time_to_band_edge(p.model, s, index, s.x.data(), &constant);
   EXPECT_TRUE(constant);
   s.rolling_on = {-1, -1};  // the full model
-  time_to_band_edge(p.model, s, cache, s.x.data(), &constant);
+  time_to_band_edge(p.model, s, index, s.x.data(), &constant);
   EXPECT_FALSE(constant);
 }
 

@@ -48,8 +48,8 @@ TEST(Swing, OnlyWhereThePendulumsClosedFormHolds) {
   auto swing = [](const nlohmann::json& doc, auto&& change) {
     Prepared p = prepare(scene(doc));
     change(p.state.x);
-    const ContactCache cache(p.model);
-    return swing_of(p.model, p.state, cache, p.state.x.data(), 0);
+    const ModelIndex index(p.model);
+    return swing_of(p.model, p.state, index, p.state.x.data(), 0);
   };
   auto as_is = [](StateVector&) {};
   const double L = 0.2, amp = 0.5;

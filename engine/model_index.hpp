@@ -1,0 +1,72 @@
+// What the contact code looks up in a Model, resolved once (docs/model.md#colliders): each collider's material as an
+// index, the colliders' bounds and level floors, each ball's mobilities. Immutable once built; the stepping shares it
+// by const reference, so no material is looked up by its name while the engine runs.
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "colliders.hpp"
+#include "material.hpp"
+#include "model.hpp"
+#include "vec.hpp"
+
+namespace shotlab {
+
+// A vertical column over the rectangle lo < x < hi, lo < z < hi (m) of the table's plane; empty when lo >= hi.
+struct ColumnXZ {
+  double lo_x = 0, hi_x = 0, lo_z = 0, hi_z = 0;
+  // Whether a ball at p with the given reach (m) lies inside, all of it.
+  bool holds(const Vec3& p, double reach) const {
+    return p.x - reach > lo_x && p.x + reach < hi_x && p.z - reach > lo_z && p.z + reach < hi_z;
+  }
+  // Greedily clear of the box [lo, hi] (its x-z extent): if the box reaches in, move the one edge that keeps the
+  // most area (a cushion along an edge costs a strip of its width).
+  void exclude(const Vec3& lo, const Vec3& hi);
+};
+
+struct ModelIndex {
+  // Resolves the model's material names: the one place they are looked up.
+  explicit ModelIndex(const Model& model);
+  // The index of `sub`, a model with the colliders and materials of `scene`'s model and balls of its own (an island):
+  // the collider tables are taken over, the balls' mobilities worked out anew.
+  ModelIndex(const ModelIndex& scene, const Model& sub);
+
+  const ContactMaterial& collider_material(int c) const { return materials[material_of[c]]; }
+  const ContactMaterial& ball_ball() const { return materials[ball_ball_material]; }
+
+  std::vector<ContactMaterial> materials;  // the materials the colliders and the balls use, each once
+  std::vector<int> material_of;            // each collider's material, an index into materials
+  int ball_ball_material = 0;
+  std::vector<Bounds> collider_bounds;     // broad phase against static colliders
+  std::vector<Vec3> plane_normal;          // unit normal of each plane-like collider (Plane, BoundedPlane), else 0
+  // A vertical column that no collider other than the plane-like ones reaches: a ball inside it is probed against
+  // the plane-like colliders alone (on a table, the bed; the cushions and jaws line the edges).
+  std::vector<int> plane_like;
+  std::vector<int> others;  // the other colliders, in the order of the model
+  ColumnXZ clear;
+  // For each plane-like collider (in the order of plane_like), a column over which it is a level floor (normal exactly
+  // up) with no edge and no hole, at height floor_y (m; NaN and an empty column where it is none): a ball whose centre
+  // is over it is probed with one subtraction instead of the shape's test of its extent and its holes.
+  std::vector<ColumnXZ> floor;
+  std::vector<double> floor_y;
+  std::vector<int> floor_of;  // each collider's index in plane_like (and floor), or -1
+  double gravity = 0;         // m/s^2, |g|: the step caps and the regimes' right-hand sides want it for every ball
+  // Each ball's mobilities (contact_force.hpp): 1/m (1/kg) and r^2/I (1/kg); the largest radius (m).
+  std::vector<double> inv_mass, inv_inertia_r2;
+  double max_radius = 0;
+
+ private:
+  void index_balls(const Model& model);
+};
+
+// The penetration of a ball (centre p, radius r) into the k-th plane-like collider where its centre is over that
+// collider's level floor (ModelIndex::floor): one subtraction, none when the centre is below the floor (a plane is
+// one-sided); nullopt when it is not over the floor.
+inline std::optional<std::optional<Penetration>> floor_penetration(const ModelIndex& index, size_t k, const Vec3& p,
+                                                                   double r) {
+  if (!index.floor[k].holds(p, 0.0)) return std::nullopt;
+  const double height = p.y - index.floor_y[k];
+  return height >= 0 ? std::optional<Penetration>(Penetration{r - height, kUp}) : std::nullopt;
+}
+
+}  // namespace shotlab
