@@ -17,11 +17,9 @@ namespace shotlab {
 // A contact's bodies: (ball, other ball) with ball < other, or (ball, -1 - collider index).
 using ContactKey = std::pair<int, int>;
 
-// How the contacts that may change during a step are treated in it (island.cpp), as sorted keys. The force law has
-// a jump at an onset (linear damping: c v) and a kink where the clamp cuts in; a step across either fails the error
-// control and shrinks, over and over as the change comes closer. Instead, the right-hand side keeps each contact's
-// law as it was at the step's start and the island ends the step where the change happens (found on the step's
-// dense output); the next step starts on the other side.
+// A step's plan for its contacts (made by the step cap, step_control.cpp): each contact keeps the law it had at the
+// step's start, so that no step straddles an onset's jump or the clamp's kink; the island ends the step where a law
+// would change (docs/model.md#step-control). Keys sorted.
 struct StepContacts {
   std::vector<ContactKey> separated;  // separated by kTouch or more at the start: left out of the step
   std::vector<ContactKey> pushing;    // pushing at the start, but near the clamp: not clamped in the step

@@ -1,22 +1,6 @@
-// Splitting a scene into islands (island.hpp) that cannot touch each other for a while, so that each integrates on
-// its own with its own step size (Box2D's islands, made time-aware for a soft-contact integrator).
-//
-// How far can a ball get? Within an island, contacts trade energy between balls, so a ball at rest can be hit and
-// leave at speed. What a ball cannot do is gain more kinetic energy than its island holds: kinetic, elastic (in its
-// contacts) and the height above the bed it can still fall. Ball i of an island with energy E can therefore not move
-// faster than V_i = sqrt(2 E / m_i) + g h, with g h covering free fall over a horizon h. Two balls in different
-// islands, a gap d apart, cannot touch before d / (V_i + V_j); a sleeping ball does not move (V = 0).
-//
-// A lone ball in the rolling or sliding regime, or a sleeper, follows a known path until something touches it
-// (free_path.hpp): two of them may meet much later than their speed bounds say (balls rolling side by side or
-// apart, a ball rolling past a sleeper), and the later of the two bounds holds.
-//
-// Balls are grouped when they could touch within kLinkTime; the groups' energies then raise their members' bounds,
-// so grouping repeats until nothing more joins. Each island's horizon is the earliest time at which it could touch a
-// ball of another island or a sleeper it does not hold, at most kMaxHorizon (kLoneHorizon for a lone ball on a
-// table, which has nothing to split): then the simulation looks at it again, joining islands that come close and
-// splitting those that have separated. A sleeper joins the island that may reach it, with every sleeper frozen against
-// it (they wake together); a sleeper that two islands may reach joins them into one.
+// Splitting a scene into islands (island.hpp) that cannot touch each other before a horizon, so that each integrates
+// on its own with its own step size: Box2D's islands, made time-aware by a bound on each ball's speed from its
+// island's energy and by the known free paths of lone balls and sleepers (docs/model.md#islands).
 #pragma once
 #include <optional>
 #include <vector>

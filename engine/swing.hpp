@@ -1,23 +1,6 @@
-// The swing: a ball alone on its rod, touching nothing, moves as an ideal plane pendulum, whose motion has a closed
-// form (regimes.hpp's other closed forms are on the bed). An island of such balls (and of balls asleep, rolling or
-// sliding) steps without an integrator: one step as long as the caps allow, exact at every point of it, ended where
-// a contact begins. A Newton's cradle's balls swing so between their contacts.
-//
-// Why it matters: integrated, a swing is a smooth arc that an adaptive method crosses in a few dozen steps, each
-// with an error of up to the tolerance, and the chain of contacts that follows carries the arrival's error into every
-// ball after it (S5: the cradle's first ball, 45 steps, arrived 2.7e-9 m off and made five times the plain path's
-// error at the end; the plain path's steps were held to 1 ms by its resting balls' gaps). In closed form it arrives
-// within round-off.
-//
-// Derivation. Gravity g (unit ĝ = g/|g|) and the rod's force (dynamics.cpp: along the rod, whatever keeps |p - A| = L)
-// are the only forces on a ball that touches nothing; the rod's force passes through the centre, so the spin stays as
-// it is. If the velocity lies in the vertical plane through the rod, so does the motion: with θ the angle from ĝ
-// towards ê (the plane's horizontal unit vector), p = A + L (cos θ ĝ + sin θ ê), and θ'' = -ω0^2 sin θ with
-// ω0^2 = |g| / L. Its energy integral gives, for a swing that turns back (the modulus k < 1),
-//   k^2 = sin^2(θ0 / 2) + (θ'0 / (2 ω0))^2,   sin(θ / 2) = k sn(u, k),   θ' = 2 k ω0 cn(u, k),   u = u0 + ω0 t,
-// (differentiating, (1/2) cos(θ/2) θ' = k ω0 cn dn, and cos(θ/2) = dn since 1 - k^2 sn^2 = dn^2), where sn, cn, dn
-// are Jacobi's elliptic functions and the phase u0 is F(φ0, k), Legendre's incomplete integral of the first kind at
-// the amplitude φ0 with sin φ0 = sin(θ0/2) / k and cos φ0 = θ'0 / (2 k ω0).
+// The swing: a ball alone on its rod, touching nothing, moves as an ideal plane pendulum in closed form (Jacobi's
+// elliptic functions), so an island of such balls steps without an integrator and a Newton's cradle's balls arrive at
+// their next contact within round-off (docs/model.md#swing).
 #pragma once
 #include <optional>
 

@@ -29,6 +29,11 @@ class JsonNode {
   JsonNode operator[](const std::string& key) const;  // required field
   // Calls read(child) when the field is present.
   void optional(const std::string& key, const std::function<void(const JsonNode&)>& read) const;
+  // Reads key, when present, into `out` through one of the checks below (e.g. &JsonNode::positive).
+  template <class T>
+  void optional(const std::string& key, T& out, T (JsonNode::*check)() const) const {
+    optional(key, [&](const JsonNode& v) { out = (v.*check)(); });
+  }
   std::vector<JsonNode> items() const;  // array elements
 
   double number() const;                  // finite
@@ -53,5 +58,17 @@ class JsonNode {
   std::string source_, path_;
   std::shared_ptr<std::set<std::string>> used_;
 };
+
+// A field of S read, when present, into S::*member through one of JsonNode's checks; lists of them read a struct.
+template <class S, class T>
+struct Field {
+  const char* key;
+  T S::*member;
+  T (JsonNode::*check)() const;
+};
+template <class S, class T, size_t N>
+void read_fields(const JsonNode& n, S& s, const Field<S, T> (&fields)[N]) {
+  for (const Field<S, T>& f : fields) n.optional(f.key, s.*f.member, f.check);
+}
 
 }  // namespace shotlab

@@ -21,18 +21,18 @@ using nlohmann::json;
 
 
 void read_material(const JsonNode& n, ContactMaterial& m) {
-  n.optional("stiffness", [&](const JsonNode& v) { m.stiffness = v.positive(); });
-  n.optional("damping", [&](const JsonNode& v) { m.damping = v.non_negative(); });
-  n.optional("exponent", [&](const JsonNode& v) { m.exponent = v.positive(); });
+  n.optional("stiffness", m.stiffness, &JsonNode::positive);
+  n.optional("damping", m.damping, &JsonNode::non_negative);
+  n.optional("exponent", m.exponent, &JsonNode::positive);
   n.optional("damping_law", [&](const JsonNode& v) {
     const std::string law = v.string();
     if (law == "linear") m.damping_law = DampingLaw::Linear;
     else if (law == "hunt_crossley") m.damping_law = DampingLaw::HuntCrossley;
     else v.fail("unknown damping law '" + law + "' (linear, hunt_crossley)");
   });
-  n.optional("friction", [&](const JsonNode& v) { m.friction = v.non_negative(); });
-  n.optional("rolling_resistance", [&](const JsonNode& v) { m.rolling_resistance = v.non_negative(); });
-  n.optional("spin_friction", [&](const JsonNode& v) { m.spin_friction = v.non_negative(); });
+  n.optional("friction", m.friction, &JsonNode::non_negative);
+  n.optional("rolling_resistance", m.rolling_resistance, &JsonNode::non_negative);
+  n.optional("spin_friction", m.spin_friction, &JsonNode::non_negative);
   n.finish();
 }
 
@@ -41,29 +41,34 @@ void read_integrator(const JsonNode& n, IntegratorOptions& o) {
     if (!parse_method(v.string(), o.method))
       v.fail("unknown integrator '" + v.string() + "' (euler, rk4, cash_karp54, dopri5, bulirsch_stoer, rosenbrock4)");
   });
-  n.optional("abs_tol", [&](const JsonNode& v) { o.abs_tol = v.positive(); });
-  n.optional("rel_tol", [&](const JsonNode& v) { o.rel_tol = v.positive(); });
-  n.optional("fixed_step", [&](const JsonNode& v) { o.fixed_step = v.positive(); });
-  n.optional("initial_step", [&](const JsonNode& v) { o.initial_step = v.positive(); });
+  n.optional("abs_tol", o.abs_tol, &JsonNode::positive);
+  n.optional("rel_tol", o.rel_tol, &JsonNode::positive);
+  n.optional("fixed_step", o.fixed_step, &JsonNode::positive);
+  n.optional("initial_step", o.initial_step, &JsonNode::positive);
   n.optional("max_steps_per_call", [&](const JsonNode& v) { o.max_steps_per_call = v.integer(1, 1 << 30); });
   n.finish();
 }
+
+// The table's optional dimensions (m), each with its check.
+constexpr Field<TableSpec, double> kTableFields[] = {
+    {"length", &TableSpec::length, &JsonNode::positive},
+    {"width", &TableSpec::width, &JsonNode::positive},
+    {"nose_height", &TableSpec::nose_height, &JsonNode::positive},
+    {"cushion_radius", &TableSpec::cushion_radius, &JsonNode::positive},
+    {"corner_mouth", &TableSpec::corner_mouth, &JsonNode::positive},
+    {"side_mouth", &TableSpec::side_mouth, &JsonNode::positive},
+    {"pocket_radius", &TableSpec::pocket_radius, &JsonNode::positive},
+    {"pocket_shelf", &TableSpec::pocket_shelf, &JsonNode::non_negative},
+    {"jaw_length", &TableSpec::jaw_length, &JsonNode::non_negative},
+    {"rail_width", &TableSpec::rail_width, &JsonNode::non_negative},
+};
 
 void read_table(const JsonNode& n, TableSpec& t) {
   const std::string type = n["type"].string();
   if (type == "pool") t = pool_table();
   else if (type == "carom") t = carom_table();
   else n["type"].fail("unknown table type '" + type + "' (pool, carom)");
-  n.optional("length", [&](const JsonNode& v) { t.length = v.positive(); });
-  n.optional("width", [&](const JsonNode& v) { t.width = v.positive(); });
-  n.optional("nose_height", [&](const JsonNode& v) { t.nose_height = v.positive(); });
-  n.optional("cushion_radius", [&](const JsonNode& v) { t.cushion_radius = v.positive(); });
-  n.optional("corner_mouth", [&](const JsonNode& v) { t.corner_mouth = v.positive(); });
-  n.optional("side_mouth", [&](const JsonNode& v) { t.side_mouth = v.positive(); });
-  n.optional("pocket_radius", [&](const JsonNode& v) { t.pocket_radius = v.positive(); });
-  n.optional("pocket_shelf", [&](const JsonNode& v) { t.pocket_shelf = v.non_negative(); });
-  n.optional("jaw_length", [&](const JsonNode& v) { t.jaw_length = v.non_negative(); });
-  n.optional("rail_width", [&](const JsonNode& v) { t.rail_width = v.non_negative(); });
+  read_fields(n, t, kTableFields);
   n.finish();
 }
 
@@ -111,8 +116,8 @@ InitialBall read_ball(const JsonNode& n, const BallKind& default_kind) {
   });
   InitialBall b;
   b.spec = {n["id"].string(), kind->mass, kind->radius};
-  n.optional("mass", [&](const JsonNode& v) { b.spec.mass = v.positive(); });
-  n.optional("radius", [&](const JsonNode& v) { b.spec.radius = v.positive(); });
+  n.optional("mass", b.spec.mass, &JsonNode::positive);
+  n.optional("radius", b.spec.radius, &JsonNode::positive);
   b.position = n["position"].vec3();
   n.optional("velocity", [&](const JsonNode& v) { b.velocity = v.vec3(); });
   n.optional("angular_velocity", [&](const JsonNode& v) { b.angular_velocity = v.vec3(); });
@@ -130,8 +135,8 @@ void read_rack(const JsonNode& n, const BallKind& kind, Scene& s) {
     r.apex_x = p.x;
     r.apex_z = p.z;
   });
-  n.optional("gap", [&](const JsonNode& v) { r.gap = v.non_negative(); });
-  n.optional("jitter", [&](const JsonNode& v) { r.jitter = v.non_negative(); });
+  n.optional("gap", r.gap, &JsonNode::non_negative);
+  n.optional("jitter", r.jitter, &JsonNode::non_negative);
   n.optional("seed", [&](const JsonNode& v) { r.seed = static_cast<uint32_t>(v.integer(0, 1 << 30)); });
   n.optional("first_number", [&](const JsonNode& v) { r.first_number = v.integer(0, 1 << 20); });
   n.finish();
@@ -147,15 +152,15 @@ void read_cue(const JsonNode& n, CueStrike& c) {
     c.elevation = v.angle_degrees();
     if (c.elevation < 0 || c.elevation > M_PI / 2) v.fail("must be between 0 and 90 degrees");
   });
-  n.optional("side", [&](const JsonNode& v) { c.side = v.number(); });
-  n.optional("height", [&](const JsonNode& v) { c.height = v.number(); });
+  n.optional("side", c.side, &JsonNode::number);
+  n.optional("height", c.height, &JsonNode::number);
   if (c.side * c.side + c.height * c.height >= 1) n.fail("side, height: the tip offset must lie inside the ball");
-  n.optional("cue_mass", [&](const JsonNode& v) { c.cue_mass = v.positive(); });
+  n.optional("cue_mass", c.cue_mass, &JsonNode::positive);
   n.optional("tip_restitution", [&](const JsonNode& v) {
     c.tip_restitution = v.non_negative();
     if (c.tip_restitution > 1) v.fail("must be at most 1");
   });
-  n.optional("miscue_limit", [&](const JsonNode& v) { c.miscue_limit = v.positive(); });
+  n.optional("miscue_limit", c.miscue_limit, &JsonNode::positive);
   n.finish();
 }
 
@@ -241,21 +246,29 @@ json parse_json_text(const std::string& text, const std::string& source) {
 
 namespace {
 
+// The model's options: numbers (units in model.hpp) and the solver switches.
+constexpr Field<Options, double> kOptionNumbers[] = {
+    {"friction_sharpness", &Options::friction_sharpness, &JsonNode::positive},
+    {"friction_rate_limit", &Options::friction_rate_limit, &JsonNode::non_negative},
+    {"rest_speed", &Options::rest_speed, &JsonNode::positive},
+    {"contact_margin", &Options::contact_margin, &JsonNode::positive},
+    {"sleep_time", &Options::sleep_time, &JsonNode::non_negative},
+};
+constexpr Field<Options, bool> kOptionSwitches[] = {
+    {"rolling_regime", &Options::rolling_regime, &JsonNode::boolean},
+    {"sliding_regime", &Options::sliding_regime, &JsonNode::boolean},
+    {"swing_regime", &Options::swing_regime, &JsonNode::boolean},
+    {"islands", &Options::islands, &JsonNode::boolean},
+};
+
 void read_options(const JsonNode& m, Options& o) {
   m.optional("path", [&](const JsonNode& v) {  // first: the switches below override it
     if (v.string() == "fast") use_path(o, SolverPath::Fast);
     else if (v.string() == "plain") use_path(o, SolverPath::Plain);
     else v.fail("must be \"fast\" or \"plain\", got " + describe(v.raw()));
   });
-  m.optional("friction_sharpness", [&](const JsonNode& v) { o.friction_sharpness = v.positive(); });
-  m.optional("friction_rate_limit", [&](const JsonNode& v) { o.friction_rate_limit = v.non_negative(); });
-  m.optional("rest_speed", [&](const JsonNode& v) { o.rest_speed = v.positive(); });
-  m.optional("contact_margin", [&](const JsonNode& v) { o.contact_margin = v.positive(); });
-  m.optional("sleep_time", [&](const JsonNode& v) { o.sleep_time = v.non_negative(); });
-  m.optional("rolling_regime", [&](const JsonNode& v) { o.rolling_regime = v.boolean(); });
-  m.optional("sliding_regime", [&](const JsonNode& v) { o.sliding_regime = v.boolean(); });
-  m.optional("swing_regime", [&](const JsonNode& v) { o.swing_regime = v.boolean(); });
-  m.optional("islands", [&](const JsonNode& v) { o.islands = v.boolean(); });
+  read_fields(m, o, kOptionNumbers);
+  read_fields(m, o, kOptionSwitches);
   m.finish();
 }
 
@@ -288,7 +301,7 @@ Scene parse_scene(const json& doc, const std::string& source) {
     s.duration = v.positive();
     if (s.duration > kMaxDuration) v.fail("must be at most " + std::to_string(static_cast<int>(kMaxDuration)) + " s");
   });
-  n.optional("allow_overlap", [&](const JsonNode& v) { s.allow_overlap = v.boolean(); });
+  n.optional("allow_overlap", s.allow_overlap, &JsonNode::boolean);
   n.optional("gravity", [&](const JsonNode& v) { s.model.options.gravity = v.vec3(); });
   n.optional("model", [&](const JsonNode& m) { read_options(m, s.model.options); });
   n.optional("integrator", [&](const JsonNode& v) { read_integrator(v, s.model.integrator); });
