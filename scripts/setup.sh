@@ -8,6 +8,7 @@ packages=(
   fonts-dejavu-core                                                # the GUI's font
   libgtest-dev libbenchmark-dev xvfb xauth python3                 # tests, micro benchmarks, GUI test display
   xdotool x11-apps                                                 # real mouse and keys, screen grabs (GUI test)
+  python3-matplotlib                                               # the bench's figures (scripts/bench_plots.py)
 )
 missing=()
 for p in "${packages[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done

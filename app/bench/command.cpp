@@ -1,5 +1,6 @@
 // `shotlab bench`: the work-precision report (issue 4). Runs every case with every integrator setting, measures the
-// error against a reference solution and the cost, and writes CSV, markdown and SVG figures (bench/report.hpp).
+// error against a reference solution and the cost, and writes CSV and markdown (bench/report.hpp); the figures are
+// drawn from the CSV by scripts/bench_plots.py (bench/plots.hpp).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "app/bench/plots.hpp"
 #include "app/bench/report.hpp"
 #include "app/bench/scaling.hpp"
 #include "app/commands.hpp"
@@ -162,7 +164,7 @@ int run_bench(BenchOptions o, const std::string& command) {
     return 1;
   }
   if (o.budget == 0) o.budget = o.quick ? 0.2 : 1.0;
-  if (o.scaling) return run_scaling(o.out_dir, o.repeats) ? 0 : 1;
+  if (o.scaling) return run_scaling(o.out_dir, o.repeats) && draw_figures(o.out_dir) ? 0 : 1;
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<BenchCase> cases = bench_cases();
   BenchReport report;
@@ -177,9 +179,8 @@ int run_bench(BenchOptions o, const std::string& command) {
   }
   report.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!write_report(o.out_dir, report)) return 1;
-  std::cout << "wrote " << o.out_dir << "/results.{csv,md}, work_precision.svg, tolerance_error.svg, "
-            << "steps_per_contact.svg in " << report.total_seconds << " s\n";
-  return 0;
+  std::cout << "wrote " << o.out_dir << "/results.{csv,md} in " << report.total_seconds << " s\n";
+  return draw_figures(o.out_dir) ? 0 : 1;
 }
 
 }  // namespace
@@ -189,8 +190,9 @@ void add_bench_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("bench", "Speed against error of every integrator on the bench scenes S1-S8");
   cmd->add_flag("--quick", o->quick, "Whole decades only, short budget: a CI smoke run of under a minute");
   cmd->add_flag("--scaling", o->scaling, "Instead of the sweep: 16, 100 and 1000 resting balls and one moving ball, "
-                                        "fast and plain path (writes scaling.csv, scaling_scenes.svg)");
-  cmd->add_option("--out-dir", o->out_dir, "Directory for results.csv, results.md and the SVG figures");
+                                        "fast and plain path (writes scaling.csv; figure scaling_scenes.svg)");
+  cmd->add_option("--out-dir", o->out_dir, "Directory for results.csv, results.md and the SVG figures (drawn by "
+                                        "scripts/bench_plots.py, python3 + matplotlib)");
   cmd->add_option("--scenes", o->scenes, "Scenes to run, e.g. S1,S3 (default: all)")->delimiter(',');
   cmd->add_option("--repeats", o->repeats, "Runs per setting; the wall time is their median "
                                            "(default 5, or 3 with --quick)")->check(CLI::Range(1, 100));

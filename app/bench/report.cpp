@@ -53,7 +53,7 @@ bool write_csv(const std::string& path, const BenchReport& r) {
   std::ofstream o(path);
   o << "case,scene,method,path,adaptive,setting,status,pos_err,vel_err,err,missed,energy_drift,momentum_err,"
        "wall_s,repeats,steps,rejected,rhs,contacts,steps_per_contact,sim_time_s,tol_ratio_pv,tol_ratio_spin,"
-       "tol_ratio_pv_end,tol_ratio_spin_end\n";
+       "tol_ratio_pv_end,tol_ratio_spin_end,label\n";
   for (const BenchRow& w : r.rows) {
     const bool measured = !w.c->until_rest;
     o << w.c->id << "," << w.c->scene << "," << method_name(w.setting.method) << ","
@@ -65,7 +65,8 @@ bool write_csv(const std::string& path, const BenchReport& r) {
       << w.run.stats.rejected_steps << "," << w.run.stats.rhs_evaluations << "," << w.run.contacts << ","
       << fmt("%.1f", w.run.steps_per_contact) << "," << fmt("%.6g", w.run.end_time) << ","
       << (measured ? sci(w.err.tolerance_pv) : "") << "," << (measured ? sci(w.err.tolerance_spin) : "") << ","
-      << (measured ? sci(w.err.tolerance_pv_end) : "") << "," << (measured ? sci(w.err.tolerance_spin_end) : "") << "\n";
+      << (measured ? sci(w.err.tolerance_pv_end) : "") << "," << (measured ? sci(w.err.tolerance_spin_end) : "") << ","
+      << '"' << w.c->label << '"' << "\n";  // the figures' panel title; quoted: it holds commas
   }
   return static_cast<bool>(o);
 }
@@ -270,8 +271,7 @@ bool write_markdown(const std::string& path, const BenchReport& r) {
 
 bool write_report(const std::string& dir, const BenchReport& r) {
   for (const auto& [file, ok] : {std::pair{"results.csv", write_csv(dir + "/results.csv", r)},
-                                 std::pair{"results.md", write_markdown(dir + "/results.md", r)},
-                                 std::pair{"figures", write_figures(dir, r)}})
+                                 std::pair{"results.md", write_markdown(dir + "/results.md", r)}})
     if (!ok) {
       std::cerr << "shotlab bench: " << dir << ": cannot write " << file << "\n";
       return false;

@@ -1,5 +1,5 @@
-// What `shotlab bench` writes: results.csv (every run), results.md (tables with machine and date) and three SVG
-// figures (work-precision, achieved against requested tolerance, steps per contact).
+// What `shotlab bench` writes: results.csv (every run) and results.md (tables with machine and date). Its figures are
+// drawn from results.csv by scripts/bench_plots.py (bench/plots.hpp).
 #pragma once
 #include <string>
 #include <vector>
@@ -36,9 +36,6 @@ struct BenchReport {
 
 // Writes every output file into out_dir (which must exist); returns false and says why on stderr if one fails.
 bool write_report(const std::string& out_dir, const BenchReport& report);
-
-// The three SVG figures (bench/figures.cpp); called by write_report.
-bool write_figures(const std::string& out_dir, const BenchReport& report);
 
 // Setting as a short string: "1e-06" for a tolerance, "h=1e-05" for a step.
 std::string setting_text(const MethodSetting& s);

@@ -8,7 +8,6 @@
 #include <random>
 
 #include "app/bench/cases.hpp"
-#include "app/bench/svg.hpp"
 #include "engine/simulation.hpp"
 
 namespace shotlab {
@@ -107,23 +106,14 @@ bool run_scaling(const std::string& out_dir, int repeats) {
                 << " | " << f.stats.steps << " | " << f.stats.rejected_steps << " | " << f.stats.rhs_evaluations
                 << " |" << std::endl;
     }
+  // scripts/bench_plots.py draws scaling_scenes.svg from this file.
   std::ofstream csv(out_dir + "/scaling.csv");
   csv << "resting_balls,path,simulated_s,wall_s,steps,rejected,rhs\n";
-  // Wall time of the run, and per right-hand-side evaluation: the steps do not depend on the resting balls, so the
-  // second panel shows what each resting ball still costs per evaluation.
-  const std::vector<PlotSeries> paths{{"fast path", "#1f77b4", {}}, {"plain path", "#1f77b4", {}, true}};
-  PlotPanel total{"wall time of the run", paths}, per_rhs{"wall time per rhs evaluation", paths};
-  for (const FieldRun& f : runs) {
+  for (const FieldRun& f : runs)
     csv << f.resting << "," << (f.plain ? "plain" : "fast") << "," << f.simulated << "," << f.wall << ","
         << f.stats.steps << "," << f.stats.rejected_steps << "," << f.stats.rhs_evaluations << "\n";
-    const double n = f.resting;
-    total.series[f.plain].points.push_back({n, f.wall});
-    per_rhs.series[f.plain].points.push_back({n, f.wall / f.stats.rhs_evaluations});
-  }
-  const PlotSpec spec{"n resting balls and one moving ball, to rest",
-                      "The moving ball rolls at 0.5 m/s into one resting ball; the rest are never touched.",
-                      "resting balls", "seconds, inside advance()", false, 2};
-  return static_cast<bool>(csv) && write_loglog_grid(out_dir + "/scaling_scenes.svg", spec, {total, per_rhs});
+  if (!csv) std::cerr << "shotlab bench: " << out_dir << ": cannot write scaling.csv\n";
+  return static_cast<bool>(csv);
 }
 
 }  // namespace shotlab

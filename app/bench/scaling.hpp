@@ -18,7 +18,8 @@ Scene scattered_scene(int balls, unsigned seed);
 Scene resting_field(int resting);
 
 // `shotlab bench --scaling`: times resting_field at 16, 100 and 1000 resting balls on both paths; prints the table
-// and writes scaling.csv and scaling_scenes.svg into out_dir. Returns false when a file cannot be written.
+// and writes scaling.csv into out_dir (scripts/bench_plots.py draws scaling_scenes.svg from it). Returns false, and
+// says so, when the file cannot be written.
 bool run_scaling(const std::string& out_dir, int repeats);
 
 }  // namespace shotlab

@@ -2,15 +2,16 @@
 // O(n), not O(n^2). n balls scattered over a large flat bed (app/bench/scaling.hpp: same density at every n, no
 // overlaps, all awake and sliding, so every ball takes the full model: bed contact and smoothed friction), no
 // cushions. The counter per_ball is the time per call divided by n: flat across n means O(n).
-//   ./rhs_benchmark [--svg=docs/bench/scaling_rhs.svg] [Google Benchmark options]
-// --svg also writes the figure of docs/bench/scaling.md.
+//   ./rhs_benchmark [--csv=docs/bench/scaling_rhs.csv] [Google Benchmark options]
+// --csv also writes the calls' times, from which scripts/bench_plots.py draws docs/bench/scaling_rhs.svg.
 #include <benchmark/benchmark.h>
 
+#include <fstream>
+#include <iostream>
 #include <string>
 #include <vector>
 
 #include "app/bench/scaling.hpp"
-#include "app/bench/svg.hpp"
 #include "engine/dynamics.hpp"
 
 namespace {
@@ -32,7 +33,7 @@ void BM_Rhs(benchmark::State& st) {
 }
 BENCHMARK(BM_Rhs)->Arg(16)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
-// Prints as usual and keeps (balls, seconds per call) for the figure.
+// Prints as usual and keeps (balls, seconds per call) for the CSV.
 class Collector : public benchmark::ConsoleReporter {
  public:
   std::vector<std::pair<double, double>> calls;
@@ -44,31 +45,23 @@ class Collector : public benchmark::ConsoleReporter {
   }
 };
 
-// Two panels: seconds per call with the O(n) line through the smallest n, and seconds per ball.
-bool write_figure(const std::string& path, const std::vector<std::pair<double, double>>& calls) {
+bool write_csv(const std::string& path, const std::vector<std::pair<double, double>>& calls) {
   if (calls.empty()) return true;
-  shotlab::PlotPanel per_call{"cost of one rhs call", {{"measured", "#1f77b4", {}}, {"O(n) from n = 16", "#888", {}, true}}};
-  shotlab::PlotPanel per_ball{"cost per ball", {{"measured", "#1f77b4", {}}}};
-  for (const auto& [n, s] : calls) {
-    per_call.series[0].points.push_back({n, s});
-    per_call.series[1].points.push_back({n, calls.front().second * n / calls.front().first});
-    per_ball.series[0].points.push_back({n, s / n});
-  }
-  const shotlab::PlotSpec spec{"Right-hand side cost against ball count (rhs_benchmark)",
-                               "Balls scattered over a flat bed at constant density, all sliding. Linear in n: on the "
-                               "dashed line, flat per ball.",
-                               "balls", "seconds", false, 2};
-  return shotlab::write_loglog_grid(path, spec, {per_call, per_ball});
+  std::ofstream csv(path);
+  csv << "balls,seconds_per_call\n";
+  for (const auto& [n, s] : calls) csv << n << "," << s << "\n";
+  if (!csv) std::cerr << "rhs_benchmark: cannot write " << path << "\n";
+  return static_cast<bool>(csv);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string svg;
+  std::string csv;
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a.rfind("--svg=", 0) == 0) svg = a.substr(6);
+    if (a.rfind("--csv=", 0) == 0) csv = a.substr(6);
     else args.push_back(argv[i]);
   }
   int count = static_cast<int>(args.size());
@@ -77,5 +70,5 @@ int main(int argc, char** argv) {
   Collector collector;
   benchmark::RunSpecifiedBenchmarks(&collector);
   benchmark::Shutdown();
-  return svg.empty() || write_figure(svg, collector.calls) ? 0 : 1;
+  return csv.empty() || write_csv(csv, collector.calls) ? 0 : 1;
 }
