@@ -7,7 +7,7 @@ double sharpness_for(const Smoothing& s, double strength, double mobility) {
   return s.rate_limit > 0 && rate > s.rate_limit ? s.sharpness * s.rate_limit / rate : s.sharpness;
 }
 
-bool friction_switched(const FrictionLaw& a, const FrictionLaw& b) {
+bool friction_switched(const FrictionState& a, const FrictionState& b) {
   if (a.bands != b.bands) return true;
   // Turned around while saturated at both ends (inside the band a term is smooth through zero, and a resting contact's
   // round-off turns it every which way).

@@ -44,9 +44,9 @@ using ContactKinematics = Kinematics<Vec3>;
 // What says which law a contact's friction follows: the FrictionBand bits, and each term (floats: what counts is their
 // directions against each other's and the size of their change over a step). Kept for every contact at a step's ends
 // (Dynamics::recorded).
-struct FrictionLaw {
-  FrictionLaw() = default;
-  explicit FrictionLaw(const ContactForce& f)
+struct FrictionState {
+  FrictionState() = default;
+  explicit FrictionState(const ContactForce& f)
       : friction(f.friction), rolling(f.rolling), spin_torque(static_cast<float>(f.spin_torque)), bands(f.bands) {}
   glm::vec3 friction{0.0f};  // N, ContactForce::friction
   glm::vec3 rolling{0.0f};   // N, ContactForce::rolling
@@ -58,7 +58,7 @@ struct FrictionLaw {
 // entered or left its band, or had its width set by the rate limit or no longer, or turned its saturated force
 // around (the motion it opposes went through the whole band in between). Such a kink inside an integrator step is
 // what its error estimate misjudges: the island ends the step there (EventDetector::first_law_change).
-bool friction_switched(const FrictionLaw& a, const FrictionLaw& b);
+bool friction_switched(const FrictionState& a, const FrictionState& b);
 
 // Friction smoothing: the sharpness k of fricstep (s/m) and the largest rate (1/s) at which a smoothed friction term
 // may relax the motion it opposes (Options::friction_rate_limit; 0: no limit).

@@ -51,7 +51,7 @@ struct ContactRecord {
   ContactKey key{0, 0};
   double depth = 0;   // m
   double normal = 0;  // N, the normal force (negative where the step keeps the contact's law unclamped)
-  FrictionLaw friction;
+  FrictionState friction;
 };
 
 // The broad phase's buffers, kept from call to call so that it allocates nothing: each user of sweep_pairs owns one.

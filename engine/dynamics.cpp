@@ -14,7 +14,7 @@ void Dynamics::add_contacts(const StateVector& x) {
     if constexpr (Record) {
       // A contact between two balls is recorded from the lower-numbered one: the other sees the friction and rolling
       // forces turned around and the same spin torque about its own normal (-n).
-      ContactRecord& r = recorded_.emplace_back(ContactRecord{{c.ball, -1 - c.collider}, c.depth, f.normal, FrictionLaw(f)});
+      ContactRecord& r = recorded_.emplace_back(ContactRecord{{c.ball, -1 - c.collider}, c.depth, f.normal, FrictionState(f)});
       if (c.other_ball > c.ball) {
         r.key.second = c.other_ball;
       } else if (c.other_ball >= 0) {

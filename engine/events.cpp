@@ -202,10 +202,10 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
       // Where the law first differs from the start's; where the contact stops pushing on the way, it has none. A
       // switch within `resolution` of the start is where the last step was cut: the law after it is the one to keep
       // (and one within it of the end is where this trial was cut).
-      FrictionLaw law = s0.friction;
+      FrictionState law = s0.friction;
       auto switched_at = [&](double t) {
         const ContactForce f = force_at(k, balls_at(span, t, k));
-        return f.normal > 0 && friction_switched(law, FrictionLaw(f));
+        return f.normal > 0 && friction_switched(law, FrictionState(f));
       };
       double from = span.t0;
       for (int pass = 0; pass < 2; ++pass) {
@@ -216,7 +216,7 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
           break;
         }
         from = at;
-        law = FrictionLaw(force_at(k, balls_at(span, at, k)));
+        law = FrictionState(force_at(k, balls_at(span, at, k)));
       }
     }
   }
@@ -228,7 +228,7 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
 // surface speed included), so a switch whose terms change by so little that this is under 1 % of the absolute tolerance
 // is no kink worth a cut: a rolling resistance crossing its band while the ball slides, where its weight is nothing,
 // or a resting contact's terms stirred by round-off.
-bool EventDetector::moves(const Key& k, const FrictionLaw& a, const FrictionLaw& b, double h) const {
+bool EventDetector::moves(const Key& k, const FrictionState& a, const FrictionState& b, double h) const {
   double mobility = index_.inv_mass[k.first] + index_.inv_inertia_r2[k.first];
   if (k.second >= 0) mobility += index_.inv_mass[k.second] + index_.inv_inertia_r2[k.second];
   const double df = glm::length(b.friction - a.friction) + glm::length(b.rolling - a.rolling) +

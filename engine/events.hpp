@@ -86,7 +86,7 @@ class EventDetector {
   ContactForce force_at(const Key& key, const double* x) const;
   bool touches(const Key& key, const double* x) const;   // depth > 0
   // Whether a friction switch of contact `key` between laws a and b, over a step of h seconds, can matter (events.cpp).
-  bool moves(const Key& key, const FrictionLaw& a, const FrictionLaw& b, double h) const;
+  bool moves(const Key& key, const FrictionState& a, const FrictionState& b, double h) const;
   bool released(const Key& key, const double* x) const;  // not touching, or its unclamped normal force <= 0
   // The earliest time in the span at which changed(key) holds for one of the keys, to `resolution`; `which`, when
   // given, gets that key.

@@ -54,18 +54,18 @@ TEST(ContactLaw, FrictionSwitches) {
   stronger.friction = {-0.5, 0.0, 0.1};
   in_band.friction = {-0.1, 0.0, 0.0};
   in_band.bands = kSlipInBand;
-  EXPECT_TRUE(friction_switched(FrictionLaw(sliding), FrictionLaw(reversed)));
-  EXPECT_TRUE(friction_switched(FrictionLaw(sliding), FrictionLaw(in_band)));
-  EXPECT_FALSE(friction_switched(FrictionLaw(sliding), FrictionLaw(stronger)));
+  EXPECT_TRUE(friction_switched(FrictionState(sliding), FrictionState(reversed)));
+  EXPECT_TRUE(friction_switched(FrictionState(sliding), FrictionState(in_band)));
+  EXPECT_FALSE(friction_switched(FrictionState(sliding), FrictionState(stronger)));
   ContactForce in_band_turned = in_band;
   in_band_turned.friction = {1e-17, 0.0, 0.0};
-  EXPECT_FALSE(friction_switched(FrictionLaw(in_band), FrictionLaw(in_band_turned)));
+  EXPECT_FALSE(friction_switched(FrictionState(in_band), FrictionState(in_band_turned)));
   ContactForce limited = in_band;
   limited.bands = kSlipInBand | kSlipLimited;
-  EXPECT_TRUE(friction_switched(FrictionLaw(in_band), FrictionLaw(limited)));  // the rate limit set in: a kink in N
+  EXPECT_TRUE(friction_switched(FrictionState(in_band), FrictionState(limited)));  // the rate limit set in: a kink in N
   ContactForce spin_a, spin_b;
   spin_a.spin_torque = 1e-4, spin_b.spin_torque = -1e-4;
-  EXPECT_TRUE(friction_switched(FrictionLaw(spin_a), FrictionLaw(spin_b)));
+  EXPECT_TRUE(friction_switched(FrictionState(spin_a), FrictionState(spin_b)));
 }
 
 // A trial across friction switches of several contacts reports the first as the one to cut at and the second as
