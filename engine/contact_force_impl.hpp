@@ -56,11 +56,12 @@ template <class Normal>
   // slide: 0 at no slip, 1 once slip > 1/k
   // A frictionless contact has no law to switch: its band bits stay clear.
   uint8_t slip_bands = 0;
+  const double mu = mat.friction_at(u_len);
   const double slide =
-      contact_law::smoothed_sign(smoothing, mat.friction * out.normal, k.slip_mobility, u_len, slip_bands, kSlipInBand, kSlipLimited);
-  if (mat.friction > 0) out.bands |= slip_bands;
-  if (mat.friction > 0 && u_len > 0) {
-    out.friction = -(mat.friction * out.normal * slide / u_len) * u;
+      contact_law::smoothed_sign(smoothing, mu * out.normal, k.slip_mobility, u_len, slip_bands, kSlipInBand, kSlipLimited);
+  if (mu > 0) out.bands |= slip_bands;
+  if (mu > 0 && u_len > 0) {
+    out.friction = -(mu * out.normal * slide / u_len) * u;
     out.force += out.friction;
   }
   // Rolling resistance: only while (nearly) rolling, i.e. weighted by 1 - slide (0 on a sliding contact: skipped),

@@ -5,8 +5,12 @@ namespace shotlab {
 // Phenolic resin, E = 5.6 GPa, nu = 0.34: E* = E / (2 (1 - nu^2)) = 3.17 GPa; two pool balls (R_eff = R/2):
 // C_s = 4/3 E* sqrt(R/2) = 5.0e8 N/m^1.5. Linear damping 20 N s/m gives the dimensionless damping
 // zeta = C_d m_eff^-0.6 C_s^-0.4 v^-0.2 = 0.029 at 1 m/s, i.e. restitution 0.95 (VALIDATION.md R6).
-// Friction 0.06: middle of the measured 0.03-0.08.
-ContactMaterial default_ball_ball() { return {.stiffness = 5.0e8, .damping = 20.0, .friction = 0.06}; }
+// Friction falls with the slip speed u: mu(u) = a + b exp(-c u), a = 0.00995, b = 0.108, c = 1.088 s/m, Alciatore's
+// fit to Marlow's measurements (docs/model.md#friction-speed), as friction = a + b and a fast ratio a / (a + b).
+ContactMaterial default_ball_ball() {
+  return {.stiffness = 5.0e8, .damping = 20.0, .friction = 0.00995 + 0.108, .friction_law = FrictionLaw::SpeedDependent,
+          .friction_fast_ratio = 0.00995 / (0.00995 + 0.108), .friction_decay = 1.088};
+}
 
 // The cloth over slate is softer than resin: C_s = 1e8 N/m^1.5 (a resting ball sinks 6.5 um). Damping 246 N s/m
 // gives zeta = 0.45 at 1 m/s for a 0.17 kg ball, restitution about 0.5 (measured ball-table value).

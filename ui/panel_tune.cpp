@@ -78,11 +78,32 @@ bool elasticity(Lab& lab, Tuning& t, int k, ContactMaterial& m) {
   return changed;
 }
 
+// Ball-ball friction: constant, or falling with the slip speed (the fit to measurements, docs/model.md#friction-speed).
+bool friction_law_editor(const Fields& f, ContactMaterial& m) {
+  bool c = false;
+  int law = static_cast<int>(m.friction_law);
+  f.label("friction law");
+  if (ImGui::Combo("##friction_law", &law, "constant\0falls with slip speed\0")) {
+    m.friction_law = static_cast<FrictionLaw>(law), c = true;
+    if (m.friction_law == FrictionLaw::SpeedDependent && m.friction_decay == 0) {
+      const ContactMaterial fit = default_ball_ball();  // start from the measured curve
+      m.friction = fit.friction, m.friction_fast_ratio = fit.friction_fast_ratio, m.friction_decay = fit.friction_decay;
+    }
+  }
+  mark("friction law");
+  if (m.friction_law != FrictionLaw::SpeedDependent) return c;
+  f.label("fast ratio");
+  c |= slider("##fast_ratio", m.friction_fast_ratio, 0.0, 1.0, "%.3f");
+  f.label("decay");
+  c |= slider("##decay", m.friction_decay, 0.0, 10.0, "%.3f s/m");
+  return c;
+}
+
 bool material_editor(Lab& lab, Tuning& t, int k) {
   ContactMaterial& m = lab.scene.model.materials[kPairs[k]];
   bool c = false;
-  const Fields f({"elasticity e", "stiffness", "damping law", "damping", "exponent", "friction", "rolling resist.",
-                  "spin friction"});
+  const Fields f({"elasticity e", "stiffness", "damping law", "damping", "exponent", "friction", "friction law",
+                  "fast ratio", "decay", "rolling resist.", "spin friction"});
   f.label("elasticity e");
   c |= elasticity(lab, t, k, m);
   char unit[32];
@@ -100,6 +121,8 @@ bool material_editor(Lab& lab, Tuning& t, int k) {
   c |= slider("##exponent", m.exponent, 1.0, 2.0, "%.2f");
   f.label("friction");
   c |= slider("##friction", m.friction, 0.0, 1.0, "%.3f");
+  mark(std::string("friction ") + kPairs[k]);
+  if (k == 0) c |= friction_law_editor(f, m);
   f.label("rolling resist.");
   c |= slider("##rolling", m.rolling_resistance, 0.0, 0.1, "%.4f");
   f.label("spin friction");

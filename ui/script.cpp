@@ -116,6 +116,7 @@ bool Script::edit(ScriptHost& host, const std::string& cmd, std::istringstream& 
     if (field == "stiffness") m.stiffness = v;
     else if (field == "damping") m.damping = v;
     else if (field == "friction") m.friction = v;
+    else if (field == "friction_law") m.friction_law = v > 0 ? FrictionLaw::SpeedDependent : FrictionLaw::Constant;
     else return fail(line_, "unknown material field"), true;
     lab.physics_changed();
   } else if (cmd == "integrator") {  // integrator METHOD [FIXED_STEP]

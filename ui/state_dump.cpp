@@ -77,7 +77,8 @@ json cue_json(const Lab& lab) {
 json physics_json(const Lab& lab) {
   json m = json::object();
   for (const auto& [name, mat] : lab.scene.model.materials)
-    m[name] = {{"stiffness", mat.stiffness}, {"damping", mat.damping}, {"friction", mat.friction}};
+    m[name] = {{"stiffness", mat.stiffness}, {"damping", mat.damping}, {"friction", mat.friction},
+               {"friction_law", mat.friction_law == FrictionLaw::Constant ? "constant" : "speed_dependent"}};
   return {{"materials", m}, {"changes", lab.physics_changes()}, {"compare_trails", lab.compare.size()}};
 }
 

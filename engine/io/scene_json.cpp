@@ -31,6 +31,17 @@ void read_material(const JsonNode& n, ContactMaterial& m) {
     else v.fail("unknown damping law '" + law + "' (linear, hunt_crossley)");
   });
   n.optional("friction", m.friction, &JsonNode::non_negative);
+  n.optional("friction_law", [&](const JsonNode& v) {
+    const std::string law = v.string();
+    if (law == "constant") m.friction_law = FrictionLaw::Constant;
+    else if (law == "speed_dependent") m.friction_law = FrictionLaw::SpeedDependent;
+    else v.fail("unknown friction law '" + law + "' (constant, speed_dependent)");
+  });
+  n.optional("friction_fast_ratio", [&](const JsonNode& v) {
+    m.friction_fast_ratio = v.non_negative();
+    if (m.friction_fast_ratio > 1) v.fail("must be between 0 and 1, got " + describe(v.raw()));
+  });
+  n.optional("friction_decay", m.friction_decay, &JsonNode::non_negative);
   n.optional("rolling_resistance", m.rolling_resistance, &JsonNode::non_negative);
   n.optional("spin_friction", m.spin_friction, &JsonNode::non_negative);
   n.finish();
@@ -309,8 +320,11 @@ Scene parse_scene(const json& doc, const std::string& source) {
     for (const auto& item : m.raw().items()) {
       const bool known = s.model.materials.count(item.key()) > 0;
       read_material(m[item.key()], s.model.materials[item.key()]);
-      if (!known && s.model.materials[item.key()].stiffness == 0)
+      const ContactMaterial& read = s.model.materials[item.key()];
+      if (!known && read.stiffness == 0)
         m[item.key()].fail("a new material needs a stiffness (the standard ones are ball_ball, ball_cloth, ball_cushion)");
+      if (item.key() != kBallBall && read.friction_law == FrictionLaw::SpeedDependent)
+        m[item.key()]["friction_law"].fail("speed_dependent is for ball_ball only (the bed's closed forms assume a constant coefficient)");
     }
   });
   n.optional("table", [&](const JsonNode& v) {

@@ -20,6 +20,9 @@ json material_json(const ContactMaterial& m) {
           {"exponent", m.exponent},
           {"damping_law", m.damping_law == DampingLaw::Linear ? "linear" : "hunt_crossley"},
           {"friction", m.friction},
+          {"friction_law", m.friction_law == FrictionLaw::Constant ? "constant" : "speed_dependent"},
+          {"friction_fast_ratio", m.friction_fast_ratio},
+          {"friction_decay", m.friction_decay},
           {"rolling_resistance", m.rolling_resistance},
           {"spin_friction", m.spin_friction}};
 }
