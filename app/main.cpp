@@ -5,7 +5,7 @@
 #include "app/commands.hpp"
 #include "app/paths.hpp"
 #include "app/run_command.hpp"
-#include "engine/io/scene_json.hpp"
+#include "shotlab/io/scene_json.hpp"
 
 namespace {
 

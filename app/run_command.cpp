@@ -7,10 +7,10 @@
 #include <sstream>
 
 #include "app/commands.hpp"
-#include "engine/io/atomic_file.hpp"
-#include "engine/io/result_json.hpp"
-#include "engine/io/scene_json.hpp"
-#include "engine/simulation.hpp"
+#include "shotlab/io/atomic_file.hpp"
+#include "shotlab/io/result_json.hpp"
+#include "shotlab/io/scene_json.hpp"
+#include "shotlab/simulation.hpp"
 
 namespace shotlab {
 

@@ -5,7 +5,7 @@
 #pragma once
 #include <cmath>
 
-#include "state.hpp"
+#include "shotlab/state.hpp"
 
 namespace shotlab {
 

@@ -1,4 +1,4 @@
-#include "colliders.hpp"
+#include "shotlab/colliders.hpp"
 
 #include <limits>
 

@@ -1,9 +1,9 @@
-#include "collision_probe.hpp"
+#include "shotlab/collision_probe.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "simulation.hpp"
+#include "shotlab/simulation.hpp"
 
 namespace shotlab {
 

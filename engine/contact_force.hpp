@@ -3,9 +3,9 @@
 #pragma once
 #include <cstdint>
 
-#include "contact.hpp"
-#include "material.hpp"
-#include "vec.hpp"
+#include "shotlab/contact.hpp"
+#include "shotlab/material.hpp"
+#include "shotlab/vec.hpp"
 
 namespace shotlab {
 

@@ -7,10 +7,11 @@
 #include <vector>
 
 #include "contact_force.hpp"
-#include "model.hpp"
+#include "shotlab/diagnostics.hpp"
+#include "shotlab/model.hpp"
 #include "model_index.hpp"
 #include "numerics.hpp"
-#include "state.hpp"
+#include "shotlab/state.hpp"
 
 namespace shotlab {
 
@@ -172,6 +173,11 @@ double straight_line_contact_time(const Vec3& d0, const Vec3& v, double reach);
 // s: a lower bound on when two balls come within `reach` (m) of each other while their offset strays from d0 + v t
 // by at most a t^2 / 2 (d0, v as above; a: a bound on their relative acceleration, m/s^2); valid up to h (s).
 double pair_contact_time(const Vec3& d0, const Vec3& v, double reach, double a, double h);
+
+// The energy of what the integrator moves (with_inactive = false): awake balls in play and the contacts
+// for_each_contact evaluates for them, i.e. without sleepers and the bed under a rolling ball, whose energy stays
+// constant until a regime changes. With `with_inactive`, the total, as energy(model, state) (diagnostics.cpp).
+Energy energy(const Model& model, const ModelIndex& index, const State& state, BroadPhase& broad, bool with_inactive);
 
 }  // namespace shotlab
 

@@ -1,4 +1,4 @@
-#include "cue.hpp"
+#include "shotlab/cue.hpp"
 
 #include <stdexcept>
 

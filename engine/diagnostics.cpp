@@ -1,4 +1,4 @@
-#include "diagnostics.hpp"
+#include "shotlab/diagnostics.hpp"
 
 #include "contacts.hpp"
 

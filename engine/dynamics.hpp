@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "contacts.hpp"
-#include "model.hpp"
-#include "state.hpp"
+#include "shotlab/model.hpp"
+#include "shotlab/state.hpp"
 
 namespace shotlab {
 

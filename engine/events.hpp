@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "contacts.hpp"
-#include "event.hpp"
+#include "shotlab/event.hpp"
 #include "hermite.hpp"
-#include "model.hpp"
-#include "state.hpp"
+#include "shotlab/model.hpp"
+#include "shotlab/state.hpp"
 
 namespace shotlab {
 

@@ -4,8 +4,8 @@
 #include <optional>
 
 #include "contacts.hpp"
-#include "model.hpp"
-#include "state.hpp"
+#include "shotlab/model.hpp"
+#include "shotlab/state.hpp"
 
 namespace shotlab {
 

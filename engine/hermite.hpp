@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "band_tail.hpp"
-#include "state.hpp"
+#include "shotlab/state.hpp"
 #include "swing.hpp"
 
 namespace shotlab {

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "check.hpp"
-#include "diagnostics.hpp"
+#include "shotlab/diagnostics.hpp"
 #include "partition.hpp"
 
 namespace shotlab {

@@ -17,11 +17,11 @@
 #include "events.hpp"
 #include "free_path.hpp"
 #include "hermite.hpp"
-#include "stats.hpp"
-#include "step_view.hpp"
-#include "model.hpp"
+#include "shotlab/stats.hpp"
+#include "shotlab/step_view.hpp"
+#include "shotlab/model.hpp"
 #include "regimes.hpp"
-#include "state.hpp"
+#include "shotlab/state.hpp"
 #include "stepper.hpp"
 
 namespace shotlab {

@@ -1,4 +1,4 @@
-#include "material.hpp"
+#include "shotlab/material.hpp"
 
 namespace shotlab {
 

@@ -1,4 +1,4 @@
-#include "model.hpp"
+#include "shotlab/model.hpp"
 
 #include <array>
 #include <stdexcept>

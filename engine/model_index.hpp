@@ -5,10 +5,10 @@
 #include <optional>
 #include <vector>
 
-#include "colliders.hpp"
-#include "material.hpp"
-#include "model.hpp"
-#include "vec.hpp"
+#include "shotlab/colliders.hpp"
+#include "shotlab/material.hpp"
+#include "shotlab/model.hpp"
+#include "shotlab/vec.hpp"
 
 namespace shotlab {
 

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "contacts.hpp"
-#include "model.hpp"
+#include "shotlab/model.hpp"
 #include "free_path.hpp"
-#include "state.hpp"
+#include "shotlab/state.hpp"
 
 namespace shotlab {
 

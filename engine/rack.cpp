@@ -1,4 +1,4 @@
-#include "rack.hpp"
+#include "shotlab/rack.hpp"
 
 #include <random>
 #include <string>

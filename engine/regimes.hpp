@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "contacts.hpp"
-#include "model.hpp"
+#include "shotlab/model.hpp"
 #include "band_tail.hpp"
-#include "state.hpp"
+#include "shotlab/state.hpp"
 #include "swing.hpp"
 
 namespace shotlab {

@@ -1,4 +1,4 @@
-#include "scene.hpp"
+#include "shotlab/scene.hpp"
 
 #include <set>
 #include <stdexcept>

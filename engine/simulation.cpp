@@ -1,4 +1,4 @@
-#include "simulation.hpp"
+#include "shotlab/simulation.hpp"
 
 #include "world.hpp"
 

@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "dynamics.hpp"
-#include "model.hpp"
-#include "state.hpp"
+#include "shotlab/model.hpp"
+#include "shotlab/state.hpp"
 
 namespace shotlab {
 

@@ -4,7 +4,7 @@
 #pragma once
 #include <optional>
 
-#include "state.hpp"
+#include "shotlab/state.hpp"
 
 namespace shotlab {
 

@@ -1,4 +1,4 @@
-#include "table.hpp"
+#include "shotlab/table.hpp"
 
 #include <array>
 #include <string>

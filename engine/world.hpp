@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "diagnostics.hpp"
+#include "shotlab/diagnostics.hpp"
 #include "island.hpp"
-#include "model.hpp"
+#include "shotlab/model.hpp"
 #include "partition.hpp"
-#include "state.hpp"
+#include "shotlab/state.hpp"
 
 namespace shotlab {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/rack.hpp"
+#include "shotlab/rack.hpp"
 
 namespace shotlab {
 

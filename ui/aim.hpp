@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "engine/scene.hpp"
+#include "shotlab/scene.hpp"
 
 namespace shotlab {
 

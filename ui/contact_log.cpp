@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <map>
 
-#include "engine/diagnostics.hpp"
-#include "engine/simulation.hpp"
+#include "shotlab/diagnostics.hpp"
+#include "shotlab/simulation.hpp"
 
 namespace shotlab {
 

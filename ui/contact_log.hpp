@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/event.hpp"
-#include "engine/scene.hpp"
+#include "shotlab/event.hpp"
+#include "shotlab/scene.hpp"
 
 namespace shotlab {
 

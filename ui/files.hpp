@@ -1,9 +1,9 @@
-// Files the shot lab writes and browses. Everything it writes is written atomically (engine/io/atomic_file.hpp).
+// Files the shot lab writes and browses. Everything it writes is written atomically (engine/include/shotlab/io/atomic_file.hpp).
 #pragma once
 #include <string>
 #include <vector>
 
-#include "engine/io/atomic_file.hpp"
+#include "shotlab/io/atomic_file.hpp"
 
 namespace shotlab {
 

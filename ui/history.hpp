@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/scene.hpp"
+#include "shotlab/scene.hpp"
 
 namespace shotlab {
 

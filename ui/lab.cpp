@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "engine/io/scene_json.hpp"
+#include "shotlab/io/scene_json.hpp"
 
 namespace shotlab {
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/scene.hpp"
+#include "shotlab/scene.hpp"
 #include "ui/contact_log.hpp"
 #include "ui/history.hpp"
 #include "ui/layout.hpp"

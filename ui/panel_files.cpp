@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <sstream>
 
-#include "engine/io/result_json.hpp"
-#include "engine/io/scene_json.hpp"
+#include "shotlab/io/result_json.hpp"
+#include "shotlab/io/scene_json.hpp"
 #include "ui/files.hpp"
 #include "ui/panels.hpp"
 #include "ui/widgets.hpp"

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/cue.hpp"
+#include "shotlab/cue.hpp"
 #include "ui/aim.hpp"
 #include "ui/panels.hpp"
 #include "ui/ticks.hpp"

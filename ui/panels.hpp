@@ -7,7 +7,7 @@
 #include <future>
 #include <string>
 
-#include "engine/collision_probe.hpp"
+#include "shotlab/collision_probe.hpp"
 #include "ui/camera.hpp"
 #include "ui/lab.hpp"
 #include "ui/layout.hpp"

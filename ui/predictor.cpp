@@ -2,7 +2,7 @@
 
 #include <chrono>
 
-#include "engine/simulation.hpp"
+#include "shotlab/simulation.hpp"
 
 namespace shotlab {
 

@@ -11,8 +11,8 @@
 #include <thread>
 #include <vector>
 
-#include "engine/event.hpp"
-#include "engine/scene.hpp"
+#include "shotlab/event.hpp"
+#include "shotlab/scene.hpp"
 
 namespace shotlab {
 

@@ -6,7 +6,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <string>
 
-#include "engine/scene.hpp"
+#include "shotlab/scene.hpp"
 
 namespace shotlab {
 

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "engine/io/scene_json.hpp"
+#include "shotlab/io/scene_json.hpp"
 #include "ui/files.hpp"
 #include "ui/panels.hpp"
 

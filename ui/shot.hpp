@@ -10,9 +10,9 @@
 #include <memory>
 #include <vector>
 
-#include "engine/diagnostics.hpp"
-#include "engine/scene.hpp"
-#include "engine/simulation.hpp"
+#include "shotlab/diagnostics.hpp"
+#include "shotlab/scene.hpp"
+#include "shotlab/simulation.hpp"
 
 namespace shotlab {
 

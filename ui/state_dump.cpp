@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "engine/simulation.hpp"
+#include "shotlab/simulation.hpp"
 #include "ui/files.hpp"
 
 namespace shotlab {

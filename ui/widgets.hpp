@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/cue.hpp"
+#include "shotlab/cue.hpp"
 #include "ui/layout.hpp"
 
 namespace shotlab {

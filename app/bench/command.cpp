@@ -17,7 +17,7 @@
 #include "app/bench/scaling.hpp"
 #include "app/commands.hpp"
 #include "app/paths.hpp"
-#include "engine/io/json_reader.hpp"
+#include "shotlab/io/json_reader.hpp"
 
 namespace shotlab {
 namespace {

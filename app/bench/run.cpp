@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "engine/io/scene_json.hpp"
+#include "shotlab/io/scene_json.hpp"
 
 namespace shotlab {
 namespace {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "app/bench/cases.hpp"
-#include "engine/simulation.hpp"
+#include "shotlab/simulation.hpp"
 
 namespace shotlab {
 

@@ -8,7 +8,7 @@
 #include <random>
 
 #include "app/bench/cases.hpp"
-#include "engine/simulation.hpp"
+#include "shotlab/simulation.hpp"
 
 namespace shotlab {
 namespace {

@@ -5,7 +5,7 @@
 #pragma once
 #include <string>
 
-#include "engine/scene.hpp"
+#include "shotlab/scene.hpp"
 
 namespace shotlab {
 

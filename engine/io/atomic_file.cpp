@@ -1,4 +1,4 @@
-#include "atomic_file.hpp"
+#include "shotlab/io/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -9,7 +9,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "json_reader.hpp"
+#include "shotlab/io/json_reader.hpp"
 
 namespace shotlab {
 

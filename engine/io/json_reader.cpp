@@ -1,4 +1,4 @@
-#include "json_reader.hpp"
+#include "shotlab/io/json_reader.hpp"
 
 #include <cmath>
 

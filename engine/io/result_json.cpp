@@ -1,4 +1,4 @@
-#include "result_json.hpp"
+#include "shotlab/io/result_json.hpp"
 
 namespace shotlab {
 namespace {

@@ -1,4 +1,4 @@
-#include "scene_json.hpp"
+#include "shotlab/io/scene_json.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -11,8 +11,8 @@
 #include <set>
 #include <sstream>
 
-#include "atomic_file.hpp"
-#include "engine/rack.hpp"
+#include "shotlab/io/atomic_file.hpp"
+#include "shotlab/rack.hpp"
 
 namespace shotlab {
 namespace {

@@ -2,9 +2,9 @@
 // is as its spec generates it is written as the spec, so a saved scene keeps its seed and jitter.
 #include <cmath>
 
-#include "atomic_file.hpp"
-#include "engine/rack.hpp"
-#include "scene_json.hpp"
+#include "shotlab/io/atomic_file.hpp"
+#include "shotlab/rack.hpp"
+#include "shotlab/io/scene_json.hpp"
 
 namespace shotlab {
 namespace {

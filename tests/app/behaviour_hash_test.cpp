@@ -14,8 +14,8 @@
 #include <sstream>
 
 #include "app/bench/cases.hpp"
-#include "engine/io/scene_json.hpp"
-#include "engine/simulation.hpp"
+#include "shotlab/io/scene_json.hpp"
+#include "shotlab/simulation.hpp"
 
 namespace shotlab {
 namespace {

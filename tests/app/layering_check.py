@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""The engine's public face stays closed: ui/ and app/ include only the engine's public headers, and a public header
-includes only other public headers, so nothing of the stepping's internals reaches a user even indirectly.
+"""The engine's public face stays closed: ui/ and app/ include the engine only through its public headers
+(engine/include/shotlab/, included as "shotlab/..."), and a public header includes only other public headers, so
+nothing of the stepping's internals reaches a user even indirectly.
 
-usage: layering_check.py SOURCE_DIR PUBLIC_HEADER...   (the list is engine/CMakeLists.txt's SHOTLAB_PUBLIC_HEADERS)
+usage: layering_check.py SOURCE_DIR
 """
 import os
 import re
@@ -11,36 +12,34 @@ import sys
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
 
-def engine_includes(path, root):
-    """The engine headers a file includes, as paths relative to engine/."""
-    here = os.path.relpath(os.path.dirname(path), os.path.join(root, 'engine'))
-    out = []
+def includes(path):
     with open(path, encoding='utf-8') as f:
-        for name in INCLUDE.findall(f.read()):
-            if name.startswith('engine/'):
-                out.append(name[len('engine/'):])
-            elif not here.startswith('..'):  # an engine file's own relative include
-                candidate = os.path.normpath(os.path.join(here, name))
-                if os.path.exists(os.path.join(root, 'engine', candidate)):
-                    out.append(candidate)
-    return out
+        return INCLUDE.findall(f.read())
+
+
+def sources(folder):
+    for dirpath, _, files in os.walk(folder):
+        for name in sorted(files):
+            if name.endswith(('.cpp', '.hpp', '.h')):
+                yield os.path.join(dirpath, name)
 
 
 def main():
-    root, public = sys.argv[1], set(sys.argv[2:])
+    root = sys.argv[1]
+    public_dir = os.path.join(root, 'engine', 'include', 'shotlab')
+    public = {os.path.relpath(p, public_dir) for p in sources(public_dir)}
     problems = []
-    for header in sorted(public):
-        for inc in engine_includes(os.path.join(root, 'engine', header), root):
-            if inc not in public:
-                problems.append(f'engine/{header} (public) includes engine/{inc}, which is not public')
+    for path in sources(public_dir):
+        for name in includes(path):
+            if not (name.startswith('shotlab/') and name[len('shotlab/'):] in public):
+                problems.append(f'{os.path.relpath(path, root)} (public) includes "{name}", which is not public')
     for folder in ('ui', 'app'):
-        for dirpath, _, files in os.walk(os.path.join(root, folder)):
-            for name in sorted(files):
-                if name.endswith(('.cpp', '.hpp')):
-                    path = os.path.join(dirpath, name)
-                    for inc in engine_includes(path, root):
-                        if inc not in public:
-                            problems.append(f'{os.path.relpath(path, root)} includes engine/{inc}, an engine internal')
+        for path in sources(os.path.join(root, folder)):
+            for name in includes(path):
+                if name.startswith('engine/'):
+                    problems.append(f'{os.path.relpath(path, root)} includes "{name}", an engine internal')
+                elif name.startswith('shotlab/') and name[len('shotlab/'):] not in public:
+                    problems.append(f'{os.path.relpath(path, root)} includes "{name}", which does not exist')
     for p in problems:
         print('FAIL', p)
     print(f'layering: {len(public)} public engine headers, {len(problems)} problems')

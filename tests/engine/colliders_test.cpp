@@ -3,9 +3,9 @@
 
 #include <algorithm>
 
-#include "engine/colliders.hpp"
+#include "shotlab/colliders.hpp"
 #include "engine/contacts.hpp"
-#include "engine/table.hpp"
+#include "shotlab/table.hpp"
 
 namespace shotlab {
 namespace {

@@ -1,7 +1,7 @@
 // Cue strike: the rigid-cue impulse model against results derived independently of it.
 #include <gtest/gtest.h>
 
-#include "engine/cue.hpp"
+#include "shotlab/cue.hpp"
 #include "support.hpp"
 
 namespace shotlab::test {

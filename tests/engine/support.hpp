@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "engine/io/scene_json.hpp"
-#include "engine/simulation.hpp"
+#include "shotlab/io/scene_json.hpp"
+#include "shotlab/simulation.hpp"
 
 namespace shotlab::test {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "engine/collision_probe.hpp"
+#include "shotlab/collision_probe.hpp"
 #include "support.hpp"
 
 namespace shotlab::test {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "engine/collision_probe.hpp"
+#include "shotlab/collision_probe.hpp"
 #include "tests/engine/support.hpp"
 #include "ui/aim.hpp"
 #include "ui/contact_log.hpp"

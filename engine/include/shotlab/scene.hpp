@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "cue.hpp"
-#include "model.hpp"
-#include "state.hpp"
-#include "table.hpp"
+#include "shotlab/cue.hpp"
+#include "shotlab/model.hpp"
+#include "shotlab/state.hpp"
+#include "shotlab/table.hpp"
 
 namespace shotlab {
 

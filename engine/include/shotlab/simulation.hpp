@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "diagnostics.hpp"
-#include "event.hpp"
-#include "model.hpp"
-#include "state.hpp"
-#include "stats.hpp"
-#include "step_view.hpp"
+#include "shotlab/diagnostics.hpp"
+#include "shotlab/event.hpp"
+#include "shotlab/model.hpp"
+#include "shotlab/state.hpp"
+#include "shotlab/stats.hpp"
+#include "shotlab/step_view.hpp"
 
 namespace shotlab {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "vec.hpp"
+#include "shotlab/vec.hpp"
 
 namespace shotlab {
 

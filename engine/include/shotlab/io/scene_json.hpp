@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/scene.hpp"
-#include "json_reader.hpp"
+#include "shotlab/scene.hpp"
+#include "shotlab/io/json_reader.hpp"
 
 namespace shotlab {
 

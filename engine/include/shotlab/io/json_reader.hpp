@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/vec.hpp"
+#include "shotlab/vec.hpp"
 
 namespace shotlab {
 

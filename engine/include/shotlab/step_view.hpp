@@ -4,8 +4,8 @@
 #pragma once
 #include <vector>
 
-#include "model.hpp"
-#include "state.hpp"
+#include "shotlab/model.hpp"
+#include "shotlab/state.hpp"
 
 namespace shotlab {
 

@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include "engine/simulation.hpp"
+#include "shotlab/simulation.hpp"
 
 namespace shotlab {
 

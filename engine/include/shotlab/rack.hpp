@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "scene.hpp"
+#include "shotlab/scene.hpp"
 
 namespace shotlab {
 

@@ -2,7 +2,7 @@
 #pragma once
 #include <cstdint>
 
-#include "vec.hpp"
+#include "shotlab/vec.hpp"
 
 namespace shotlab {
 

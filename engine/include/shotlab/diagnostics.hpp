@@ -2,14 +2,11 @@
 #pragma once
 #include <vector>
 
-#include "contact.hpp"
-#include "model.hpp"
-#include "state.hpp"
+#include "shotlab/contact.hpp"
+#include "shotlab/model.hpp"
+#include "shotlab/state.hpp"
 
 namespace shotlab {
-
-struct ModelIndex;  // model_index.hpp
-struct BroadPhase;  // contacts.hpp  // contacts.hpp
 
 struct Energy {
   double kinetic = 0;    // J, translation + rotation
@@ -26,10 +23,6 @@ struct BallMotion {
 BallMotion ball_motion(const Model& model, const State& state, int ball);
 
 Energy energy(const Model& model, const State& state);
-// The energy of what the integrator moves (with_inactive = false): awake balls in play and the contacts
-// for_each_contact evaluates for them, i.e. without sleepers and the bed under a rolling ball, whose energy stays
-// constant until a regime changes. With `with_inactive`, the total, as energy(model, state).
-Energy energy(const Model& model, const ModelIndex& index, const State& state, BroadPhase& broad, bool with_inactive);
 Vec3 momentum(const Model& model, const State& state);  // kg m/s, balls in play
 std::vector<Contact> contacts(const Model& model, const State& state);
 

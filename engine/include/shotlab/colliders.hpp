@@ -7,7 +7,7 @@
 #include <variant>
 #include <vector>
 
-#include "vec.hpp"
+#include "shotlab/vec.hpp"
 
 namespace shotlab {
 

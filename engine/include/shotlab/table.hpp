@@ -2,7 +2,7 @@
 // along the rails at the nose height, pocket jaws as capsules. The playing surface is centred on the origin:
 // x along the length, z along the width, y up.
 #pragma once
-#include "model.hpp"
+#include "shotlab/model.hpp"
 
 namespace shotlab {
 

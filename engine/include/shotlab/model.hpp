@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "colliders.hpp"
-#include "material.hpp"
-#include "vec.hpp"
+#include "shotlab/colliders.hpp"
+#include "shotlab/material.hpp"
+#include "shotlab/vec.hpp"
 
 namespace shotlab {
 

@@ -14,7 +14,7 @@
 #pragma once
 #include <string>
 
-#include "vec.hpp"
+#include "shotlab/vec.hpp"
 
 namespace shotlab {
 

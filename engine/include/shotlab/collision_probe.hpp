@@ -4,8 +4,8 @@
 #pragma once
 #include <vector>
 
-#include "material.hpp"
-#include "model.hpp"
+#include "shotlab/material.hpp"
+#include "shotlab/model.hpp"
 
 namespace shotlab {
 
