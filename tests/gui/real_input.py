@@ -358,6 +358,15 @@ def developer(binary, root, display, work):
     s = app.wait(lambda s: s["readouts"].get("contact_time ball_ball") == before, 30, "the readout comes back")
     check(s["physics"]["materials"]["ball_ball"]["stiffness"] == stiffness and not s["physics"]["changes"],
           "Reset restores the scene's values")
+    # The ball-ball friction law: its combo opens below itself; the first entry is the constant coefficient.
+    law = app.widget(s, "friction law")
+    check(s["physics"]["materials"]["ball_ball"]["friction_law"] == "speed_dependent", "friction falls with speed")
+    app.click_widget(s, "friction law")
+    time.sleep(0.5)
+    app.click(law["x"] + law["w"] * 0.5, law["y"] + law["h"] * 1.5)
+    s = app.wait(lambda s: s["physics"]["materials"]["ball_ball"]["friction_law"] == "constant", 30,
+                 "the constant law is chosen from the combo")
+    check(any("friction_law" in c for c in s["physics"]["changes"]), "the law's change is listed")
     app.close()
 
 
