@@ -69,31 +69,4 @@ CollisionProbe probe_collision(const ContactMaterial& material, double mass, dou
   return out;
 }
 
-double damping_for_restitution(const ContactMaterial& material, double mass, double radius, double speed,
-                               bool ball_ball, double restitution, const IntegratorOptions& integrator) {
-  // Bisection on log10 of the damping, bracketed by decades from the material's own damping: few probes land in
-  // the overdamped range, where a probe is slowest (the balls creep apart).
-  constexpr double kTolerance = 2e-4;  // of the restitution: below what the readouts show
-  auto e_at = [&](double log_damping) {
-    ContactMaterial m = material;
-    m.damping = std::pow(10.0, log_damping);
-    return probe_collision(m, mass, radius, speed, ball_ball, integrator).restitution;
-  };
-  const double start = std::log10(material.damping > 0 ? material.damping : 1.0);
-  double lo = start, hi = start;
-  if (e_at(start) > restitution) {
-    for (int k = 0; e_at(hi += 1) > restitution; lo = hi)
-      if (++k == 12) return std::pow(10.0, hi);
-  } else {
-    for (int k = 0; e_at(lo -= 1) <= restitution; hi = lo)
-      if (++k == 12) return 0.0;
-  }
-  for (int k = 0; k < 40; ++k) {
-    const double mid = 0.5 * (lo + hi), e = e_at(mid);
-    if (std::abs(e - restitution) < kTolerance) return std::pow(10.0, mid);
-    (e > restitution ? lo : hi) = mid;
-  }
-  return std::pow(10.0, 0.5 * (lo + hi));
-}
-
 }  // namespace shotlab

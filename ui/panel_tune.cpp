@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "shotlab/restitution.hpp"
 #include "ui/panels.hpp"
 #include "ui/widgets.hpp"
 
@@ -70,9 +71,8 @@ bool elasticity(Lab& lab, Tuning& t, int k, ContactMaterial& m) {
   if (ImGui::IsItemDeactivatedAfterEdit() && !t.damping_job.valid()) {
     const BallSpec ball = probe_ball(lab);
     const double speed = lab.settings.impact_speed;
-    const IntegratorOptions integ = lab.scene.model.integrator;
     t.damping_job = std::async(std::launch::async, [=] {
-      return std::make_pair(k, damping_for_restitution(m, ball.mass, ball.radius, speed, k == 0, e, integ));
+      return std::make_pair(k, damping_for_restitution(m, effective_mass(k == 0, ball.mass), speed, e));
     });
   }
   return changed;

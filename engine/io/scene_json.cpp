@@ -13,6 +13,7 @@
 
 #include "shotlab/io/atomic_file.hpp"
 #include "shotlab/rack.hpp"
+#include "shotlab/restitution.hpp"
 
 namespace shotlab {
 namespace {
@@ -43,6 +44,12 @@ void read_material(const JsonNode& n, ContactMaterial& m) {
   n.optional("friction_decay", m.friction_decay, &JsonNode::non_negative);
   n.optional("rolling_resistance", m.rolling_resistance, &JsonNode::non_negative);
   n.optional("spin_friction", m.spin_friction, &JsonNode::non_negative);
+  n.optional("restitution", [&](const JsonNode& v) {
+    m.restitution = v.non_negative();  // 0: off, the damping as given
+    if (m.restitution > 1) v.fail("must be at most 1, got " + describe(v.raw()));
+  });
+  n.optional("restitution_speed", m.restitution_speed, &JsonNode::positive);
+  n.optional("contact_time", m.contact_time, &JsonNode::non_negative);
   n.finish();
 }
 
@@ -216,6 +223,17 @@ void read_rods(const JsonNode& v, Scene& s) {
   }
 }
 
+// Materials given by their restitution get their damping (and stiffness) here, for impacts of the scene's first ball
+// (of its ball kind when it has none): docs/model.md#restitution.
+void derive_restitution(Scene& s, const BallKind& kind, const std::string& source) {
+  const double mass = s.balls.empty() ? kind.mass : s.balls[0].spec.mass;
+  for (auto& [name, m] : s.model.materials) {
+    if (m.restitution <= 0) continue;
+    const std::string problem = apply_restitution(m, effective_mass(name == kBallBall, mass));
+    if (!problem.empty()) throw InputError(source + ": materials." + name + ".restitution: " + problem);
+  }
+}
+
 }  // namespace
 
 Scene parse_scene(const json& doc, const std::string& source) {
@@ -266,6 +284,7 @@ Scene parse_scene(const json& doc, const std::string& source) {
     read_cue(v, *s.cue);
   });
   n.finish();
+  derive_restitution(s, *kind, source);
   try {
     validate(s);
   } catch (const std::invalid_argument& e) {

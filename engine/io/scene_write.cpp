@@ -24,7 +24,10 @@ json material_json(const ContactMaterial& m) {
           {"friction_fast_ratio", m.friction_fast_ratio},
           {"friction_decay", m.friction_decay},
           {"rolling_resistance", m.rolling_resistance},
-          {"spin_friction", m.spin_friction}};
+          {"spin_friction", m.spin_friction},
+          {"restitution", m.restitution},
+          {"restitution_speed", m.restitution_speed},
+          {"contact_time", m.contact_time}};
 }
 
 json table_json(const TableSpec& t) {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "shotlab/collision_probe.hpp"
+#include "shotlab/restitution.hpp"
 #include "tests/engine/support.hpp"
 #include "ui/aim.hpp"
 #include "ui/contact_log.hpp"
@@ -96,7 +97,7 @@ TEST(Elasticity, DampingForRestitutionHitsTheWantedValue) {
   const ContactMaterial m = s.model.materials.at(kBallBall);
   for (double e : {0.95, 0.8}) {
     ContactMaterial tuned = m;
-    tuned.damping = damping_for_restitution(m, test::kM, kR, 2.0, true, e);
+    tuned.damping = damping_for_restitution(m, effective_mass(true, test::kM), 2.0, e);
     EXPECT_NEAR(probe_collision(tuned, test::kM, kR, 2.0, true).restitution, e, 0.002);
   }
 }

@@ -23,11 +23,4 @@ struct CollisionProbe {
 CollisionProbe probe_collision(const ContactMaterial& material, double mass, double radius, double speed,
                                bool ball_ball, const IntegratorOptions& integrator = {});
 
-// The damping (in the material's law and units) for which the same collision has restitution `restitution` in
-// (0, 1), found by bisection on probe_collision (the restitution falls as the damping grows, under both laws).
-// Returns 0 when even undamped the collision keeps less than that, and the largest damping tried when the
-// restitution wanted is below what it reaches.
-double damping_for_restitution(const ContactMaterial& material, double mass, double radius, double speed,
-                               bool ball_ball, double restitution, const IntegratorOptions& integrator = {});
-
 }  // namespace shotlab

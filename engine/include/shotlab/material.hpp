@@ -36,6 +36,12 @@ struct ContactMaterial {
   double spin_friction = 0;       // mu_sp: torque mu_sp R |F_n| against spin about the contact normal (dimensionless;
                                   // angular deceleration 5 mu_sp g / (2 R) for a ball resting on the table)
 
+  // Restitution as a setting (restitution.hpp): when restitution > 0, the damping (and with contact_time > 0 the
+  // stiffness) is derived at load so that a head-on impact at restitution_speed has this restitution and duration.
+  double restitution = 0;         // e, 0 to 1; 0: the damping is as given
+  double restitution_speed = 1;   // m/s, the impact speed e (and contact_time) refers to
+  double contact_time = 0;        // s; 0: the stiffness is as given
+
   // The sliding friction coefficient at slip speed u (m/s).
   double friction_at(double u) const {
     if (friction_law == FrictionLaw::Constant) return friction;
