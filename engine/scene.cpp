@@ -40,6 +40,8 @@ void validate(const Scene& s) {
                s.balls[i].spec.id + "' by " + std::to_string(-gap * 1e3) +
                " mm (set \"allow_overlap\": true if this is intended)");
       }
+  if (s.table && !(s.table->nose_height < 2 * s.table->ball_radius))  // a resting ball could not reach it
+    fail("table.nose_height: must be below the ball's diameter (" + std::to_string(2 * s.table->ball_radius) + " m)");
   for (size_t r = 0; r < s.model.rods.size(); ++r)
     if (s.model.rods[r].ball < 0 || s.model.rods[r].ball >= static_cast<int>(s.balls.size()))
       fail("rods[" + std::to_string(r) + "].ball: no such ball");

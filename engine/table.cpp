@@ -1,6 +1,8 @@
 #include "shotlab/table.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 
 namespace shotlab {
@@ -13,6 +15,7 @@ TableSpec carom_table() {
   t.length = 2.84;
   t.width = 1.42;
   t.nose_height = 0.635 * 0.0615;
+  t.ball_radius = 0.0615 / 2;
   return t;
 }
 
@@ -20,21 +23,31 @@ namespace {
 
 Vec3 at(double x, double z, double y = 0.0) { return {x, y, z}; }
 
-// Capsule whose surface nearest the table reaches the nose line: the axis is set back by its radius.
+// The capsule's axis point over a point of the nose line on the bed.
+Vec3 axis_point(const Vec3& on_nose_line, const Vec3& outward, const TableSpec& t) {
+  const NoseAxis n = nose_axis(t);
+  return on_nose_line + Vec3{0.0, n.up, 0.0} + n.out * outward;
+}
+
 void add_cushion(Model& m, const std::string& name, const Vec3& a, const Vec3& b, const Vec3& outward, const TableSpec& t) {
-  const Vec3 lift{0.0, t.nose_height, 0.0};
-  m.colliders.push_back({name, Capsule{a + lift + t.cushion_radius * outward, b + lift + t.cushion_radius * outward,
-                                       t.cushion_radius},
-                         kBallCushion});
+  m.colliders.push_back({name, Capsule{axis_point(a, outward, t), axis_point(b, outward, t), t.cushion_radius}, kBallCushion});
 }
 
 // Jaw (pocket facing): from a cushion end straight away from the table, so that a ball can strike the facing.
 void add_jaw(Model& m, const std::string& name, const Vec3& end, const Vec3& outward, const TableSpec& t) {
-  const Vec3 a = end + Vec3{0.0, t.nose_height, 0.0} + t.cushion_radius * outward;  // the cushion capsule's end
+  const Vec3 a = axis_point(end, outward, t);  // the cushion capsule's end
   m.colliders.push_back({name, Capsule{a, a + t.jaw_length * outward, t.cushion_radius}, kBallCushion});
 }
 
 }  // namespace
+
+// The resting ball's centre (height R), its contact point (height h) and the capsule's axis lie on one line, tilted
+// by asin((h - R) / R) above the horizontal; the contact point is on the nose line.
+NoseAxis nose_axis(const TableSpec& t) {
+  const double tilt_sin = (t.nose_height - t.ball_radius) / t.ball_radius;
+  const double tilt_cos = std::sqrt(std::max(0.0, 1 - tilt_sin * tilt_sin));
+  return {t.nose_height + t.cushion_radius * tilt_sin, t.cushion_radius * tilt_cos};
+}
 
 void add_table(Model& m, const TableSpec& t) {
   const double hx = t.length / 2, hz = t.width / 2, rw = t.rail_width;

@@ -71,6 +71,7 @@ constexpr Field<TableSpec, double> kTableFields[] = {
     {"length", &TableSpec::length, &JsonNode::positive},
     {"width", &TableSpec::width, &JsonNode::positive},
     {"nose_height", &TableSpec::nose_height, &JsonNode::positive},
+    {"ball_radius", &TableSpec::ball_radius, &JsonNode::positive},
     {"cushion_radius", &TableSpec::cushion_radius, &JsonNode::positive},
     {"corner_mouth", &TableSpec::corner_mouth, &JsonNode::positive},
     {"side_mouth", &TableSpec::side_mouth, &JsonNode::positive},

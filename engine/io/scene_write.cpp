@@ -35,6 +35,7 @@ json table_json(const TableSpec& t) {
           {"length", t.length},
           {"width", t.width},
           {"nose_height", t.nose_height},
+          {"ball_radius", t.ball_radius},
           {"cushion_radius", t.cushion_radius},
           {"corner_mouth", t.corner_mouth},
           {"side_mouth", t.side_mouth},

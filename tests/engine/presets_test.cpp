@@ -64,9 +64,12 @@ TEST(Demonstrations, NewtonsCradle) {
 TEST(Demonstrations, JumpShotStopsBouncing) {
   auto sim = simulate(load_scene(preset("jump.json")));
   advance_to(*sim, 3.0);
+  // The bounces of the jump, up to the first cushion (whose downward push may lift the ball off the cloth once more).
   std::vector<double> landings;
-  for (const Event& e : sim->events())
+  for (const Event& e : sim->events()) {
+    if (e.kind == "contact_begin" && e.bodies.back().rfind("cushion", 0) == 0) break;
     if (e.kind == "landed") landings.push_back(e.time);
+  }
   ASSERT_GE(landings.size(), 2u);
   // Each flight is shorter than the one before (damping), and in the end the ball rolls.
   for (size_t k = 2; k < landings.size(); ++k) EXPECT_LT(landings[k] - landings[k - 1], landings[k - 1] - landings[k - 2]);

@@ -12,7 +12,9 @@ struct TableSpec {
   TableKind kind = TableKind::Pool;
   double length = 2.54;          // m, between cushion noses (9 ft pool)
   double width = 1.27;           // m
-  double nose_height = 0.0365;   // m above the bed: 63.9 % of a 57.15 mm ball (WPA: 62.5-64.5 %)
+  double nose_height = 0.0365;   // m above the bed where a resting ball touches the cushion: 63.9 % of a 57.15 mm
+                                 // ball (WPA: 62.5-64.5 %)
+  double ball_radius = 0.028575; // m, of the resting ball nose_height is measured with (the table's own balls)
   double cushion_radius = 0.01;  // m, radius of the capsule that models the rubber nose
   double corner_mouth = 0.116;   // m, pool only: opening between the cushion ends of a corner pocket
   double side_mouth = 0.13;      // m, pool only: opening of a side pocket
@@ -25,6 +27,13 @@ struct TableSpec {
 // Standard specifications.
 TableSpec pool_table();   // 9 ft pool: 2.54 x 1.27 m, six pockets
 TableSpec carom_table();  // match carom: 2.84 x 1.42 m, no pockets, nose at 63.5 % of a 61.5 mm ball
+
+// Where a cushion capsule's axis lies from the nose line at bed level, in m: `up`, and `out` away from the table. A
+// resting ball of ball_radius then touches the capsule at nose_height, on the nose line (docs/model.md#table).
+struct NoseAxis {
+  double up, out;
+};
+NoseAxis nose_axis(const TableSpec& spec);
 
 // Appends the table's colliders (materials ball_cloth and ball_cushion) and pockets to the model.
 void add_table(Model& model, const TableSpec& spec);
