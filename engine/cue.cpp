@@ -1,5 +1,7 @@
 #include "shotlab/cue.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace shotlab {
@@ -16,7 +18,19 @@ StrikeResult strike(const CueStrike& cue, double mass, double radius) {
   const double inertia = 0.4 * mass * radius * radius;
   const Vec3 qxd = glm::cross(q, d);
   const double j = (1.0 + cue.tip_restitution) * cue.speed / (1.0 / mass + 1.0 / cue.cue_mass + glm::dot(qxd, qxd) / inertia);
-  return {j / mass * d, j / inertia * qxd, j, std::sqrt(offset2) > cue.miscue_limit};
+  // Squirt turns the velocity about the vertical, to the left for right side (counter-clockwise from above: +).
+  const double turn = cue.end_mass > 0 ? std::copysign(squirt_angle(cue.side, mass / cue.end_mass), cue.side) : 0.0;
+  const Vec3 v = j / mass * d;
+  const Vec3 turned{std::cos(turn) * v.x + std::sin(turn) * v.z, v.y, -std::sin(turn) * v.x + std::cos(turn) * v.z};
+  return {turned, j / inertia * qxd, j, turn, std::sqrt(offset2) > cue.miscue_limit};
+}
+
+// The tip does not slip on the ball while the shaft's end (mass m_e) is pushed sideways: the ball's sideways
+// momentum is the end's, opposite, and the contact point's sideways speed, v_y + (5/2) c (c v_y + s v_x), is the
+// end's, which gives the ratio v_y / v_x (docs/model.md#cue).
+double squirt_angle(double side, double mass_ratio) {
+  const double s = std::abs(side), c = std::sqrt(std::max(0.0, 1 - s * s));
+  return std::atan(2.5 * s * c / (1 + mass_ratio + 2.5 * c * c));
 }
 
 }  // namespace shotlab

@@ -120,6 +120,7 @@ void aim_readouts(const Lab& lab, const CueStrike& cue) {
   if (c < 0) return;
   const StrikeResult r = strike(cue, lab.scene.balls[c].spec.mass, lab.scene.balls[c].spec.radius);
   ImGui::Text("cue ball leaves at %.2f m/s", glm::length(r.velocity));
+  if (r.squirt != 0) ImGui::Text("squirt %.2f deg %s of the cue line", std::abs(r.squirt) * 180 / M_PI, r.squirt > 0 ? "left" : "right");
   if (const auto line = aim_line(lab.scene); line && line->hit >= 0)
     ImGui::Text("first ball %s, cut %.1f deg", lab.scene.balls[line->hit].spec.id.c_str(), line->cut_deg);
   if (const auto miss = lab.target_miss())

@@ -174,6 +174,7 @@ void read_cue(const JsonNode& n, CueStrike& c) {
   n.optional("height", c.height, &JsonNode::number);
   if (c.side * c.side + c.height * c.height >= 1) n.fail("side, height: the tip offset must lie inside the ball");
   n.optional("cue_mass", c.cue_mass, &JsonNode::positive);
+  n.optional("end_mass", c.end_mass, &JsonNode::non_negative);
   n.optional("tip_restitution", [&](const JsonNode& v) {
     c.tip_restitution = v.non_negative();
     if (c.tip_restitution > 1) v.fail("must be at most 1");

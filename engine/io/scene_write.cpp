@@ -133,7 +133,7 @@ json scene_to_json(const Scene& s) {
     const CueStrike& c = *s.cue;
     doc["cue"] = {{"ball", c.ball}, {"speed", c.speed}, {"aim_deg", degrees(c.aim)},
                   {"elevation_deg", degrees(c.elevation)}, {"side", c.side}, {"height", c.height},
-                  {"cue_mass", c.cue_mass}, {"tip_restitution", c.tip_restitution},
+                  {"cue_mass", c.cue_mass}, {"end_mass", c.end_mass}, {"tip_restitution", c.tip_restitution},
                   {"miscue_limit", c.miscue_limit}};
   }
   return doc;

@@ -10,7 +10,8 @@
 // vertical plane across the aim line, Q = R (side s + height y - sqrt(1 - side^2 - height^2) h), with h the
 // horizontal aim and s = h x y the shooter's right. The cue axis is tilted down by the elevation: d = cos(el) h -
 // sin(el) y, so an elevated cue drives the ball into the cloth; the table contact then makes it bounce (jump shots)
-// and swerve. The impulse along d gives no squirt (cue-ball deflection): a known simplification.
+// and swerve. Squirt (docs/model.md#cue): with side, the ball leaves off the cue's line, away from the tip's side, by
+// the angle of Alciatore's TP A-31, set by the shaft's effective end mass.
 #pragma once
 #include <string>
 
@@ -26,6 +27,7 @@ struct CueStrike {
   double side = 0.0;              // tip offset right of centre, ball radii
   double height = 0.0;            // tip offset above centre, ball radii (+ follow, - draw)
   double cue_mass = 0.54;         // M, kg (19 oz)
+  double end_mass = 0.008;        // kg, the shaft's effective end mass that sets squirt (standard shaft); 0: none
   double tip_restitution = 0.75;  // e between tip and ball
   double miscue_limit = 0.5;      // tip offsets beyond this fraction of R miscue in practice
 };
@@ -34,6 +36,7 @@ struct StrikeResult {
   Vec3 velocity;     // m/s
   Vec3 spin;         // rad/s
   double impulse;    // N s
+  double squirt;     // rad: the heading's turn off the cue's line, + to the left (counter-clockwise from above)
   bool miscue;       // tip offset beyond miscue_limit: the result is reported, and a real cue would likely slip
 };
 
@@ -41,5 +44,9 @@ struct StrikeResult {
 Vec3 aim_direction(double aim);
 
 StrikeResult strike(const CueStrike& cue, double mass, double radius);
+
+// rad: the squirt angle of TP A-31 for a tip offset `side` (ball radii) and ball mass over end mass, always >= 0:
+// tan a = (5/2) s c / (1 + m / m_e + (5/2) c^2) with s = |side|, c = sqrt(1 - s^2).
+double squirt_angle(double side, double mass_ratio);
 
 }  // namespace shotlab
