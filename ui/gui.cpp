@@ -225,7 +225,7 @@ int run_gui(const GuiOptions& options) {
       MouseDrag drag;
       Pacer pacer;
       lab.on_load = [&settings](const Scene& s) { on_scene_loaded(settings.camera, s); };
-      open_first_scene(lab, initial_scene(options, settings), options.data_root + "/presets/stun.json");
+      open_first_scene(lab, initial_scene(options, settings), options.data_root + "/presets/sliding_to_rolling.json");
       ScriptHost host{lab, settings.camera, nullptr};
       double last = glfwGetTime(), frame_seconds = 0;
       long frame = 0;

@@ -62,7 +62,7 @@ TEST(Hardening, DeepNestingIsRefusedNotCrashed) {
   for (int k = 0; k < 100000; ++k) rack += "{\"a\": ";
   rack += "1" + std::string(100000, '}') + "}}";
   EXPECT_NE(load_error(write("deep_rack.json", rack)).find("nested deeper"), std::string::npos);
-  EXPECT_NE(load_error(preset("stun.json"), {"duration=" + nested(60000, "1")}).find("nested deeper"),
+  EXPECT_NE(load_error(preset("sliding_to_rolling.json"), {"duration=" + nested(60000, "1")}).find("nested deeper"),
             std::string::npos);
 }
 
@@ -139,7 +139,7 @@ TEST(Hardening, PreloadedContactsPushApart) {
 
 // A ball under a table's bed used to run into "unstable ... use an adaptive method" with an adaptive method.
 TEST(Hardening, ABallBelowTheTableIsRefused) {
-  const std::string err = load_error(preset("stun.json"), {"balls[0].position=[0,-0.1,0]"});
+  const std::string err = load_error(preset("sliding_to_rolling.json"), {"balls[0].position=[0,-0.1,0]"});
   EXPECT_NE(err.find("balls[0].position: below the table's bed"), std::string::npos) << err;
 }
 
@@ -157,12 +157,12 @@ TEST(Hardening, AStopWithoutContactsNamesTheBalls) {
 TEST(Hardening, OverridesNeverThrowAnythingButInputError) {
   const std::string numeric_id = write("numeric_id.json", R"({"balls": [{"id": 7, "position": [0, 0.028575, 0]}]})");
   for (const auto& [path, set] : std::vector<std::pair<std::string, std::string>>{
-           {preset("stun.json"), "balls[99999999999999999999999].mass=1"},
-           {preset("stun.json"), "duration=1e400"},
+           {preset("sliding_to_rolling.json"), "balls[99999999999999999999999].mass=1"},
+           {preset("sliding_to_rolling.json"), "duration=1e400"},
            {numeric_id, "balls.x.mass=1"},
-           {preset("stun.json"), "balls[0].id=\xff"},
-           {preset("stun.json"), ".=1"},
-           {preset("stun.json"), "duration={bad"}}) {
+           {preset("sliding_to_rolling.json"), "balls[0].id=\xff"},
+           {preset("sliding_to_rolling.json"), ".=1"},
+           {preset("sliding_to_rolling.json"), "duration={bad"}}) {
     SCOPED_TRACE(set);
     EXPECT_FALSE(load_error(path, {set}).empty());
     std::string err;
@@ -212,9 +212,9 @@ TEST(Hardening, ARunWhoseBallsSleepJumpsToItsEnd) {
 
 TEST(Hardening, FailedWritesAreErrors) {
   std::string err;
-  EXPECT_EQ(cli("run " + preset("stun.json") + " --duration 0.1 --trajectory /dev/full", err), 1);
+  EXPECT_EQ(cli("run " + preset("sliding_to_rolling.json") + " --duration 0.1 --trajectory /dev/full", err), 1);
   EXPECT_NE(err.find("/dev/full"), std::string::npos) << err;
-  EXPECT_EQ(cli("run " + preset("stun.json") + " --duration 0.1 --out /nonexistent-dir/r.json", err), 1);
+  EXPECT_EQ(cli("run " + preset("sliding_to_rolling.json") + " --duration 0.1 --out /nonexistent-dir/r.json", err), 1);
   EXPECT_NE(err.find("/nonexistent-dir/r.json"), std::string::npos) << err;
 }
 
@@ -222,9 +222,9 @@ TEST(Hardening, FailedWritesAreErrors) {
 TEST(Hardening, AFailedOutputKeepsTheOtherOutputsOldFile) {
   const std::string kept = write("kept.json", "{\"kept\": true}\n");
   std::string err;
-  EXPECT_EQ(cli("run " + preset("stun.json") + " --duration 0.1 --out " + kept + " --trajectory /dev/full", err), 1);
-  EXPECT_EQ(cli("run " + preset("stun.json") + " --duration 0.1 --trajectory " + kept + " --out /nonexistent/r.json",
-                err), 1);
+  const std::string scene = preset("sliding_to_rolling.json");
+  EXPECT_EQ(cli("run " + scene + " --duration 0.1 --out " + kept + " --trajectory /dev/full", err), 1);
+  EXPECT_EQ(cli("run " + scene + " --duration 0.1 --trajectory " + kept + " --out /nonexistent/r.json", err), 1);
   EXPECT_EQ(nlohmann::json::parse(std::ifstream(kept)), nlohmann::json::parse("{\"kept\": true}"));
 }
 

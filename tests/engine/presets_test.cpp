@@ -1,6 +1,7 @@
 // Every preset runs to its end; the thesis demonstrations (MODEL.md, "Reported results") show what the thesis
-// describes.
+// describes; the shots named as players name them (stun, draw, follow) do what their names say.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -76,8 +77,8 @@ TEST(Demonstrations, JumpShotStopsBouncing) {
   EXPECT_EQ(sim->motion(0), Motion::Rolling);
 }
 
-TEST(Demonstrations, DrawShotSlidesOnAParabolaThenRolls) {
-  auto sim = simulate(load_scene(preset("draw.json")));
+TEST(Demonstrations, LowSideHitSlidesOnAParabolaThenRolls) {
+  auto sim = simulate(load_scene(preset("sliding_parabola.json")));
   const double tau = [&] {
     run_until(*sim, 3.0, [&] { return event_time(*sim, "rolling", "cue") >= 0; }, 1e-3);
     return event_time(*sim, "rolling", "cue");
@@ -86,7 +87,7 @@ TEST(Demonstrations, DrawShotSlidesOnAParabolaThenRolls) {
   // While sliding the acceleration is constant (friction along a fixed slip direction): the path is a parabola, so
   // the midpoint of the sliding phase lies off the chord by |a| tau^2 / 8 projected across it.
   auto at = [&](double t) {
-    auto replay = simulate(load_scene(preset("draw.json")));
+    auto replay = simulate(load_scene(preset("sliding_parabola.json")));
     advance_to(*replay, t);
     return position(replay->state().x, 0);
   };
@@ -160,6 +161,80 @@ TEST(Demonstrations, RealisticBreakIsSensitiveToMicronJitter) {
   for (int i = 0; i < sa->state().ball_count(); ++i)
     spread = std::max(spread, glm::length(position(sa->state().x, i) - position(sb->state().x, i)));
   EXPECT_GT(spread, 0.01) << "micrometre changes in the rack change where balls are a second later by centimetres";
+}
+
+// The shots as players name them: a straight-in shot, the cue ball struck along the line of centres into the 1 ball.
+// What the cue ball does: its speed just before and just after its first contact with the 1 ball, and where it comes
+// to rest from the point where it met it, along its line (+ on past the contact, - back towards the player) and across.
+struct StraightShot {
+  double speed_before = 0, speed_after = 0;
+  double along = 0, across = 0;
+  bool cue_in_play = false, object_pocketed = false;
+};
+
+StraightShot straight_shot(const std::string& file) {
+  const Scene s = load_scene(preset(file));
+  auto sim = simulate(s);
+  const int cue = sim->model().ball_index("cue");
+  EXPECT_EQ(sim->model().ball_index("1"), 1);
+  const Vec3 start = position(sim->state().x, cue);
+  run_until(*sim, s.duration, [&] { return sim->at_rest(); }, 1.0 / 60);
+  EXPECT_TRUE(sim->at_rest()) << file << " has not come to rest in its " << s.duration << " s";
+  const double begin = event_time(*sim, "contact_begin", "cue", "1");
+  const double end = event_time(*sim, "contact_end", "cue", "1");
+  StraightShot r;
+  if (begin <= 0 || end <= begin) {
+    ADD_FAILURE() << file << ": the cue ball never met the 1 ball";
+    return r;
+  }
+  // The state at the contact's begin and end, from the dense output of a replay.
+  auto at = [&](double t) {
+    auto replay = simulate(s);
+    EXPECT_EQ(replay->advance(t), Status::Ok);
+    return replay->state().x;
+  };
+  const auto x_begin = at(begin), x_end = at(end);
+  const Vec3 contact = position(x_begin, cue), rest = position(sim->state().x, cue);
+  const Vec3 line = glm::normalize(Vec3{contact.x - start.x, 0, contact.z - start.z});
+  const Vec3 moved{rest.x - contact.x, 0, rest.z - contact.z};
+  r.speed_before = glm::length(velocity(x_begin, cue));
+  r.speed_after = glm::length(velocity(x_end, cue));
+  r.along = glm::dot(moved, line);
+  r.across = glm::length(moved - r.along * line);
+  r.cue_in_play = sim->state().in_play[cue];
+  r.object_pocketed = event_time(*sim, "pocketed", "1") >= 0;
+  std::printf("%s: cue ball %.3f m/s before the contact, %.4f m/s after (%.2f %%); at rest %+.3f m along its line "
+              "from the contact, %.3f m across\n",
+              file.c_str(), r.speed_before, r.speed_after, 100 * r.speed_after / r.speed_before, r.along, r.across);
+  return r;
+}
+
+// Stun: the cue ball arrives sliding without spin, hands its speed to the 1 ball and stops dead where it hit it.
+TEST(Shots, StunStopsTheCueBallDeadAtTheContact) {
+  const StraightShot r = straight_shot("stun.json");
+  EXPECT_GT(r.speed_before, 1.0);
+  EXPECT_LT(r.speed_after, 0.05 * r.speed_before);
+  EXPECT_LT(std::hypot(r.along, r.across), 0.05);
+  EXPECT_TRUE(r.cue_in_play);
+  EXPECT_TRUE(r.object_pocketed);
+}
+
+// Draw: backspin left at the contact pulls the cue ball back towards the player.
+TEST(Shots, DrawBringsTheCueBallBack) {
+  const StraightShot r = straight_shot("draw.json");
+  EXPECT_LT(r.along, -0.3);
+  EXPECT_LT(r.across, 0.01);
+  EXPECT_TRUE(r.cue_in_play);
+  EXPECT_TRUE(r.object_pocketed);
+}
+
+// Follow: the rolling cue ball's topspin drives it on after the 1 ball, stopping short of the pocket.
+TEST(Shots, FollowSendsTheCueBallOnAfterTheObjectBall) {
+  const StraightShot r = straight_shot("follow.json");
+  EXPECT_GT(r.along, 0.3);
+  EXPECT_LT(r.across, 0.01);
+  EXPECT_TRUE(r.cue_in_play) << "the cue ball followed the 1 ball into the pocket";
+  EXPECT_TRUE(r.object_pocketed);
 }
 
 }  // namespace

@@ -93,17 +93,18 @@ TEST(SceneFile, OverlapIsAllowedWhenAsked) {
 }
 
 TEST(SceneFile, OverridesReachAnyValue) {
-  const Scene s = load_scene(preset("stun.json"), {"materials.ball_cloth.friction=0.3", "balls.cue.velocity=[0,0,1]",
-                                                    "integrator.method=rk4", "cue.speed=2.5", "duration=1"});
+  const Scene s = load_scene(preset("sliding_to_rolling.json"),
+                             {"materials.ball_cloth.friction=0.3", "balls.cue.velocity=[0,0,1]",
+                              "integrator.method=rk4", "cue.speed=2.5", "duration=1"});
   EXPECT_DOUBLE_EQ(s.model.material(kBallCloth).friction, 0.3);
   EXPECT_DOUBLE_EQ(s.balls[0].velocity.z, 1.0);
   EXPECT_EQ(s.model.integrator.method, Method::RK4);
   EXPECT_DOUBLE_EQ(s.cue->speed, 2.5);
   EXPECT_DOUBLE_EQ(s.duration, 1.0);
-  EXPECT_THROW(load_scene(preset("stun.json"), {"balls.nobody.mass=1"}), InputError);
-  EXPECT_THROW(load_scene(preset("stun.json"), {"no_equals_sign"}), InputError);
+  EXPECT_THROW(load_scene(preset("sliding_to_rolling.json"), {"balls.nobody.mass=1"}), InputError);
+  EXPECT_THROW(load_scene(preset("sliding_to_rolling.json"), {"no_equals_sign"}), InputError);
   try {
-    load_scene(preset("stun.json"), {"materials.ball_cloth.frcition=0.3"});
+    load_scene(preset("sliding_to_rolling.json"), {"materials.ball_cloth.frcition=0.3"});
     FAIL() << "a misspelt override must not pass";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("materials.ball_cloth.frcition: unknown field"), std::string::npos) << e.what();
@@ -122,7 +123,7 @@ TEST(SceneFile, SaveAndLoadGiveTheSameScene) {
 TEST(SceneFile, FailedSaveLeavesTheOldFileAlone) {
   const std::string path = temp_file("keep.json", "{\"name\": \"old\"}");
   const std::string users_tmp = temp_file("keep.json.tmp", "the user's own file");
-  const Scene s = load_scene(preset("stun.json"));
+  const Scene s = load_scene(preset("sliding_to_rolling.json"));
   EXPECT_THROW(save_scene("/nonexistent-dir/x.json", s), InputError);
   EXPECT_THROW(save_scene(test_dir().string(), s), InputError);  // a folder is not replaced
   std::ifstream in(path);
@@ -143,9 +144,9 @@ TEST(SceneFile, SaveFollowsLinksAndKeepsPermissions) {
   const fs::path link = test_dir() / "link.json";
   fs::create_symlink(real, link);
   fs::permissions(real, fs::perms::owner_read | fs::perms::owner_write);
-  save_scene(link.string(), load_scene(preset("stun.json")));
+  save_scene(link.string(), load_scene(preset("sliding_to_rolling.json")));
   EXPECT_TRUE(fs::is_symlink(link));
-  EXPECT_EQ(load_scene(real).name, load_scene(preset("stun.json")).name);
+  EXPECT_EQ(load_scene(real).name, load_scene(preset("sliding_to_rolling.json")).name);
   EXPECT_EQ(fs::status(real).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
 }
 
@@ -165,7 +166,7 @@ TEST(Cli, BadSceneGivesMessageAndNonZeroExit) {
   const std::string path = temp_file("cli_bad.json", R"({"balls": [{"id": "a", "position": [0, 1, 0], "mass": -1}]})");
   EXPECT_EQ(run_cli("run " + path, err), 1);
   EXPECT_NE(err.find(path + ": balls[0].mass: must be positive"), std::string::npos) << err;
-  EXPECT_EQ(run_cli("run " + preset("stun.json") + " --set integrator.method=magic", err), 1);
+  EXPECT_EQ(run_cli("run " + preset("sliding_to_rolling.json") + " --set integrator.method=magic", err), 1);
   EXPECT_NE(err.find("integrator.method"), std::string::npos) << err;
 }
 
@@ -191,7 +192,7 @@ TEST(SceneFile, SolverPathSetsTheSwitchesAndEachMayOverrideIt) {
 TEST(Cli, RunWritesResultAndTrajectory) {
   const fs::path dir = test_dir();
   std::string err;
-  ASSERT_EQ(run_cli("run " + preset("stun.json") + " --duration 1 --out " + (dir / "r.json").string() +
+  ASSERT_EQ(run_cli("run " + preset("sliding_to_rolling.json") + " --duration 1 --out " + (dir / "r.json").string() +
                         " --trajectory " + (dir / "t.csv").string() + " --sample-rate 100",
                     err),
             0)
