@@ -19,6 +19,27 @@ TableSpec carom_table() {
   return t;
 }
 
+// The WPBSA rules fix the playing area and the spots (rack.cpp); their pocket templates are not published, so the
+// openings here are typical values. The cushion contact height is Mathavan et al.'s 7R/5.
+TableSpec snooker_table() {
+  TableSpec t;
+  t.kind = TableKind::Snooker;
+  t.length = 3.569;
+  t.width = 1.778;
+  t.ball_radius = 0.02625;
+  t.nose_height = 1.4 * t.ball_radius;
+  t.corner_mouth = 0.086;
+  t.side_mouth = 0.105;
+  t.pocket_radius = 0.05;
+  return t;
+}
+
+const char* table_kind_name(TableKind kind) {
+  return kind == TableKind::Pool ? "pool" : kind == TableKind::Carom ? "carom" : "snooker";
+}
+
+bool has_pockets(TableKind kind) { return kind != TableKind::Carom; }
+
 namespace {
 
 Vec3 at(double x, double z, double y = 0.0) { return {x, y, z}; }
@@ -51,10 +72,10 @@ NoseAxis nose_axis(const TableSpec& t) {
 
 void add_table(Model& m, const TableSpec& t) {
   const double hx = t.length / 2, hz = t.width / 2, rw = t.rail_width;
-  const bool pool = t.kind == TableKind::Pool;
+  const bool pockets = has_pockets(t.kind);
   m.balls_leave_below_bed = true;
   std::vector<Hole> holes;
-  if (pool) {
+  if (pockets) {
     // A ball drops once its centre is over the hole, i.e. pocket_shelf beyond the mouth. Corner mouths run
     // diagonally with their midpoint corner_mouth/(2 sqrt 2) inside the corner along each axis; the hole centre lies
     // shelf + radius beyond it along the diagonal. Side mouths lie on the nose line.
@@ -78,8 +99,8 @@ void add_table(Model& m, const TableSpec& t) {
                          kBallCloth});
 
   // Cushions: along each rail between pocket mouths. Corner cushion ends sit corner_mouth/sqrt(2) from the corner.
-  const double ce = pool ? t.corner_mouth / std::sqrt(2.0) : 0.0;
-  const double se = pool ? t.side_mouth / 2 : 0.0;
+  const double ce = pockets ? t.corner_mouth / std::sqrt(2.0) : 0.0;
+  const double se = pockets ? t.side_mouth / 2 : 0.0;
   const Vec3 back{0, 0, -1}, front{0, 0, 1}, left{-1, 0, 0}, right{1, 0, 0};
   struct Rail {
     std::string name;
@@ -87,7 +108,7 @@ void add_table(Model& m, const TableSpec& t) {
     bool has_pockets;  // a pocket mouth at each end
   };
   std::vector<Rail> rails;
-  if (pool) {
+  if (pockets) {
     rails = {{"cushion-back-left", at(-hx + ce, -hz), at(-se, -hz), back, true},
              {"cushion-back-right", at(se, -hz), at(hx - ce, -hz), back, true},
              {"cushion-front-left", at(-hx + ce, hz), at(-se, hz), front, true},

@@ -109,7 +109,12 @@ BallLook ball_look(const std::string& id) {
                                     {0.05f, 0.45f, 0.2f}, {0.5f, 0.12f, 0.1f}};
   if (id == "cue" || id == "white") return {{0.95f, 0.94f, 0.88f}, 3};
   if (id == "yellow") return {{0.95f, 0.8f, 0.15f}, 1};
-  if (id == "red") return {{0.8f, 0.1f, 0.1f}, 1};
+  if (id == "red" || id.rfind("red", 0) == 0) return {{0.8f, 0.1f, 0.1f}, 1};  // carom's red, snooker's reds
+  if (id == "green") return {{0.05f, 0.45f, 0.2f}, 1};
+  if (id == "brown") return {{0.45f, 0.25f, 0.1f}, 1};
+  if (id == "blue") return {{0.1f, 0.25f, 0.75f}, 1};
+  if (id == "pink") return {{0.95f, 0.55f, 0.65f}, 1};
+  if (id == "black") return {{0.1f, 0.1f, 0.1f}, 1};
   char* end = nullptr;
   const long number = std::strtol(id.c_str(), &end, 10);
   if (end != id.c_str() && *end == '\0' && number >= 1 && number <= 15)
@@ -268,10 +273,11 @@ void Renderer::draw_table(const TableSpec& t, const Model& model) {
     draw(cylinder_, glm::translate(glm::dmat4(1.0), {x, rail_top, z}) * glm::scale(glm::dmat4(1.0), {0.008, 0.001, 0.008}),
          {0.92f, 0.92f, 0.85f}, 0, 1);
   };
-  for (int k = -3; k <= 3; ++k)  // every eighth of the length on the long rails, a quarter of the width on the short
+  const bool sights = t.kind != TableKind::Snooker;  // a snooker table has none
+  for (int k = -3; k <= 3 && sights; ++k)  // every eighth of the length on the long rails, a quarter of the width
     if (k != 0 || t.kind == TableKind::Carom)
       for (double z : {-p - w / 2, p + w / 2}) diamond(k * t.length / 8, z);
-  for (int k = -1; k <= 1; ++k)
+  for (int k = -1; k <= 1 && sights; ++k)
     for (double x : {-o - w / 2, o + w / 2}) diamond(x, k * t.width / 4);
   // Pockets: a black disc on the cloth and one cut into the rail top (flat, so nothing sticks up through the rail).
   for (const Pocket& pk : model.pockets)

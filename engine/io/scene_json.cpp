@@ -85,7 +85,8 @@ void read_table(const JsonNode& n, TableSpec& t) {
   const std::string type = n["type"].string();
   if (type == "pool") t = pool_table();
   else if (type == "carom") t = carom_table();
-  else n["type"].fail("unknown table type '" + type + "' (pool, carom)");
+  else if (type == "snooker") t = snooker_table();
+  else n["type"].fail("unknown table type '" + type + "' (pool, carom, snooker)");
   read_fields(n, t, kTableFields);
   n.finish();
 }
@@ -146,7 +147,9 @@ InitialBall read_ball(const JsonNode& n, const BallKind& default_kind) {
 void read_rack(const JsonNode& n, const BallKind& kind, Scene& s) {
   RackSpec r;
   const std::string type = n["type"].string();
-  if (type != "triangle") n["type"].fail("unknown rack type '" + type + "' (triangle)");
+  if (type == "snooker") r.type = RackType::Snooker;
+  else if (type != "triangle") n["type"].fail("unknown rack type '" + type + "' (triangle, snooker)");
+  if (s.table) r.table_length = s.table->length;
   n.optional("rows", [&](const JsonNode& v) { r.rows = v.integer(1, 50); });
   n.optional("apex", [&](const JsonNode& v) {
     const Vec3 p = v.vec3();
@@ -159,7 +162,7 @@ void read_rack(const JsonNode& n, const BallKind& kind, Scene& s) {
   n.optional("first_number", [&](const JsonNode& v) { r.first_number = v.integer(0, 1 << 20); });
   n.finish();
   s.rack = RackOrigin{r, kind.name, s.balls.size()};
-  for (InitialBall& b : triangle_rack(r, kind)) s.balls.push_back(std::move(b));
+  for (InitialBall& b : make_rack(r, kind)) s.balls.push_back(std::move(b));
 }
 
 void read_cue(const JsonNode& n, CueStrike& c) {

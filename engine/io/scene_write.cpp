@@ -31,7 +31,7 @@ json material_json(const ContactMaterial& m) {
 }
 
 json table_json(const TableSpec& t) {
-  return {{"type", t.kind == TableKind::Pool ? "pool" : "carom"},
+  return {{"type", table_kind_name(t.kind)},
           {"length", t.length},
           {"width", t.width},
           {"nose_height", t.nose_height},
@@ -70,7 +70,7 @@ struct ColliderJson {
 // The racked balls as a rack generates them (ids, positions, no motion): then a saved scene writes the rack.
 bool racked_as_generated(const Scene& s) {
   if (!s.rack || !find_ball_kind(s.rack->kind)) return false;
-  const std::vector<InitialBall> rack = triangle_rack(s.rack->spec, *find_ball_kind(s.rack->kind));
+  const std::vector<InitialBall> rack = make_rack(s.rack->spec, *find_ball_kind(s.rack->kind));
   if (s.balls.size() != s.rack->first + rack.size()) return false;
   for (size_t k = 0; k < rack.size(); ++k) {
     const InitialBall& a = s.balls[s.rack->first + k];
@@ -117,7 +117,7 @@ json scene_to_json(const Scene& s) {
   if (rack) {
     const RackSpec& r = s.rack->spec;
     doc["ball_kind"] = s.rack->kind;
-    doc["rack"] = {{"type", "triangle"}, {"rows", r.rows}, {"apex", {r.apex_x, 0.0, r.apex_z}}, {"gap", r.gap},
+    doc["rack"] = {{"type", r.type == RackType::Snooker ? "snooker" : "triangle"}, {"rows", r.rows}, {"apex", {r.apex_x, 0.0, r.apex_z}}, {"gap", r.gap},
                    {"jitter", r.jitter}, {"seed", r.seed}, {"first_number", r.first_number}};
   }
   for (size_t i = 0; i < (rack ? s.rack->first : s.balls.size()); ++i) {

@@ -35,15 +35,18 @@ struct InitialBall {
 // swings for ever, so the bound is what stops a typo from running for days).
 inline constexpr double kMaxDuration = 3600.0;
 
-// A triangle rack of object balls (rack.hpp builds it).
+// A rack of object balls (rack.hpp builds it): a triangle, or snooker's reds and colours.
+enum class RackType { Triangle, Snooker };
 struct RackSpec {
+  RackType type = RackType::Triangle;
   int rows = 5;                // 5 rows = 15 balls
   double apex_x = 0.635;       // m, the front ball's centre (foot spot of a 9 ft table)
   double apex_z = 0.0;         // m
   double gap = 0.0;            // m, extra spacing between neighbours (0 = frozen, touching)
   double jitter = 0.0;         // each ball displaced uniformly within this many ball radii in x and z
   uint32_t seed = 1;           // for the jitter: the same seed gives the same rack on every machine
-  int first_number = 1;        // ids are the numbers first_number, first_number + 1, ...
+  int first_number = 1;        // ids are the numbers first_number, first_number + 1, ... (snooker: red1 ... red15)
+  double table_length = 3.569; // m, snooker: the spots are placed for a table this long (the scene's table)
 };
 
 // Where a scene's racked balls came from: kept so that a saved scene writes its rack back (seed and jitter included)

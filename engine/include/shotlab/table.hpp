@@ -6,7 +6,7 @@
 
 namespace shotlab {
 
-enum class TableKind { Pool, Carom };
+enum class TableKind { Pool, Carom, Snooker };
 
 struct TableSpec {
   TableKind kind = TableKind::Pool;
@@ -27,6 +27,9 @@ struct TableSpec {
 // Standard specifications.
 TableSpec pool_table();   // 9 ft pool: 2.54 x 1.27 m, six pockets
 TableSpec carom_table();  // match carom: 2.84 x 1.42 m, no pockets, nose at 63.5 % of a 61.5 mm ball
+TableSpec snooker_table();  // 12 ft snooker: 3.569 x 1.778 m, six pockets (WPBSA template)
+const char* table_kind_name(TableKind kind);  // "pool", "carom", "snooker"
+bool has_pockets(TableKind kind);
 
 // Where a cushion capsule's axis lies from the nose line at bed level, in m: `up`, and `out` away from the table. A
 // resting ball of ball_radius then touches the capsule at nose_height, on the nose line (docs/model.md#table).
