@@ -132,6 +132,21 @@ TEST(Demonstrations, FrozenBallsAtACushion) {
   EXPECT_LT(event_time(*sim, "contact_begin", "K1", "K2"), k23_end);
 }
 
+// The thesis's picture (its fig. 1.2): K1 and K2 frozen side by side along the cushion, K3 hits K2 full at 45 degrees;
+// the soft cushion returns K2 into K3 for a second hit, K3 goes back the way it came, K2 forward below 90 degrees.
+TEST(Demonstrations, ThesisFrozenBallsHitTwice) {
+  auto sim = simulate(load_scene(preset("frozen_thesis.json")));
+  advance_to(*sim, 0.5);
+  int hits = 0;
+  for (const Event& e : sim->events())
+    if (e.kind == "contact_begin" && e.bodies.size() == 2 && e.bodies[0] == "K2" && e.bodies[1] == "K3") ++hits;
+  EXPECT_EQ(hits, 2) << "K2 comes back out of the cushion and hits K3 again";
+  const Vec3 v2 = velocity(sim->state().x, 1), v3 = velocity(sim->state().x, 2);
+  EXPECT_LT(std::abs(std::atan2(v3.z, v3.x) * 180 / M_PI - 45), 10) << "K3 leaves roughly the way it came";
+  EXPECT_GT(v2.z, 0.0);
+  EXPECT_LT(v2.x, 0.0) << "K2 leaves forward, below 90 degrees to the rail";
+}
+
 TEST(Demonstrations, SymmetricBreakStaysSymmetric) {
   auto sim = simulate(load_scene(preset("break_symmetric.json")));
   advance_to(*sim, 1.0);
