@@ -256,6 +256,11 @@ Scene parse_scene(const json& doc, const std::string& source) {
   n.optional("gravity", [&](const JsonNode& v) { s.model.options.gravity = v.vec3(); });
   n.optional("model", [&](const JsonNode& m) { read_options(m, s.model.options); });
   n.optional("integrator", [&](const JsonNode& v) { read_integrator(v, s.model.integrator); });
+  n.optional("table", [&](const JsonNode& v) {  // first: the table's cloth and cushion, then the scene's materials
+    s.table.emplace();
+    read_table(v, *s.table);
+    set_table_materials(s.table->kind, s.model);
+  });
   n.optional("materials", [&](const JsonNode& m) {
     for (const auto& item : m.raw().items()) {
       const bool known = s.model.materials.count(item.key()) > 0;
@@ -266,10 +271,6 @@ Scene parse_scene(const json& doc, const std::string& source) {
       if (item.key() != kBallBall && read.friction_law == FrictionLaw::SpeedDependent)
         m[item.key()]["friction_law"].fail("speed_dependent is for ball_ball only (the bed's closed forms assume a constant coefficient)");
     }
-  });
-  n.optional("table", [&](const JsonNode& v) {
-    s.table.emplace();
-    read_table(v, *s.table);
   });
   n.optional("colliders", [&](const JsonNode& v) {
     for (const JsonNode& c : v.items()) s.model.colliders.push_back(read_collider(c, s.model));

@@ -147,6 +147,25 @@ TEST(Demonstrations, ThesisFrozenBallsHitTwice) {
   EXPECT_LT(v2.x, 0.0) << "K2 leaves forward, below 90 degrees to the rail";
 }
 
+// Three-cushion: the white contacts both object balls, and at least three cushions before the second.
+TEST(Demonstrations, ThreeCushionShotScores) {
+  auto sim = simulate(load_scene(preset("three_cushion.json")));
+  advance_to(*sim, 8.0);
+  std::vector<std::string> hits;  // what the white touches, in order, the bed left out
+  for (const Event& e : sim->events())
+    if (e.kind == "contact_begin" && e.bodies.size() == 2 && (e.bodies[0] == "white" || e.bodies[1] == "white")) {
+      const std::string other = e.bodies[0] == "white" ? e.bodies[1] : e.bodies[0];
+      if (other != "bed") hits.push_back(other);
+    }
+  int cushions = 0, balls = 0;
+  for (const std::string& h : hits) {
+    if (h.rfind("cushion", 0) == 0) ++cushions;
+    else if (++balls == 2) break;
+  }
+  EXPECT_EQ(balls, 2) << "the white reaches both object balls";
+  EXPECT_GE(cushions, 3) << "three cushions before the second ball";
+}
+
 TEST(Demonstrations, SymmetricBreakStaysSymmetric) {
   auto sim = simulate(load_scene(preset("break_symmetric.json")));
   advance_to(*sim, 1.0);

@@ -38,6 +38,11 @@ struct NoseAxis {
 };
 NoseAxis nose_axis(const TableSpec& spec);
 
+// Sets the cloth (ball_cloth) and cushion (ball_cushion) a table type comes with, from measurements of that game
+// (docs/model.md#parameters): pool the defaults; snooker Mathavan et al.'s cloth and cushion; carom a slow-rolling
+// heated cloth and a livelier cushion.
+void set_table_materials(TableKind kind, Model& model);
+
 // Appends the table's colliders (materials ball_cloth and ball_cushion) and pockets to the model.
 void add_table(Model& model, const TableSpec& spec);
 
