@@ -27,7 +27,14 @@ double Island::onset_step(double tolerance) {
     onset_exponent_ = s.onset_exponent;
     onset_coefficient_ = onset_error_coefficient(model_.integrator.method, onset_exponent_);
   }
-  if (onset_coefficient_ <= 0 || s.onset_strength <= 0) return kInf;
+  if (s.onset_strength <= 0) return kInf;
+  if (onset_coefficient_ <= 0) {
+    // A whole exponent: Cash-Karp and Dormand-Prince integrate the onset's polynomial force exactly, so no error
+    // bounds the step, and one may pass through the contact. A quarter of the contact's own time scale,
+    // (v / strength)^(1/(e+1)) (it lasts about three, docs/model.md#restitution), holds it.
+    const bool tableau = model_.integrator.method == Method::CashKarp54 || model_.integrator.method == Method::DormandPrince5;
+    return tableau ? 0.25 * std::pow(s.onset_speed / s.onset_strength, 1.0 / (onset_exponent_ + 1.0)) : kInf;
+  }
   return std::pow(tolerance / (onset_coefficient_ * s.onset_strength), 1.0 / (onset_exponent_ + 1.0));
 }
 

@@ -102,5 +102,23 @@ TEST(Impact, StiffUndampedTableNeverGainsEnergy) {
   EXPECT_LE(gain, 1e-6 * e0) << "energy grew";
 }
 
+// A whole exponent (here 2, Hunt-Crossley): Cash-Karp integrates the onset's polynomial force exactly, so its error
+// estimate does not bound the step that starts the contact. A ball dropped from 0.1 m onto a plane must still bounce,
+// on the fast and the plain path, and never sink more than a few times its static depth.
+TEST(Impact, WholeExponentContactIsNotSteppedThrough) {
+  for (const char* path : {"fast", "plain"}) {
+    auto sim = simulate(scene({{"model", {{"path", path}}},
+                               {"colliders", {{{"type", "plane"}, {"point", {0, 0, 0}}, {"normal", {0, 1, 0}},
+                                               {"material", "ball_cloth"}}}},
+                               {"materials", {{"ball_cloth", {{"exponent", 2}, {"stiffness", 3.91e10}, {"damping", 0.5},
+                                                              {"damping_law", "hunt_crossley"}}}}},
+                               {"balls", {{{"id", "b"}, {"position", {0, 0.1 + kR, 0}}}}}}));
+    double lowest = 1;
+    run_frames(*sim, 0.5, 1.0 / 240, [&] { lowest = std::min(lowest, position(sim->state().x, 0).y); });
+    EXPECT_GT(lowest, kR - 1e-4) << path;  // the bounce's depth is about 20 um
+    EXPECT_GT(position(sim->state().x, 0).y, kR) << path << ": the ball bounced";
+  }
+}
+
 }  // namespace
 }  // namespace shotlab::test
