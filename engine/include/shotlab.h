@@ -1,0 +1,95 @@
+/* libshotlab: the shotlab engine behind a C ABI (C99), for programs that load it at run time (a game engine's native
+ * plugin, a tool, a binding). docs/c-api.md says how to build against it.
+ *
+ * A simulation is an opaque handle. Every function returns a status; on an error, shotlab_last_error() says what
+ * happened in the words of the command line (file, field, problem). No function aborts or throws, and none reads
+ * a handle it did not create: a NULL or destroyed handle is SHOTLAB_ERROR_HANDLE.
+ *
+ * Threads: one simulation is used by one thread at a time; separate simulations may run in parallel.
+ * Units: SI (m, s, kg, m/s, rad/s); y is up, the table's bed is y = 0. */
+#ifndef SHOTLAB_H
+#define SHOTLAB_H
+
+#include <stddef.h>
+
+#if defined(_WIN32)
+#define SHOTLAB_API __declspec(dllexport)
+#else
+#define SHOTLAB_API __attribute__((visibility("default")))
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define SHOTLAB_API_VERSION 1
+
+typedef enum shotlab_status {
+  SHOTLAB_OK = 0,
+  SHOTLAB_ERROR_HANDLE = 1,    /* NULL or destroyed simulation */
+  SHOTLAB_ERROR_ARGUMENT = 2,  /* a NULL pointer, a non-finite or out-of-range number, an unknown name */
+  SHOTLAB_ERROR_INPUT = 3,     /* a scene that cannot be read or is not valid */
+  SHOTLAB_ERROR_BUFFER = 4,    /* a caller's buffer is too small: the count needed is written where asked */
+  SHOTLAB_ERROR_STOPPED = 5,   /* the simulation stopped (step limit, unstable, non-finite): see the message */
+  SHOTLAB_ERROR_INTERNAL = 6   /* anything else the engine reported; the handle stays usable for reading */
+} shotlab_status;
+
+typedef struct shotlab_sim shotlab_sim;
+
+/* An event since the last shotlab_events() call: kind (contact_begin, contact_end, rolling, sliding, pocketed, ...),
+ * the bodies it names (a ball's id, a collider's name; body_b empty when it names one), and its time (s). */
+typedef struct shotlab_event {
+  double time;
+  char kind[24];
+  char body_a[48];
+  char body_b[48];
+} shotlab_event;
+
+/* SHOTLAB_API_VERSION of the library that is loaded. */
+SHOTLAB_API int shotlab_api_version(void);
+
+/* The message of the last failed call on `sim`, or of the last failed shotlab_create_* on this thread when sim is
+ * NULL. Valid until the next call on the same handle (or thread); never NULL. */
+SHOTLAB_API const char* shotlab_last_error(const shotlab_sim* sim);
+
+/* Create a simulation from a scene file, a scene as JSON text (docs/scene-format.md), or arrays of n balls: position,
+ * velocity, spin (3 n numbers each, x y z per ball; velocity and spin may be NULL for at rest), radius and mass (n
+ * each), on a table of type "pool", "carom" or "snooker" (NULL: no table; gravity stays on, so then nothing holds
+ * the balls up). Balls are named b0, b1, ... On success *out is the new handle. */
+SHOTLAB_API shotlab_status shotlab_create_from_file(const char* path, shotlab_sim** out);
+SHOTLAB_API shotlab_status shotlab_create_from_json(const char* json, shotlab_sim** out);
+SHOTLAB_API shotlab_status shotlab_create_from_balls(int n, const double* position, const double* velocity,
+                                                     const double* spin, const double* radius, const double* mass,
+                                                     const char* table, shotlab_sim** out);
+/* Releases the simulation; NULL is allowed. The handle must not be used again (it is then SHOTLAB_ERROR_HANDLE). */
+SHOTLAB_API void shotlab_destroy(shotlab_sim* sim);
+
+/* Moves the clock by dt >= 0 s. */
+SHOTLAB_API shotlab_status shotlab_advance(shotlab_sim* sim, double dt);
+/* Back to the scene's start (as created), materials and strikes set since then kept. */
+SHOTLAB_API shotlab_status shotlab_reset(shotlab_sim* sim);
+
+SHOTLAB_API shotlab_status shotlab_time(const shotlab_sim* sim, double* seconds);
+SHOTLAB_API shotlab_status shotlab_ball_count(const shotlab_sim* sim, int* count);
+/* Every ball's state into caller buffers of `capacity` balls (3 numbers each; any may be NULL); in_play (may be
+ * NULL) gets 1 or 0 per ball. SHOTLAB_ERROR_BUFFER when capacity is below the ball count. */
+SHOTLAB_API shotlab_status shotlab_balls(const shotlab_sim* sim, double* position, double* velocity, double* spin,
+                                         int* in_play, int capacity);
+/* The events since the last call, into `events` (capacity entries). *count gets how many there are; when more than
+ * the capacity, nothing is taken (call again with room for *count). */
+SHOTLAB_API shotlab_status shotlab_events(shotlab_sim* sim, shotlab_event* events, int capacity, int* count);
+
+/* Sets a field of a material pair ("ball_ball", "ball_cloth", "ball_cushion" or a scene's own) as the scene file
+ * names it: stiffness, damping, exponent, friction, rolling_resistance, spin_friction, restitution, ... The
+ * simulation goes on from its current state with the new model. */
+SHOTLAB_API shotlab_status shotlab_set_material(shotlab_sim* sim, const char* pair, const char* field, double value);
+/* Strikes the ball `ball` (its id) with the cue: speed (m/s of the cue), aim (rad, 0 = +x, pi/2 = -z), tip offsets
+ * side and height (ball radii), elevation (rad); the rigid-cue model with squirt (docs/model.md#cue). */
+SHOTLAB_API shotlab_status shotlab_strike(shotlab_sim* sim, const char* ball, double speed, double aim, double side,
+                                          double height, double elevation);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SHOTLAB_H */
