@@ -8,5 +8,6 @@ scripts/build.sh
 ./build/app/shotlab bench --quick --out-dir build/bench-quick
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHOTLAB_SANITIZE=ON -DSHOTLAB_GUI=OFF \
       -DSHOTLAB_TESTS=ON > /dev/null
-cmake --build build-asan -j"$(nproc)" --target engine_tests stability_tests app_tests shotlab
+cmake --build build-asan -j"$(nproc)" --target engine_tests stability_tests app_tests shotlab shotlab_c \
+      capi_dlopen_test
 (cd build-asan && ctest --output-on-failure -j2 -L 'engine|stability|app')
