@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <sstream>
 
@@ -178,8 +179,10 @@ bool Island::step(double limit) {
 // swing alone on their rods (swing.hpp), moves in closed form (`constant`): as long as the caps allow, no longer than
 // a lone ball's horizon. The caps: a friction band's edge, a possible contact (its lists go to plan_).
 double Island::plan(double limit, bool& constant) {
-  SHOTLAB_ASSERT(integ_.time == span_.t1 && integ_.x == span_.x1, "a step starts from the last step's end, never "
-                 "from an interpolated state");
+  // Compared bit for bit, so that a state gone non-finite (stopped by finite_or_stop) still compares equal.
+  SHOTLAB_ASSERT(integ_.time == span_.t1 && integ_.x.size() == span_.x1.size() &&
+                     std::memcmp(integ_.x.data(), span_.x1.data(), integ_.x.size() * sizeof(double)) == 0,
+                 "a step starts from the last step's end, never from an interpolated state");
   const bool adaptive = is_adaptive(model_.integrator.method);
   double dt = adaptive ? dt_next_ : model_.integrator.fixed_step;
   constant = false;

@@ -99,6 +99,7 @@ Vec3 JsonNode::vec3() const {
   return {e[0].number(), e[1].number(), e[2].number()};
 }
 
-double JsonNode::angle_degrees() const { return number() * M_PI / 180.0; }
+// Whole turns taken off first: 1e308 degrees times pi would overflow to infinity (a NaN direction).
+double JsonNode::angle_degrees() const { return std::fmod(number(), 360.0) * M_PI / 180.0; }
 
 }  // namespace shotlab

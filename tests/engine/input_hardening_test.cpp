@@ -138,6 +138,18 @@ TEST(Hardening, PreloadedContactsPushApart) {
 }
 
 // A ball under a table's bed used to run into "unstable ... use an adaptive method" with an adaptive method.
+// An aim of 1e308 degrees times pi overflowed to infinity and struck the ball with a NaN velocity: whole turns are
+// taken off first, so any finite angle aims somewhere.
+TEST(Hardening, AHugeAimAngleStillAims) {
+  const Scene s = scene({{"table", {{"type", "pool"}}},
+                         {"balls", {{{"id", "cue"}, {"position", {-0.9, kR, 0}}}}},
+                         {"cue", {{"ball", "cue"}, {"speed", 1.5}, {"aim_deg", -1e308}}}});
+  auto sim = simulate(s);
+  EXPECT_EQ(sim->advance(0.05), Status::Ok) << sim->diagnostic();
+  EXPECT_TRUE(std::isfinite(velocity(sim->state().x, 0).x));
+  EXPECT_GT(glm::length(velocity(sim->state().x, 0)), 1.0);
+}
+
 TEST(Hardening, ABallBelowTheTableIsRefused) {
   const std::string err = load_error(preset("sliding_to_rolling.json"), {"balls[0].position=[0,-0.1,0]"});
   EXPECT_NE(err.find("balls[0].position: below the table's bed"), std::string::npos) << err;
