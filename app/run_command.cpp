@@ -9,6 +9,7 @@
 #include "app/commands.hpp"
 #include "shotlab/io/atomic_file.hpp"
 #include "shotlab/io/result_json.hpp"
+#include "shotlab/io/run.hpp"
 #include "shotlab/io/scene_json.hpp"
 #include "shotlab/simulation.hpp"
 
@@ -30,45 +31,6 @@ std::string check_run(const RunOptions& o, double duration) {
   return why.str();
 }
 
-bool asleep(const Simulation& sim) {
-  const State& s = sim.state();
-  for (int i = 0; i < s.ball_count(); ++i)
-    if (s.in_play[i] && !s.sleeping(i)) return false;
-  return true;
-}
-
-// Advances in sample slices, writing a trajectory row set after each (the integrator's own steps do not depend on the
-// slicing, simulation.hpp). The step limit counts per kStepLimitWindow of simulated time, not per slice, so that how a
-// run is sampled never changes whether it stops. Once every ball sleeps, nothing changes: a run without a trajectory
-// jumps to its end.
-void simulate(Simulation& sim, const RunOptions& o, double duration, AtomicFile* csv) {
-  const double slice = 1.0 / o.sample_rate;
-  const long slices = static_cast<long>(std::ceil(duration / slice - 1e-9));
-  std::ostringstream rows;
-  rows.precision(10);
-  double window_end = 0;
-  for (long k = 1; k <= slices && sim.status() == Status::Ok;) {
-    if (!csv && !o.until_rest && asleep(sim)) {
-      sim.advance(duration - sim.time());
-      break;
-    }
-    const double sample = std::min(k * slice, duration);
-    const bool new_window = sim.time() >= window_end;
-    while (window_end <= sim.time()) window_end += kStepLimitWindow;
-    const double to = std::min(sample, window_end);
-    if (new_window) sim.advance(to - sim.time());
-    else sim.advance_on(to - sim.time());
-    if (to < sample) continue;
-    ++k;
-    if (csv) {
-      rows.str("");
-      write_trajectory_rows(rows, sim);
-      csv->write(rows.str());
-    }
-    if (o.until_rest && sim.at_rest()) break;
-  }
-}
-
 int run(const RunOptions& o) {
   Scene scene = load_scene(o.scene, o.overrides);
   const double duration = o.duration.value_or(scene.duration);
@@ -76,14 +38,11 @@ int run(const RunOptions& o) {
     std::cerr << "shotlab: " << problem << "\n";
     return 1;
   }
-  Prepared prepared = prepare(scene);
-  std::vector<Event> extra;
-  if (prepared.strike && prepared.strike->miscue) {
-    extra.push_back({0.0, "miscue", {scene.cue->ball}});
+  HeadlessRun headless = start_run(scene);
+  if (headless.miscue)
     std::cerr << "shotlab: warning: miscue: the tip offset is beyond " << scene.cue->miscue_limit
               << " of the radius; the strike is simulated as if the tip held\n";
-  }
-  Simulation sim(std::move(prepared.model), std::move(prepared.state));
+  Simulation& sim = *headless.sim;
   // Both files are opened before the run (a bad path fails at once) and replace their targets only once both are
   // written: a failure leaves every existing file as it was.
   std::unique_ptr<AtomicFile> out = o.out.empty() ? nullptr : std::make_unique<AtomicFile>(o.out);
@@ -96,8 +55,15 @@ int run(const RunOptions& o) {
     write_trajectory_rows(head, sim);
     csv->write(head.str());
   }
-  simulate(sim, o, duration, csv.get());
-  if (out) out->write(result_to_json(sim, extra).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+  std::ostringstream rows;
+  rows.precision(10);
+  auto sample = [&] {  // a trajectory row set after each slice
+    rows.str("");
+    write_trajectory_rows(rows, sim);
+    csv->write(rows.str());
+  };
+  advance_run(sim, duration, o.sample_rate, o.until_rest, csv ? std::function<void()>(sample) : nullptr);
+  if (out) out->write(result_to_json(sim, headless.extra).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   for (AtomicFile* f : {out.get(), csv.get()})
     if (f) f->finish();
   for (AtomicFile* f : {out.get(), csv.get()})

@@ -7,7 +7,6 @@
 namespace shotlab {
 
 inline constexpr double kMinSampleRate = 1e-3, kMaxSampleRate = 1e5;  // Hz
-inline constexpr double kStepLimitWindow = 1.0 / 60;  // s of simulated time the step limit counts over
 
 struct RunOptions {
   std::string scene;

@@ -1,0 +1,29 @@
+// A headless run as `shotlab run` makes it, for every program that runs scenes (the command, the Python module, the
+// sweeps): the scene prepared with its cue strike, then advanced in sample slices to its duration or until rest.
+#pragma once
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "shotlab/scene.hpp"
+#include "shotlab/simulation.hpp"
+
+namespace shotlab {
+
+inline constexpr double kStepLimitWindow = 1.0 / 60;  // s of simulated time the step limit counts over
+
+struct HeadlessRun {
+  std::unique_ptr<Simulation> sim;
+  std::vector<Event> extra;  // events the engine does not make: a miscue at the strike
+  bool miscue = false;       // the tip offset is beyond the cue's miscue_limit (simulated as if the tip held)
+};
+HeadlessRun start_run(const Scene& scene);
+
+// Advances to `duration` s in slices of 1 / sample_rate s, calling on_sample (if any) after each. The step limit counts
+// per kStepLimitWindow of simulated time, not per slice, so that how a run is sampled never changes whether it stops.
+// until_rest: stop once every ball is at rest. Without on_sample or until_rest a run whose balls all sleep jumps to
+// its end (nothing changes any more).
+void advance_run(Simulation& sim, double duration, double sample_rate, bool until_rest,
+                 const std::function<void()>& on_sample = {});
+
+}  // namespace shotlab
