@@ -1,0 +1,81 @@
+"""The Python module as a user calls it: VALIDATION.md R1 through it, numpy arrays, overrides, run() against the
+command line's own --out, and errors as Python exceptions."""
+import json
+import os
+import subprocess
+import tempfile
+
+import numpy as np
+import pytest
+
+import shotlab
+
+SOURCE = os.environ.get("SHOTLAB_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+R = 0.028575
+
+# R1: a pool ball at 2 m/s without spin on a cloth of friction 0.2 (no rolling resistance or spin friction while it
+# slides, friction smoothing 1e4 s/m) rolls from t = 2 v0 / (7 mu g) = 0.29125 s at x = 0.49928 m, v = 1.42857 m/s.
+STUN = {
+    "colliders": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "ball_cloth"}],
+    "materials": {"ball_cloth": {"friction": 0.2, "rolling_resistance": 0, "spin_friction": 0}},
+    "model": {"friction_sharpness": 1e4},
+    "integrator": {"method": "dopri5", "abs_tol": 1e-10, "rel_tol": 1e-10, "max_steps_per_call": 1000000},
+    "balls": [{"id": "cue", "position": [0, R, 0], "velocity": [2, 0, 0]}],
+}
+
+
+def test_stun_shot_slides_then_rolls():
+    sim = shotlab.Simulation(STUN)
+    while not any(e["kind"] == "rolling" for e in sim.events):
+        sim.advance(1 / 60)
+    tau = next(e["time"] for e in sim.events if e["kind"] == "rolling")
+    again = shotlab.Simulation(json.dumps(STUN))  # JSON text works as well as a dict
+    again.advance(tau)
+    assert tau == pytest.approx(0.29125, rel=0.005)
+    assert again.positions[0, 0] == pytest.approx(0.49928, rel=0.005)
+    assert again.velocities[0, 0] == pytest.approx(1.42857, rel=0.005)
+
+
+def test_states_are_numpy_arrays():
+    sim = shotlab.Simulation(os.path.join(SOURCE, "presets", "break.json"))
+    n = len(sim.ids)
+    assert n == 16 and sim.ids[0] == "cue"
+    for a in (sim.positions, sim.velocities, sim.spins):
+        assert isinstance(a, np.ndarray) and a.shape == (n, 3)
+    assert sim.in_play.dtype == bool and sim.in_play.all()
+    sim.advance(0.5)
+    assert np.linalg.norm(sim.velocities, axis=1).max() > 0.1  # the rack is broken
+    assert sim.stats["steps"] > 0
+
+
+def test_overrides_by_path_as_set_takes_them():
+    slow = shotlab.Simulation(STUN, ["materials.ball_cloth.friction=0.4"])
+    while not any(e["kind"] == "rolling" for e in slow.events):
+        slow.advance(1 / 60)
+    tau = next(e["time"] for e in slow.events if e["kind"] == "rolling")
+    assert tau == pytest.approx(0.29125 / 2, rel=0.005)  # twice the friction, half the time
+
+
+def test_run_returns_what_the_command_writes():
+    scene = os.path.join(SOURCE, "presets", "cut.json")
+    mine = shotlab.run(scene, until_rest=True)
+    with tempfile.TemporaryDirectory() as d:
+        out = os.path.join(d, "r.json")
+        subprocess.run([os.environ["SHOTLAB_BIN"], "run", scene, "--until-rest", "--out", out, "-q"], check=True)
+        theirs = json.load(open(out))
+    for result in (mine, theirs):
+        result["stats"].pop("wall_seconds")
+    assert mine == theirs
+    assert any(e["kind"] == "pocketed" for e in mine["events"])
+
+
+def test_errors_are_exceptions_that_name_the_field():
+    bad = dict(STUN, balls=[{"id": "a", "position": [0, R, 0], "mass": -1}])
+    with pytest.raises(ValueError, match=r"balls\[0\]\.mass"):
+        shotlab.Simulation(bad)
+    with pytest.raises(ValueError, match="frction"):
+        shotlab.Simulation(STUN, ["materials.ball_cloth.frction=0.3"])
+    with pytest.raises(ValueError):
+        shotlab.Simulation(STUN).advance(-1)
+    with pytest.raises(ValueError, match="cannot open"):
+        shotlab.run("/nonexistent/scene.json")
