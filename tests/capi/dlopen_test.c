@@ -27,6 +27,9 @@ typedef shotlab_status (*reset_fn)(shotlab_sim*);
 typedef shotlab_status (*balls_fn)(const shotlab_sim*, double*, double*, double*, int*, int);
 typedef shotlab_status (*events_fn)(shotlab_sim*, shotlab_event*, int, int*);
 typedef shotlab_status (*material_fn)(shotlab_sim*, const char*, const char*, double);
+typedef shotlab_status (*from_balls_fn)(int, const double*, const double*, const double*, const double*, const double*,
+                                        const char*, shotlab_sim**);
+typedef shotlab_status (*strike_fn)(shotlab_sim*, const char*, double, double, double, double, double);
 
 /* R1's ball on an endless cloth: friction 0.2, no rolling resistance or spin friction while it slides, friction
  * smoothing 1e4 s/m (its effect on the switch time is 15 us, 0.005 % of it). */
@@ -50,7 +53,10 @@ int main(int argc, char** argv) {
   balls_fn balls = (balls_fn)dlsym(lib, "shotlab_balls");
   events_fn events = (events_fn)dlsym(lib, "shotlab_events");
   material_fn material = (material_fn)dlsym(lib, "shotlab_set_material");
-  if (!version || !last_error || !create || !destroy || !advance || !reset || !balls || !events || !material)
+  from_balls_fn from_balls = (from_balls_fn)dlsym(lib, "shotlab_create_from_balls");
+  strike_fn strike = (strike_fn)dlsym(lib, "shotlab_strike");
+  if (!version || !last_error || !create || !destroy || !advance || !reset || !balls || !events || !material ||
+      !from_balls || !strike)
     return fprintf(stderr, "a function is missing from the library\n"), 1;
   CHECK(version() == SHOTLAB_API_VERSION, "the library's API version is the header's");
   CHECK(dlsym(lib, "_ZN7shotlab10SimulationC1ENS_5ModelENS_5StateE") == NULL, "the engine's C++ symbols are hidden");
@@ -76,6 +82,25 @@ int main(int argc, char** argv) {
   CHECK(fabs(p[0] / 0.49928 - 1) < 0.005, "R1 distance");
   CHECK(fabs(v[0] / 1.42857 - 1) < 0.005, "R1 speed");
   CHECK(in_play[0] == 1, "in play");
+
+  /* From arrays: a pool ball at rest on the pool table, struck along +x at the cue's 2 m/s (centre hit: the rigid-cue
+   * model gives (1 + e) M V0 / (M + m) = 2.66 m/s), rolls on. */
+  const double pos[3] = {-0.9, 0.028575, 0}, radius[1] = {0.028575}, mass[1] = {0.17};
+  shotlab_sim* table = NULL;
+  CHECK(from_balls(1, pos, NULL, NULL, radius, mass, "pool", &table) == SHOTLAB_OK, "created from arrays");
+  CHECK(strike(table, "b0", 2.0, 0.0, 0.0, 0.0, 0.0) == SHOTLAB_OK, "struck");
+  CHECK(advance(table, 1e-4) == SHOTLAB_OK && balls(table, p, v, NULL, NULL, 1) == SHOTLAB_OK, "advance after it");
+  CHECK(fabs(v[0] - 1.75 * 0.54 * 2.0 / (0.54 + 0.17)) < 0.01 && fabs(v[2]) < 1e-9, "the strike's speed and heading");
+  CHECK(strike(table, "nobody", 2, 0, 0, 0, 0) == SHOTLAB_ERROR_ARGUMENT, "an unknown ball");
+  CHECK(strike(table, "b0", 2, 0, 0.9, 0.9, 0) == SHOTLAB_ERROR_ARGUMENT, "a tip offset outside the ball");
+  const double nan_position[3] = {0, NAN, 0};
+  shotlab_sim* none = NULL;
+  CHECK(from_balls(1, nan_position, NULL, NULL, radius, mass, "pool", &none) == SHOTLAB_ERROR_ARGUMENT && none == NULL,
+        "a non-finite position");
+  CHECK(from_balls(1, pos, NULL, NULL, radius, mass, "billiards", &none) == SHOTLAB_ERROR_INPUT &&
+            strstr(last_error(NULL), "table"),
+        "an unknown table type, named");
+  destroy(table);
 
   /* Errors: codes, never an abort. */
   CHECK(advance(NULL, 0.1) == SHOTLAB_ERROR_HANDLE, "NULL handle");
