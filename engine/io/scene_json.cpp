@@ -14,6 +14,7 @@
 #include "shotlab/io/atomic_file.hpp"
 #include "shotlab/rack.hpp"
 #include "shotlab/restitution.hpp"
+#include "scene_fields.hpp"
 
 namespace shotlab {
 namespace {
@@ -21,35 +22,25 @@ namespace {
 using nlohmann::json;
 
 void read_material(const JsonNode& n, ContactMaterial& m) {
-  n.optional("stiffness", m.stiffness, &JsonNode::positive);
-  n.optional("damping", m.damping, &JsonNode::non_negative);
-  n.optional("exponent", m.exponent, &JsonNode::positive);
+  read_fields(n, m, kMaterialNumbers);
   n.optional("damping_law", [&](const JsonNode& v) {
     const std::string law = v.string();
     if (law == "linear") m.damping_law = DampingLaw::Linear;
     else if (law == "hunt_crossley") m.damping_law = DampingLaw::HuntCrossley;
     else v.fail("unknown damping law '" + law + "' (linear, hunt_crossley)");
   });
-  n.optional("friction", m.friction, &JsonNode::non_negative);
   n.optional("friction_law", [&](const JsonNode& v) {
     const std::string law = v.string();
     if (law == "constant") m.friction_law = FrictionLaw::Constant;
     else if (law == "speed_dependent") m.friction_law = FrictionLaw::SpeedDependent;
     else v.fail("unknown friction law '" + law + "' (constant, speed_dependent)");
   });
-  n.optional("friction_fast_ratio", [&](const JsonNode& v) {
-    m.friction_fast_ratio = v.non_negative();
-    if (m.friction_fast_ratio > 1) v.fail("must be between 0 and 1, got " + describe(v.raw()));
-  });
-  n.optional("friction_decay", m.friction_decay, &JsonNode::non_negative);
-  n.optional("rolling_resistance", m.rolling_resistance, &JsonNode::non_negative);
-  n.optional("spin_friction", m.spin_friction, &JsonNode::non_negative);
-  n.optional("restitution", [&](const JsonNode& v) {
-    m.restitution = v.non_negative();  // 0: off, the damping as given
-    if (m.restitution > 1) v.fail("must be at most 1, got " + describe(v.raw()));
-  });
-  n.optional("restitution_speed", m.restitution_speed, &JsonNode::positive);
-  n.optional("contact_time", m.contact_time, &JsonNode::non_negative);
+  for (const auto& [key, member] : {std::pair{"friction_fast_ratio", &ContactMaterial::friction_fast_ratio},
+                                    std::pair{"restitution", &ContactMaterial::restitution}})
+    n.optional(key, [&](const JsonNode& v) {  // shares, 0 to 1
+      m.*member = v.non_negative();
+      if (m.*member > 1) v.fail("must be at most 1, got " + describe(v.raw()));
+    });
   n.finish();
 }
 
@@ -65,21 +56,6 @@ void read_integrator(const JsonNode& n, IntegratorOptions& o) {
   n.optional("max_steps_per_call", [&](const JsonNode& v) { o.max_steps_per_call = v.integer(1, 1 << 30); });
   n.finish();
 }
-
-// The table's optional dimensions (m), each with its check.
-constexpr Field<TableSpec, double> kTableFields[] = {
-    {"length", &TableSpec::length, &JsonNode::positive},
-    {"width", &TableSpec::width, &JsonNode::positive},
-    {"nose_height", &TableSpec::nose_height, &JsonNode::positive},
-    {"ball_radius", &TableSpec::ball_radius, &JsonNode::positive},
-    {"cushion_radius", &TableSpec::cushion_radius, &JsonNode::positive},
-    {"corner_mouth", &TableSpec::corner_mouth, &JsonNode::positive},
-    {"side_mouth", &TableSpec::side_mouth, &JsonNode::positive},
-    {"pocket_radius", &TableSpec::pocket_radius, &JsonNode::positive},
-    {"pocket_shelf", &TableSpec::pocket_shelf, &JsonNode::non_negative},
-    {"jaw_length", &TableSpec::jaw_length, &JsonNode::non_negative},
-    {"rail_width", &TableSpec::rail_width, &JsonNode::non_negative},
-};
 
 void read_table(const JsonNode& n, TableSpec& t) {
   const std::string type = n["type"].string();
@@ -185,21 +161,6 @@ void read_cue(const JsonNode& n, CueStrike& c) {
   n.optional("miscue_limit", c.miscue_limit, &JsonNode::positive);
   n.finish();
 }
-
-// The model's options: numbers (units in model.hpp) and the solver switches.
-constexpr Field<Options, double> kOptionNumbers[] = {
-    {"friction_sharpness", &Options::friction_sharpness, &JsonNode::positive},
-    {"friction_rate_limit", &Options::friction_rate_limit, &JsonNode::non_negative},
-    {"rest_speed", &Options::rest_speed, &JsonNode::positive},
-    {"contact_margin", &Options::contact_margin, &JsonNode::positive},
-    {"sleep_time", &Options::sleep_time, &JsonNode::non_negative},
-};
-constexpr Field<Options, bool> kOptionSwitches[] = {
-    {"rolling_regime", &Options::rolling_regime, &JsonNode::boolean},
-    {"sliding_regime", &Options::sliding_regime, &JsonNode::boolean},
-    {"swing_regime", &Options::swing_regime, &JsonNode::boolean},
-    {"islands", &Options::islands, &JsonNode::boolean},
-};
 
 void read_options(const JsonNode& m, Options& o) {
   m.optional("path", [&](const JsonNode& v) {  // first: the switches below override it

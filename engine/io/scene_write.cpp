@@ -3,8 +3,9 @@
 #include <cmath>
 
 #include "shotlab/io/atomic_file.hpp"
-#include "shotlab/rack.hpp"
 #include "shotlab/io/scene_json.hpp"
+#include "shotlab/rack.hpp"
+#include "scene_fields.hpp"
 
 namespace shotlab {
 namespace {
@@ -15,34 +16,18 @@ json vec(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
 double degrees(double rad) { return rad * 180.0 / M_PI; }
 
 json material_json(const ContactMaterial& m) {
-  return {{"stiffness", m.stiffness},
-          {"damping", m.damping},
-          {"exponent", m.exponent},
-          {"damping_law", m.damping_law == DampingLaw::Linear ? "linear" : "hunt_crossley"},
-          {"friction", m.friction},
-          {"friction_law", m.friction_law == FrictionLaw::Constant ? "constant" : "speed_dependent"},
-          {"friction_fast_ratio", m.friction_fast_ratio},
-          {"friction_decay", m.friction_decay},
-          {"rolling_resistance", m.rolling_resistance},
-          {"spin_friction", m.spin_friction},
-          {"restitution", m.restitution},
-          {"restitution_speed", m.restitution_speed},
-          {"contact_time", m.contact_time}};
+  json j = {{"damping_law", m.damping_law == DampingLaw::Linear ? "linear" : "hunt_crossley"},
+            {"friction_law", m.friction_law == FrictionLaw::Constant ? "constant" : "speed_dependent"},
+            {"friction_fast_ratio", m.friction_fast_ratio},
+            {"restitution", m.restitution}};
+  write_fields(j, m, kMaterialNumbers);
+  return j;
 }
 
 json table_json(const TableSpec& t) {
-  return {{"type", table_kind_name(t.kind)},
-          {"length", t.length},
-          {"width", t.width},
-          {"nose_height", t.nose_height},
-          {"ball_radius", t.ball_radius},
-          {"cushion_radius", t.cushion_radius},
-          {"corner_mouth", t.corner_mouth},
-          {"side_mouth", t.side_mouth},
-          {"pocket_radius", t.pocket_radius},
-          {"pocket_shelf", t.pocket_shelf},
-          {"jaw_length", t.jaw_length},
-          {"rail_width", t.rail_width}};
+  json j = {{"type", table_kind_name(t.kind)}};
+  write_fields(j, t, kTableFields);
+  return j;
 }
 
 json holes_json(const std::vector<Hole>& holes) {
@@ -90,15 +75,9 @@ json scene_to_json(const Scene& s) {
   doc["duration"] = s.duration;
   doc["allow_overlap"] = s.allow_overlap;
   doc["gravity"] = vec(s.model.options.gravity);
-  doc["model"] = {{"friction_sharpness", s.model.options.friction_sharpness},
-                  {"friction_rate_limit", s.model.options.friction_rate_limit},
-                  {"rest_speed", s.model.options.rest_speed},
-                  {"contact_margin", s.model.options.contact_margin},
-                  {"sleep_time", s.model.options.sleep_time},
-                  {"rolling_regime", s.model.options.rolling_regime},
-                  {"sliding_regime", s.model.options.sliding_regime},
-                  {"swing_regime", s.model.options.swing_regime},
-                  {"islands", s.model.options.islands}};
+  doc["model"] = json::object();
+  write_fields(doc["model"], s.model.options, kOptionNumbers);
+  write_fields(doc["model"], s.model.options, kOptionSwitches);
   const IntegratorOptions& o = s.model.integrator;
   doc["integrator"] = {{"method", method_name(o.method)}, {"abs_tol", o.abs_tol}, {"rel_tol", o.rel_tol},
                        {"fixed_step", o.fixed_step}, {"initial_step", o.initial_step},
