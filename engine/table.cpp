@@ -5,9 +5,6 @@
 #include <cmath>
 #include <string>
 
-#include "shotlab/restitution.hpp"
-#include "shotlab/scene.hpp"
-
 namespace shotlab {
 
 TableSpec pool_table() { return TableSpec{}; }
@@ -37,17 +34,17 @@ TableSpec snooker_table() {
   return t;
 }
 
+// The cushions' damping is the restitution wanted at 1 m/s worked out once (restitution.hpp, damping_for_restitution,
+// for the table's ball against the default cushion stiffness); tests/engine/measured_test.cpp checks it still is.
 void set_table_materials(TableKind kind, Model& m) {
   ContactMaterial cloth = default_ball_cloth(), cushion = default_ball_cushion();
-  double mass = kPoolBall.mass, cushion_e = 0;  // cushion restitution at 1 m/s; 0: the default damping
   if (kind == TableKind::Snooker) {
     cloth.friction = 0.212, cloth.rolling_resistance = 0.0128;  // Mathavan et al. 2009/2010
-    cushion.friction = 0.14, cushion_e = 0.98, mass = kSnookerBall.mass;
+    cushion.friction = 0.14, cushion.damping = kSnookerCushionDamping;  // restitution 0.98
   } else if (kind == TableKind::Carom) {
     cloth.rolling_resistance = 0.0046;  // straight runs of real three-cushion shots decelerate at 0.045 m/s^2
-    cushion_e = 0.9, mass = kCaromBall.mass;  // returns 0.76-0.82 of the normal speed from 0.25 to 3 m/s
+    cushion.damping = kCaromCushionDamping;  // restitution 0.9: gives back 0.76-0.82 of the normal speed, 0.25-3 m/s
   }
-  if (cushion_e > 0) cushion.damping = damping_for_restitution(cushion, effective_mass(false, mass), 1.0, cushion_e);
   m.materials[kBallCloth] = cloth;
   m.materials[kBallCushion] = cushion;
 }

@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "shotlab/restitution.hpp"
 #include "shotlab/table.hpp"
 #include "support.hpp"
 
@@ -91,6 +92,15 @@ std::vector<double> cushion_ratios(const std::vector<Tracks>& shots, double reac
           if (std::abs(before) > 0.1) out.push_back(-after / before);
         }
   return out;
+}
+
+// The tables' cushion damping constants are the restitution they stand for, as restitution.hpp works it out.
+TEST(Measured, TableCushionDampingIsItsRestitution) {
+  const ContactMaterial c = default_ball_cushion();
+  EXPECT_NEAR(damping_for_restitution(c, effective_mass(false, kSnookerBall.mass), 1.0, 0.98), kSnookerCushionDamping,
+              1e-9 * kSnookerCushionDamping);
+  EXPECT_NEAR(damping_for_restitution(c, effective_mass(false, kCaromBall.mass), 1.0, 0.9), kCaromCushionDamping,
+              1e-9 * kCaromCushionDamping);
 }
 
 TEST(Measured, CaromClothRollsAsTheRealShotsSlow) {

@@ -42,6 +42,9 @@ NoseAxis nose_axis(const TableSpec& spec);
 // (docs/model.md#parameters): pool the defaults; snooker Mathavan et al.'s cloth and cushion; carom a slow-rolling
 // heated cloth and a livelier cushion.
 void set_table_materials(TableKind kind, Model& model);
+// N s/m: the snooker cushion's damping for restitution 0.98 at 1 m/s (a 0.1406 kg ball), the carom cushion's for 0.9
+// (0.21 kg), both at the default cushion stiffness.
+inline constexpr double kSnookerCushionDamping = 3.4624482939371672, kCaromCushionDamping = 23.632250567796799;
 
 // Appends the table's colliders (materials ball_cloth and ball_cushion) and pockets to the model.
 void add_table(Model& model, const TableSpec& spec);
