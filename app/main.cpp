@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   CLI::App app{"shotlab: billiard-ball physics shot lab"};
   app.require_subcommand(0, 1);
   shotlab::add_run_command(app);
+  shotlab::add_sweep_command(app);
   shotlab::add_bench_command(app);
   shotlab::GuiOptions gui;
   shotlab::add_gui_options(app, gui);

@@ -1,16 +1,11 @@
 #include "shotlab/io/result_json.hpp"
 
+#include "csv.hpp"
+
 namespace shotlab {
 namespace {
 nlohmann::json vec(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
-// A CSV field as RFC 4180 writes it: quoted (quotes doubled) when it holds a comma, a quote or a line break.
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
 }  // namespace
 
 nlohmann::json result_to_json(const Simulation& sim, const std::vector<Event>& extra_events) {

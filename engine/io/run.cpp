@@ -1,7 +1,9 @@
 #include "shotlab/io/run.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <sstream>
 
 namespace shotlab {
 
@@ -12,6 +14,18 @@ bool asleep(const Simulation& sim) {
   for (int i = 0; i < s.ball_count(); ++i)
     if (s.in_play[i] && !s.sleeping(i)) return false;
   return true;
+}
+
+// The limit a run has reached, empty when none.
+std::string limit_reached(const Simulation& sim, const RunLimits& limits,
+                          std::chrono::steady_clock::time_point start) {
+  std::ostringstream why;
+  const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
+  if (limits.wall_seconds > 0 && wall.count() > limits.wall_seconds)
+    why << "wall time over " << limits.wall_seconds << " s at t = " << sim.time() << " s";
+  else if (limits.max_events > 0 && sim.events().size() > limits.max_events)
+    why << "more than " << limits.max_events << " events by t = " << sim.time() << " s";
+  return why.str();
 }
 
 }  // namespace
@@ -27,8 +41,9 @@ HeadlessRun start_run(const Scene& scene) {
   return run;
 }
 
-void advance_run(Simulation& sim, double duration, double sample_rate, bool until_rest,
-                 const std::function<void()>& on_sample) {
+std::string advance_run(Simulation& sim, double duration, double sample_rate, bool until_rest,
+                        const std::function<void()>& on_sample, const RunLimits& limits) {
+  const auto start = std::chrono::steady_clock::now();
   const double slice = 1.0 / sample_rate;
   const long slices = static_cast<long>(std::ceil(duration / slice - 1e-9));
   double window_end = 0;
@@ -39,6 +54,8 @@ void advance_run(Simulation& sim, double duration, double sample_rate, bool unti
     }
     const double sample = std::min(k * slice, duration);
     const bool new_window = sim.time() >= window_end;
+    if (new_window)
+      if (std::string why = limit_reached(sim, limits, start); !why.empty()) return why;
     while (window_end <= sim.time()) window_end += kStepLimitWindow;
     const double to = std::min(sample, window_end);
     if (new_window) sim.advance(to - sim.time());
@@ -48,6 +65,7 @@ void advance_run(Simulation& sim, double duration, double sample_rate, bool unti
     if (on_sample) on_sample();
     if (until_rest && sim.at_rest()) break;
   }
+  return {};
 }
 
 }  // namespace shotlab

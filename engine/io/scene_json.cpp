@@ -260,7 +260,7 @@ Scene parse_scene(const json& doc, const std::string& source) {
   return s;
 }
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+std::string read_scene_file(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a folder, not a scene file");
   std::ifstream in(path, std::ios::binary);
@@ -270,7 +270,11 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   text.resize(static_cast<size_t>(in.gcount()));
   if (text.size() > kMaxSceneBytes)
     throw InputError(path + ": larger than " + std::to_string(kMaxSceneBytes >> 20) + " MiB, not a scene file");
-  json doc = parse_json_text(text, path);
+  return text;
+}
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  json doc = parse_json_text(read_scene_file(path), path);
   for (const std::string& o : overrides) apply_override(doc, o);
   return parse_scene(doc, overrides.empty() ? path : path + " (with --set overrides)");
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The command line fuzzer: shotlab started with random arguments, as a user's typos and scripts produce them.
 
-Every option of `shotlab run`, `shotlab bench` and the GUI (started with no display, so it checks and explains) is
+Every option of `shotlab run`, `shotlab sweep`, `shotlab bench` and the GUI (started with no display, so it checks and explains) is
 given values from a list of good, odd and broken ones; tokens are mangled at random. Each case must end on its own
 (no hang) with status 0, 1 or 3 as docs/scene-format.md says, never by a signal or a sanitizer report; a refusal
 (status 1) says why on stderr in a few lines and leaves an existing output file as it was; a success writes what it
@@ -71,6 +71,14 @@ class Vocabulary:
         self.bench_good = [['--quick'], ['--scenes', 'S1'], ['--repeats', '1'], ['--budget', '0.01'],
                            ['--out-dir', os.path.join(tmp, 'bench')]]
 
+        self.vary_values = ['1,2', '0.5:3:3', '[1,2]', '1:2', '2:1:2', 'rk4,dopri5', '[[1,0,0],[0,0,1]]', '1,,2',
+                            '0:1:20000000', '1:x:3', '', 'nan', '1e400:1:2', '"a,b",c', b'\xff,1']
+        self.sweep_options = [['--samples', '2'], ['--samples', '0'], ['--samples', '-1'], ['--samples', 'abc'],
+                              ['--samples', '18446744073709551616'], ['--samples', '20000000'], ['--seed', '7'],
+                              ['--seed', '-3'], ['--jobs', '2'], ['--jobs', '0'], ['--jobs', '-1'], ['--jobs', '5000'],
+                              ['--timeout', '0'], ['--timeout', 'nan'], ['--max-events', '10'],
+                              ['--max-events', '-1'], ['-q']]
+
     def output(self, rng, kind):
         return rng.choice([os.path.join(self.tmp, 'keep'), os.path.join(self.tmp, 'new.' + kind), '/dev/null',
                            '/dev/full', os.path.join(self.tmp, 'dir'), os.path.join(self.tmp, 'missing', 'x'), '',
@@ -96,6 +104,27 @@ def run_args(rng, v):
             args += [option, rng.choice(v.max_samples)]
         else:
             args.append(option)
+    return args
+
+
+def sweep_args(rng, v):
+    # Runs are cut at 2 s of wall time (a later --timeout may change it) so that a valid sweep of a few runs ends soon.
+    args = ['sweep', rng.choice(v.scenes), '--timeout', '2']
+    for _ in range(rng.randrange(1, 3)):
+        value = rng.choice(v.vary_values)
+        path = rng.choice(v.set_paths)
+        args += ['--vary', path.encode() + b'=' + (value if isinstance(value, bytes) else value.encode())]
+    for _ in range(rng.randrange(0, 4)):
+        option = rng.choice(['--set', '--out', '--duration', 'other'])
+        if option == '--set':
+            value = rng.choice(v.set_values)
+            args += [option, rng.choice(v.set_paths).encode() + b'=' + (value if isinstance(value, bytes) else value.encode())]
+        elif option == '--out':
+            args += [option, v.output(rng, 'csv')]
+        elif option == '--duration':
+            args += [option, rng.choice(v.durations)]
+        else:
+            args += rng.choice(v.sweep_options)
     return args
 
 
@@ -180,6 +209,12 @@ def check(args, proc, v):
             with open(trajectory, 'rb') as f:
                 if not f.readline().startswith(b'time,ball,'):
                     problems.append('status 0 but --trajectory has no header')
+    if proc.returncode == 0 and args and args[0] == 'sweep' and '--help' not in args:
+        out = last_value(args, '--out')
+        if out == os.path.join(v.tmp, 'new.csv'):
+            with open(out, 'rb') as f:
+                if not f.readline().startswith(b'run,'):
+                    problems.append('status 0 but the sweep --out has no header')
     return problems
 
 
@@ -202,7 +237,7 @@ def main():
                     os.remove(os.path.join(tmp, name))
             with open(os.path.join(tmp, 'keep'), 'wb') as f:
                 f.write(KEEP)
-            maker = rng.choices([run_args, bench_args, gui_args], weights=[6, 1, 2])[0]
+            maker = rng.choices([run_args, sweep_args, bench_args, gui_args], weights=[6, 3, 1, 2])[0]
             args = maker(rng, v)
             if maker is not bench_args:  # a bench keeps its bad option: a valid one runs for minutes
                 args = mangle(rng, args)

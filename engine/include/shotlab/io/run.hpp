@@ -3,6 +3,7 @@
 #pragma once
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "shotlab/scene.hpp"
@@ -19,11 +20,19 @@ struct HeadlessRun {
 };
 HeadlessRun start_run(const Scene& scene);
 
+// Bounds on one run beyond the engine's own step limit, for programs that run many scenes nobody looked at (sweeps):
+// 0 means unbounded. Checked once per kStepLimitWindow of simulated time.
+struct RunLimits {
+  double wall_seconds = 0;  // s of wall-clock time
+  size_t max_events = 0;    // events recorded
+};
+
 // Advances to `duration` s in slices of 1 / sample_rate s, calling on_sample (if any) after each. The step limit counts
 // per kStepLimitWindow of simulated time, not per slice, so that how a run is sampled never changes whether it stops.
 // until_rest: stop once every ball is at rest. Without on_sample or until_rest a run whose balls all sleep jumps to
-// its end (nothing changes any more).
-void advance_run(Simulation& sim, double duration, double sample_rate, bool until_rest,
-                 const std::function<void()>& on_sample = {});
+// its end (nothing changes any more). Returns the limit that ended the run early ("wall time over 60 s"), empty when
+// none did (the engine's own stops are in sim.status()).
+std::string advance_run(Simulation& sim, double duration, double sample_rate, bool until_rest,
+                        const std::function<void()>& on_sample = {}, const RunLimits& limits = {});
 
 }  // namespace shotlab

@@ -16,6 +16,9 @@ inline constexpr size_t kMaxSceneBytes = size_t{16} << 20;  // a scene file larg
 // the file, the field and the problem.
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// A scene file's text, refused (InputError) when it is a folder, unreadable or larger than kMaxSceneBytes.
+std::string read_scene_file(const std::string& path);
+
 // Parses JSON text; a syntax error, a number that overflows, nesting deeper than kMaxJsonDepth or a key given twice
 // in one object becomes an InputError naming `source` (and the field).
 inline constexpr int kMaxJsonDepth = 64;  // nesting levels a document may have (scene files need 4)
