@@ -13,26 +13,27 @@
 #include "shotlab/io/result_json.hpp"
 #include "shotlab/io/run.hpp"
 #include "shotlab/io/scene_json.hpp"
+#include "shotlab/io/sweep.hpp"
 
 namespace py = pybind11;
 using namespace shotlab;
 
 namespace {
 
-// A scene from a path, JSON text (starting with '{') or a dict, with PATH=VALUE overrides as --set takes them.
+// A scene's JSON text and the name its messages use, from a path, JSON text (starting with '{') or a dict.
+std::pair<std::string, std::string> scene_text(const py::object& scene) {
+  if (py::isinstance<py::dict>(scene))
+    return {py::module_::import("json").attr("dumps")(scene).cast<std::string>(), "scene"};
+  const std::string text = scene.cast<std::string>();
+  const size_t first = text.find_first_not_of(" \t\r\n");
+  if (first != std::string::npos && text[first] == '{') return {text, "scene JSON"};
+  return {read_scene_file(text), text};
+}
+
+// A scene from a path, JSON text or a dict, with PATH=VALUE overrides as --set takes them.
 Scene load(const py::object& scene, const std::vector<std::string>& overrides) {
-  nlohmann::json doc;
-  std::string source = "scene";
-  if (py::isinstance<py::dict>(scene)) {
-    doc = nlohmann::json::parse(py::module_::import("json").attr("dumps")(scene).cast<std::string>());
-  } else {
-    const std::string text = scene.cast<std::string>();
-    if (text.find_first_not_of(" \t\r\n") != std::string::npos && text[text.find_first_not_of(" \t\r\n")] == '{') {
-      doc = parse_json_text(text, "scene JSON");
-    } else {
-      return load_scene(text, overrides);  // a path
-    }
-  }
+  const auto [text, source] = scene_text(scene);
+  nlohmann::json doc = parse_json_text(text, source);
   for (const std::string& o : overrides) apply_override(doc, o);
   return parse_scene(doc, overrides.empty() ? source : source + " (with overrides)");
 }
@@ -51,6 +52,47 @@ py::array_t<double> vectors(const Simulation& sim, int offset) {
   return out;
 }
 
+// A sweep as Python holds it: what made it (so that it pickles to Dask's workers, which rebuild the plan) and the
+// sweep itself.
+struct PySweep {
+  std::string text, source;
+  std::vector<std::string> vary, overrides;
+  size_t samples;
+  uint64_t seed;
+  std::optional<double> duration;
+  double timeout;
+  size_t max_events;
+  std::unique_ptr<Sweep> sweep;
+
+  void build() {
+    std::vector<SweepAxis> axes;
+    for (const std::string& v : vary) axes.push_back(parse_sweep_axis(v));
+    if (!(timeout > 0)) throw InputError("timeout: must be a number of seconds above 0");
+    sweep = std::make_unique<Sweep>(text, source, plan_sweep(axes, samples, seed),
+                                    SweepSettings{overrides, duration, {timeout, max_events}});
+  }
+  py::tuple state() const {
+    return py::make_tuple(SHOTLAB_PY_VERSION, text, source, vary, overrides, samples, seed, duration, timeout, max_events);
+  }
+  static PySweep from_state(const py::tuple& t) {
+    const std::string version = t.size() == 10 ? t[0].cast<std::string>() : "unknown";
+    if (version != SHOTLAB_PY_VERSION)
+      throw std::runtime_error("a sweep from shotlab " + version + " on shotlab " SHOTLAB_PY_VERSION
+                               ": install the same version on the client and every worker");
+    PySweep s{t[1].cast<std::string>(), t[2].cast<std::string>(), t[3].cast<std::vector<std::string>>(),
+              t[4].cast<std::vector<std::string>>(), t[5].cast<size_t>(), t[6].cast<uint64_t>(),
+              t[7].cast<std::optional<double>>(), t[8].cast<double>(), t[9].cast<size_t>(), nullptr};
+    s.build();
+    return s;
+  }
+  std::vector<std::string> lines(size_t begin, std::optional<size_t> end, int jobs) const {
+    std::vector<std::string> out;
+    py::gil_scoped_release release;  // the engine runs while other Python threads (Dask's) do
+    sweep->run(begin, end.value_or(sweep->size()), jobs, [&](size_t, const std::string& line) { out.push_back(line); });
+    return out;
+  }
+};
+
 struct PySimulation {
   HeadlessRun run;
   PySimulation(const py::object& scene, const std::vector<std::string>& overrides) : run(start_run(load(scene, overrides))) {}
@@ -59,8 +101,9 @@ struct PySimulation {
 
 }  // namespace
 
-PYBIND11_MODULE(shotlab, m) {
-  m.doc() = "shotlab: billiard-ball physics (docs/python.md)";
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "shotlab's engine (the package shotlab re-exports it; docs/python.md)";
+  m.attr("version") = SHOTLAB_PY_VERSION;
   py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
 
   py::class_<PySimulation>(m, "Simulation")
@@ -114,4 +157,23 @@ PYBIND11_MODULE(shotlab, m) {
   }, py::arg("scene"), py::arg("overrides") = std::vector<std::string>{}, py::arg("duration") = py::none(),
      py::arg("until_rest") = false, py::arg("sample_rate") = 60.0,
      "Runs a scene headless as `shotlab run` does and returns what `shotlab run --out` writes, as a dict");
+
+  py::class_<PySweep>(m, "Sweep")
+      .def(py::init([](const py::object& scene, const std::vector<std::string>& vary, size_t samples, uint64_t seed,
+                       const std::vector<std::string>& overrides, std::optional<double> duration, double timeout,
+                       size_t max_events) {
+             auto [text, source] = scene_text(scene);
+             PySweep s{text, source, vary, overrides, samples, seed, duration, timeout, max_events, nullptr};
+             s.build();
+             return s;
+           }),
+           py::arg("scene"), py::arg("vary"), py::arg("samples") = 0, py::arg("seed") = 1,
+           py::arg("overrides") = std::vector<std::string>{}, py::arg("duration") = py::none(),
+           py::arg("timeout") = 60.0, py::arg("max_events") = 100000,
+           "A sweep as `shotlab sweep` makes it: vary as PATH=VALUES strings, samples 0 for the grid")
+      .def("__len__", [](const PySweep& s) { return s.sweep->size(); })
+      .def_property_readonly("header", [](const PySweep& s) { return s.sweep->header(); }, "the CSV header line")
+      .def("lines", &PySweep::lines, py::arg("begin") = 0, py::arg("end") = py::none(), py::arg("jobs") = 0,
+           "Runs rows [begin, end) on `jobs` threads (0: one per core); their CSV lines in row order")
+      .def(py::pickle([](const PySweep& s) { return s.state(); }, &PySweep::from_state));
 }

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # cmake --install into a scratch prefix, then build tests/capi/example.c the way docs/c-api.md says (pkg-config) and
-# with the CMake package, and run both on a preset: a user's program against the installed library.
+# with the CMake package, and run both on a preset: a user's program against the installed library; then the
+# installed Python package.
 # usage: install_check.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
 build=$1 src=$(cd "$2" && pwd)
@@ -28,3 +29,14 @@ cmake -S "$prefix/user" -B "$prefix/user/build" -DCMAKE_PREFIX_PATH="$prefix" > 
 cmake --build "$prefix/user/build" > /dev/null
 "$prefix/user/build/example" "$src/presets/cut.json" | grep -q "pocketed: 1" || { echo "FAIL: the CMake package"; exit 1; }
 echo "installed library: pkg-config and CMake package builds pot the 1 ball"
+# The Python package from the prefix, as docs/python.md says (when the build made it).
+if [ -d "$build/python/shotlab" ]; then
+  PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 -c "
+import shotlab
+assert shotlab.__file__.startswith('$prefix'), shotlab.__file__
+rows = shotlab.sweep('$src/presets/cut.json', ['cue.speed=2'])
+assert rows[0]['pocketed'] == '1@pocket-right-front', rows
+import shotlab.cluster
+" || { echo "FAIL: the installed Python package"; exit 1; }
+  echo "installed Python package: imports and its sweep pots the 1 ball"
+fi
