@@ -3,13 +3,11 @@
 #include "shotlab/io/sweep.hpp"
 
 #include <chrono>
-#include <exception>
 #include <map>
-#include <mutex>
 #include <sstream>
-#include <thread>
 
 #include "shotlab/io/json_reader.hpp"
+#include "shotlab/io/parallel.hpp"
 #include "shotlab/io/scene_json.hpp"
 #include "csv.hpp"
 
@@ -131,41 +129,14 @@ void Sweep::run(size_t begin, size_t end, int jobs, const std::function<void(siz
                 const std::function<void(size_t, size_t)>& progress, const std::atomic<bool>* cancel) const {
   end = std::min(end, size());
   if (begin >= end) return;
-  const size_t total = end - begin;
-  if (jobs <= 0) jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  jobs = static_cast<int>(std::min<size_t>(static_cast<size_t>(jobs), total));
-  std::atomic<size_t> next{begin};
-  std::atomic<bool> failed{false};
-  std::mutex mutex;  // guards everything below
-  std::vector<std::string> done(total);
-  std::vector<bool> ready(total, false);
-  size_t emitted = begin, finished = 0;
-  std::exception_ptr error;
-  auto work = [&] {
-    for (size_t i; !failed && !(cancel && *cancel) && (i = next++) < end;) {
-      std::string line = row(i);
-      std::lock_guard lock(mutex);
-      if (failed) return;
-      done[i - begin] = std::move(line);
-      ready[i - begin] = true;
-      ++finished;
-      try {
-        for (; emitted < end && ready[emitted - begin]; ++emitted) {
-          on_row(emitted, done[emitted - begin]);
-          std::string().swap(done[emitted - begin]);
-        }
-        if (progress) progress(finished, total);
-      } catch (...) {  // a row that cannot be written ends the sweep; the caller hears why
-        error = std::current_exception();
-        failed = true;
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int k = 1; k < jobs; ++k) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
+  std::vector<std::string> lines(end - begin);
+  parallel_in_order(
+      begin, end, jobs, [&](size_t i) { lines[i - begin] = row(i); },
+      [&](size_t i) {
+        on_row(i, lines[i - begin]);
+        std::string().swap(lines[i - begin]);  // a long sweep keeps only the rows not yet handed on
+      },
+      progress, cancel);
 }
 
 }  // namespace shotlab
