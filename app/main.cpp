@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
   shotlab::add_run_command(app);
   shotlab::add_sweep_command(app);
+  shotlab::add_margin_command(app);
   shotlab::add_bench_command(app);
   shotlab::GuiOptions gui;
   shotlab::add_gui_options(app, gui);

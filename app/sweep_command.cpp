@@ -1,16 +1,14 @@
 // `shotlab sweep`: one scene run over a grid or a random sample of scene values, on every core, one CSV row per run
 // (engine/include/shotlab/io/sweep.hpp; docs/sweep.md).
-#include <unistd.h>
-
 #include <chrono>
 #include <csignal>
 #include <iomanip>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
 
 #include "app/commands.hpp"
+#include "app/progress.hpp"
 #include "shotlab/io/atomic_file.hpp"
 #include "shotlab/io/scene_json.hpp"
 #include "shotlab/io/sweep.hpp"
@@ -37,22 +35,11 @@ extern "C" void on_interrupt(int) {  // the runs under way finish; a second Ctrl
   std::signal(SIGINT, SIG_DFL);
 }
 
-// "[#######.............]  340/1000 runs, 12 s left" on one terminal line, redrawn in place.
-void draw_progress(size_t done, size_t total, std::chrono::steady_clock::time_point start) {
-  constexpr int kWidth = 30;
-  const int filled = static_cast<int>(kWidth * done / total);
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const double left = done ? elapsed * static_cast<double>(total - done) / static_cast<double>(done) : 0;
-  std::fprintf(stderr, "\r[%s%s] %zu/%zu runs, %.0f s left ", std::string(filled, '#').c_str(),
-               std::string(kWidth - filled, '.').c_str(), done, total, left);
-  if (done == total) std::fprintf(stderr, "\n");
-}
-
 int sweep(const SweepOptions& o) {
   std::vector<SweepAxis> axes;
   for (const std::string& v : o.vary) axes.push_back(parse_sweep_axis(v));
   if (!(o.timeout > 0)) throw InputError("--timeout: must be a number of seconds above 0");
-  SweepSettings settings{o.overrides, o.duration, {o.timeout, o.max_events}};
+  SweepSettings settings{o.overrides, o.duration, {o.timeout, o.max_events, {}}};
   const Sweep sweep(read_scene_file(o.scene), o.scene, plan_sweep(axes, o.samples, o.seed), settings);
   std::unique_ptr<AtomicFile> file = o.out.empty() ? nullptr : std::make_unique<AtomicFile>(o.out);
   auto write = [&](const std::string& text) {
@@ -62,20 +49,12 @@ int sweep(const SweepOptions& o) {
   write(sweep.header());
   size_t failed = 0;
   const auto start = std::chrono::steady_clock::now();
-  const bool bar = !o.quiet && isatty(STDERR_FILENO);
   auto on_row = [&](size_t, const std::string& line) {
     write(line);
     failed += sweep.status(line) != "ok";
   };
-  auto last_drawn = start - std::chrono::seconds(1);
-  auto progress = [&](size_t done, size_t total) {  // redrawn at most ten times a second
-    const auto now = std::chrono::steady_clock::now();
-    if (!bar || (done < total && now - last_drawn < std::chrono::milliseconds(100))) return;
-    last_drawn = now;
-    draw_progress(done, total, start);
-  };
   const auto previous = std::signal(SIGINT, on_interrupt);
-  sweep.run(0, sweep.size(), o.jobs, on_row, progress, &interrupted);
+  sweep.run(0, sweep.size(), o.jobs, on_row, progress_bar(!o.quiet), &interrupted);
   std::signal(SIGINT, previous);
   if (interrupted) {
     std::cerr << "\nshotlab: sweep interrupted; " << (o.out.empty() ? "the rows so far are above" : o.out + " left as it was") << "\n";

@@ -1,6 +1,6 @@
 // `shotlab bench`: the work-precision report (issue 4). Runs every case with every integrator setting, measures the
 // error against a reference solution and the cost, and writes CSV and markdown (bench/report.hpp); the figures are
-// drawn from the CSV by scripts/bench_plots.py (bench/plots.hpp).
+// drawn from the CSV by scripts/bench_plots.py (app/plot_script.hpp).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include <set>
 #include <sstream>
 
-#include "app/bench/plots.hpp"
+#include "app/plot_script.hpp"
 #include "app/bench/report.hpp"
 #include "app/bench/scaling.hpp"
 #include "app/commands.hpp"

@@ -1,5 +1,5 @@
 // What `shotlab bench` writes: results.csv (every run) and results.md (tables with machine and date). Its figures are
-// drawn from results.csv by scripts/bench_plots.py (bench/plots.hpp).
+// drawn from results.csv by scripts/bench_plots.py (app/plot_script.hpp).
 #pragma once
 #include <string>
 #include <vector>

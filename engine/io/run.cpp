@@ -64,6 +64,7 @@ std::string advance_run(Simulation& sim, double duration, double sample_rate, bo
     ++k;
     if (on_sample) on_sample();
     if (until_rest && sim.at_rest()) break;
+    if (limits.enough && limits.enough(sim)) break;
   }
   return {};
 }

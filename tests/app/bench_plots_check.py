@@ -97,7 +97,7 @@ def run_bench(shotlab, out, python):
 
 
 def python_with_matplotlib():
-    """The interpreter `shotlab bench` would pick (app/bench/plots.cpp), or None."""
+    """The interpreter `shotlab bench` would pick (app/plot_script.cpp), or None."""
     chosen = os.environ.get('SHOTLAB_PYTHON')
     for python in [chosen] if chosen else ['python3', '/usr/bin/python3']:
         try:

@@ -25,6 +25,7 @@ HeadlessRun start_run(const Scene& scene);
 struct RunLimits {
   double wall_seconds = 0;  // s of wall-clock time
   size_t max_events = 0;    // events recorded
+  std::function<bool(const Simulation&)> enough;  // if set, checked after each slice: true ends the run (not a limit)
 };
 
 // Advances to `duration` s in slices of 1 / sample_rate s, calling on_sample (if any) after each. The step limit counts

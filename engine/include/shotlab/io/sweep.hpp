@@ -41,7 +41,7 @@ SweepPlan plan_sweep(const std::vector<SweepAxis>& axes, size_t samples, uint64_
 struct SweepSettings {
   std::vector<std::string> overrides;  // PATH=VALUE applied to every run before the varied paths
   std::optional<double> duration;      // s; the scene's when unset. Every run stops at rest or at its duration.
-  RunLimits limits{60, 100'000};       // each run: wall seconds, events
+  RunLimits limits{60, 100'000, {}};     // each run: wall seconds, events
 };
 
 // A sweep over one scene. Rows are CSV lines (docs/sweep.md lists the columns): the overrides of the run, its status

@@ -1,4 +1,4 @@
-#include "plots.hpp"
+#include "plot_script.hpp"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -53,20 +53,26 @@ std::string python_with_matplotlib() {
 
 }  // namespace
 
-bool draw_figures(const std::string& out_dir) {
-  const std::string script = data_root() + "/scripts/bench_plots.py";
-  const bool have_script = std::filesystem::is_regular_file(script);
+bool run_plot_script(const std::string& script, const std::vector<std::string>& args, const std::string& command) {
+  const std::string path = data_root() + "/scripts/" + script;
+  const bool have_script = std::filesystem::is_regular_file(path);
   const std::string python = have_script ? python_with_matplotlib() : "";
+  std::string shown;
+  for (const std::string& a : args) shown += " " + a;
   if (python.empty()) {
-    std::cerr << "shotlab bench: figures not drawn (" << (have_script ? "no python3 with matplotlib" : "no " + script)
-              << "); draw them with `python3 " << script << " " << out_dir
+    std::cerr << command << ": figures not drawn (" << (have_script ? "no python3 with matplotlib" : "no " + path)
+              << "); draw it with `python3 " << path << shown
               << "` (needs matplotlib; Debian: apt-get install python3-matplotlib)" << std::endl;
     return true;
   }
   std::cout.flush();  // our lines first, then the script's
-  if (run_program({python, script, "--", out_dir}, false) == 0) return true;
-  std::cerr << "shotlab bench: " << script << " failed on " << out_dir << " (the CSV files are written)" << std::endl;
+  std::vector<std::string> argv{python, path, "--"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  if (run_program(argv, false) == 0) return true;
+  std::cerr << command << ": " << path << " failed on" << shown << " (the data files are written)" << std::endl;
   return false;
 }
+
+bool draw_figures(const std::string& out_dir) { return run_plot_script("bench_plots.py", {out_dir}, "shotlab bench"); }
 
 }  // namespace shotlab
