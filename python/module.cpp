@@ -69,7 +69,7 @@ struct PySweep {
     for (const std::string& v : vary) axes.push_back(parse_sweep_axis(v));
     if (!(timeout > 0)) throw InputError("timeout: must be a number of seconds above 0");
     sweep = std::make_unique<Sweep>(text, source, plan_sweep(axes, samples, seed),
-                                    SweepSettings{overrides, duration, {timeout, max_events}});
+                                    SweepSettings{overrides, duration, {timeout, max_events, {}}});
   }
   py::tuple state() const {
     return py::make_tuple(SHOTLAB_PY_VERSION, text, source, vary, overrides, samples, seed, duration, timeout, max_events);

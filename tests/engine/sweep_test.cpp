@@ -119,7 +119,7 @@ TEST(Sweep, RowsMatchSingleRunsAndDoNotDependOnThreads) {
 
 TEST(Sweep, AFailedRunIsARowAndTheSweepGoesOn) {
   SweepSettings bounded;
-  bounded.limits = {60, 30};
+  bounded.limits = {60, 30, {}};
   const Sweep sweep(text_of(preset("cut.json")), "cut.json", plan({"cue.speed=2,-1,zz"}), {});
   const std::vector<std::string> rows = run_all(sweep, 2);
   EXPECT_EQ(fields(rows[0])[2], "ok");
