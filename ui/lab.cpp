@@ -327,7 +327,7 @@ void Lab::finish_playing() {
 
 bool Lab::animating() const {
   const bool tracing = log_job_.valid() && log_job_.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
-  return playing || predicting() || tracing;
+  return playing || predicting() || tracing || margin.busy();
 }
 
 bool Lab::contact_on_screen() const {

@@ -15,6 +15,7 @@
 #include "ui/contact_log.hpp"
 #include "ui/history.hpp"
 #include "ui/layout.hpp"
+#include "ui/margin_view.hpp"
 #include "ui/predictor.hpp"
 #include "ui/settings.hpp"
 #include "ui/shot.hpp"
@@ -74,6 +75,7 @@ class Lab {
   std::optional<Rect> screenshot_crop;  // only this part of the window (a plot), else all of it
   std::string strobe_request;      // PNG path: a multiple exposure of the shot, drawn by the next frame
   std::function<void(const Scene&)> on_load;  // after a scene file loaded (gui.cpp frames the camera)
+  MarginView margin;            // the shot margin worked out in the background (margin_view.hpp)
 
   // Files and scenes (lab.cpp).
   bool load(const std::string& path);  // false (and the message set) when the file is bad; nothing is lost

@@ -139,6 +139,23 @@ void labels_and_centre(ImDrawList* d, const Viewport& vp, const Lab& lab) {
   }
 }
 
+// Where the margin's tries left the goal's ball (green: the shot worked, red: it did not) and the cue ball (grey).
+void margin_scatter(ImDrawList* d, const Viewport& vp, const Lab& lab) {
+  if (!lab.margin.open || !lab.margin.scatter) return;
+  const auto e = fresh_estimate(lab, lab.margin);
+  if (!e) return;
+  const int goal = scene_ball(lab.scene, e->options.goal.ball), cue = scene_ball(lab.scene, lab.scene.cue->ball);
+  for (const MarginSample& s : e->result.samples)
+    for (const int b : {cue, goal}) {
+      if (b < 0 || b >= static_cast<int>(s.end_x.size()) || s.pocketed[b]) continue;
+      const double r = lab.scene.balls[b].spec.radius;
+      const auto p = vp.project(Vec3{s.end_x[b], r, s.end_z[b]});
+      if (!p) continue;
+      const ImU32 c = b != goal ? IM_COL32(200, 200, 200, 150) : s.success ? IM_COL32(80, 230, 80, 200) : IM_COL32(240, 70, 60, 200);
+      d->AddCircleFilled(v2(*p), 2.5f, c);
+    }
+}
+
 void target(ImDrawList* d, const Viewport& vp, const Lab& lab) {
   if (!lab.target) return;
   const Vec3 t = *lab.target + Vec3{0, 0.001, 0};
@@ -208,6 +225,7 @@ void draw_all(const Lab& lab, const Viewport& vp, ImDrawList* d) {
                    IM_COL32(120, 255, 120, 200), 32, 2.0f);
   }
   target(d, vp, lab);
+  margin_scatter(d, vp, lab);
   hand_zone_outline(d, vp, lab);
   labels_and_centre(d, vp, lab);
   vectors(d, vp, lab);

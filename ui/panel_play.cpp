@@ -198,6 +198,10 @@ bool left_panel(Lab& lab, Camera& camera, const Rect& where) {
     if (ImGui::CollapsingHeader("Playback", ImGuiTreeNodeFlags_DefaultOpen)) playback_section(lab);
     if (ImGui::CollapsingHeader("Aim", ImGuiTreeNodeFlags_DefaultOpen)) aim_section(lab);
     if (ImGui::CollapsingHeader("Practice")) practice_section(lab);
+    lab.margin.open = ImGui::CollapsingHeader("Shot margin");
+    mark("Shot margin");
+    if (lab.margin.open) margin_section(lab);
+    else update_margin(lab, lab.margin);  // closed: cancels what runs
     if (ImGui::CollapsingHeader("Balls")) balls_section(lab);
     if (ImGui::CollapsingHeader("View")) view_section(lab, camera);
   }

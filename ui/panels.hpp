@@ -38,6 +38,7 @@ bool inspector_panel(Lab& lab, Tuning& tuning, const Rect& where);  // panel_tea
 
 void scene_section(Lab& lab);         // panel_files.cpp: presets, recent files, open, save
 void practice_section(Lab& lab);      // panel_practice.cpp: position target, kept shots, camera follow
+void margin_section(Lab& lab);        // panel_margin.cpp: success under stroke noise, sensitivity, aim x speed map
 void view_section(Lab& lab, Camera& camera);  // panel_practice.cpp: drawing aids, UI scale, pictures
 void teach_panel(Lab& lab);           // panel_teach.cpp
 void teach_plots(Lab& lab);           // panel_plots.cpp

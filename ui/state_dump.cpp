@@ -82,6 +82,20 @@ json physics_json(const Lab& lab) {
   return {{"materials", m}, {"changes", lab.physics_changes()}, {"compare_trails", lab.compare.size()}};
 }
 
+json margin_json(const Lab& lab) {
+  const MarginView& v = lab.margin;
+  json j{{"open", v.open}, {"problem", v.problem}, {"estimating", v.estimate.busy()}, {"mapping", v.map.busy()},
+         {"map_wanted", v.map_wanted}};
+  if (const auto e = fresh_estimate(lab, v))
+    j["estimate"] = {{"goal_ball", e->options.goal.ball}, {"pocket", e->options.goal.pocket},
+                     {"probability", e->result.probability}, {"samples", e->result.samples.size()},
+                     {"aim_window", {e->result.tolerance[kAim].lo, e->result.tolerance[kAim].hi}}};
+  if (const auto m = v.map.result())
+    j["map"] = {{"aims", m->map.aims}, {"speeds", m->map.speeds}, {"aim_deg", {m->map.aim_lo_deg, m->map.aim_hi_deg}},
+                {"speed", {m->map.speed_lo, m->map.speed_hi}}, {"cells", m->map.cells}};
+  return j;
+}
+
 }  // namespace
 
 json state_json(const Lab& lab, const ScreenInfo& screen) {
@@ -131,7 +145,8 @@ json state_json(const Lab& lab, const ScreenInfo& screen) {
          {"achieved_speed", lab.achieved_speed},
          {"physics", physics_json(lab)},
          {"cue", cue_json(lab)},
-         {"balls", balls_json(lab, screen)}};
+         {"balls", balls_json(lab, screen)},
+         {"margin", margin_json(lab)}};
   if (const auto miss = lab.target_miss()) j["target_miss"] = *miss;
   if (lab.scene.table && screen.viewport) {
     const double hx = lab.scene.table->length / 2, hz = lab.scene.table->width / 2;

@@ -16,9 +16,9 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
 constexpr double kMarginSampleRate = 60;  // Hz: how often a replay checks for rest and for a decided goal
-// Steps of the tolerance search where a source has no noise: 0.125 deg, 1 %, 0.5 mm, 0.5 mm, 0.1 deg.
+// The deviation the tolerance search steps by where a source has no noise: 0.125 deg, 1 %, 0.5 mm, 0.5 mm, 0.1 deg.
 constexpr double kToleranceScale[kNoiseSources] = {0.125, 1.0, 0.5, 0.5, 0.1};
-constexpr int kToleranceSteps = 8;       // searched out to this many steps
+constexpr int kToleranceSteps = 16;      // searched out in half deviations to 8 deviations
 constexpr int kToleranceBisections = 10; // then halved to 0.1 % of a step
 
 // The stroke errors' standard deviations as an array in NoiseSource order.
@@ -204,7 +204,7 @@ MarginResult shot_margin(const Scene& scene, const MarginOptions& o, const std::
     // The ten one-sided searches side by side on the pool.
     parallel_in_order(0, 2 * kNoiseSources, o.jobs, [&](size_t i) {
       const int k = static_cast<int>(i / 2), dir = i % 2 ? 1 : -1;
-      const double sd = deviations(o.noise)[k], step = dir * (sd > 0 ? sd : kToleranceScale[k]);
+      const double sd = deviations(o.noise)[k], step = dir * 0.5 * (sd > 0 ? sd : kToleranceScale[k]);
       auto fails = [&](double x) {
         double e[kNoiseSources] = {};
         e[k] = x;

@@ -4,7 +4,8 @@ and key presses of normal length from xdotool, one journey per user group (playe
 layout at three window sizes. It asserts on the program's state dumps (SIGUSR1 with --dump-state, ui/state_dump.hpp),
 which also say where each widget and ball is on screen, and on pixels of screen grabs (xwd).
 
-Usage: real_input.py SHOTLAB_BINARY SOURCE_DIR [JOURNEY ...]   (journeys: player teacher developer layout)
+Usage: real_input.py SHOTLAB_BINARY SOURCE_DIR [JOURNEY ...]   (journeys: player teacher developer coach layout
+bad_scene)
 Standard-library python3 only; needs Xvfb, xdotool and xwd (scripts/setup.sh installs them).
 """
 import json
@@ -89,6 +90,14 @@ class App:
     def move(self, x, y):
         self.xdotool("mousemove", "--window", self.window, str(int(x)), str(int(y)))
         time.sleep(0.05)
+
+    def scroll(self, x, y, clicks):
+        """The mouse wheel over (x, y): clicks > 0 scrolls down, < 0 up, one notch at a time."""
+        self.move(x, y)
+        for _ in range(abs(clicks)):
+            self.xdotool("click", "--window", self.window, "5" if clicks > 0 else "4")
+            time.sleep(0.05)
+        time.sleep(0.2)
 
     def hover(self, x, y):
         """Moves the pointer there and waits until the program has drawn frames with it there, as a hand rests on a
@@ -370,6 +379,55 @@ def developer(binary, root, display, work):
     app.close()
 
 
+def coach(binary, root, display, work):
+    """The shot margin of the cut: open its section (scrolling the panel with the wheel), read the success and the
+    aim window, turn the aim and see the window move with it, map aim x speed with few replays, click a cell of the
+    map to shoot it like that."""
+    app = App(binary, display, work, os.path.join(root, "presets", "cut.json"))
+    s = app.state()
+    panel = s["widgets"]["Shot margin"]
+    app.scroll(panel["x"] + 100, 300, 15)
+    app.click_widget(app.state(), "Shot margin")
+    s = app.wait(lambda s: "estimate" in s["margin"], 60, "the margin of the cut is worked out")
+    e = s["margin"]["estimate"]
+    lo, hi = e["aim_window"]
+    check(e["goal_ball"] == "1" and 0 < e["probability"] < 1 and e["samples"] == 200,
+          f"the aimed-at ball 1 drops in {100 * e['probability']:.0f} % of 200 amateur tries")
+    check(lo < 0 < hi, f"the aim may drift from {lo:.3f} to {hi:.3f} deg")
+    img = app.grab()
+    view = s["view"]
+    dots = img.count(view["x"], view["y"], view["x"] + view["w"], view["y"] + view["h"], is_force_red)
+    check(dots > 50, f"the misses' end positions are drawn on the table ({dots} red pixels)")
+    app.key("Left")  # +0.1 degree: the window, relative to the aim, moves the other way
+    s = app.wait(lambda s: "estimate" in s["margin"] and s["margin"]["estimate"]["aim_window"][0] != lo, 60,
+                 "the margin follows the aim")
+    lo2, hi2 = s["margin"]["estimate"]["aim_window"]
+    # The thin side's edge is clean; at the other the ball rattles in the jaws (success in patches of 0.01 deg), so
+    # only the clean edge must move by exactly the turn.
+    check(abs(hi2 - (hi - 0.1)) < 0.005 and lo - 0.15 < lo2 < lo,
+          f"turned 0.1 deg, the window moves by -0.1 ({lo:.3f}..{hi:.3f} -> {lo2:.3f}..{hi2:.3f})")
+    app.scroll(panel["x"] + 100, 300, 15)
+    s = app.state()
+    replays = app.widget(s, "map replays")
+    app.click(replays["x"] + 2, replays["y"] + replays["h"] / 2)  # the slider's left end: 10 replays a cell
+    app.click_widget(app.state(), "Map aim x speed")
+    s = app.wait(lambda s: "map" in s["margin"] and not s["margin"]["mapping"], 120, "the map of aim x speed")
+    m = s["margin"]["map"]
+    check(m["aims"] == 20 and m["speeds"] == 10 and max(m["cells"]) > 0 and min(m["cells"]) == 0,
+          f"20 x 10 cells, success from {min(m['cells']):.2f} to {max(m['cells']):.2f}")
+    app.scroll(panel["x"] + 100, 300, 15)
+    s = app.state()
+    app.click_widget(s, "margin map", 0.125, 0.25)  # aim column 2 of 20, speed row 7 of 10 from the bottom
+    s2 = app.state()
+    a0, a1 = m["aim_deg"]
+    v0, v1 = m["speed"]
+    aim, speed = a0 + (a1 - a0) * 2 / 19, v0 + (v1 - v0) * 7 / 9
+    check(abs(s2["cue"]["aim_deg"] - aim) < 1e-6 and abs(s2["cue"]["speed"] - speed) < 1e-6,
+          f"a click on the map aims there ({s2['cue']['aim_deg']:.3f} deg, {s2['cue']['speed']:.3f} m/s)")
+    check(s2["undo_label"] != s["undo_label"] or s2["history"] == s["history"] + 1, "the map's aim can be undone")
+    app.close()
+
+
 def layout(binary, root, display, work):
     """At 1280x720, 1920x1080 and 1024x600 the panels sit at the window's edges and the table fits between them;
     F3 collapses the inspector and the table grows into the room."""
@@ -407,7 +465,8 @@ def bad_scene(binary, root, display, work):
     check(last.endswith("cut.json"), f"the settings still name the last good scene ({os.path.basename(last)})")
 
 
-JOURNEYS = {"player": player, "teacher": teacher, "developer": developer, "layout": layout, "bad_scene": bad_scene}
+JOURNEYS = {"player": player, "teacher": teacher, "developer": developer, "coach": coach, "layout": layout,
+            "bad_scene": bad_scene}
 
 
 def main():

@@ -60,9 +60,10 @@ struct MarginOptions {
   bool sensitivity = true;    // also an ensemble per noise source alone, and each parameter's tolerance interval
 };
 
-// The parameter range around the intended stroke within which the shot still succeeds, all else exact (found by
-// bisection to 0.1 % of the step that first fails, searched out to 8 noise deviations). lo <= 0 <= hi when the intended
-// stroke succeeds; both 0 when it fails.
+// The parameter range around the intended stroke within which the shot still succeeds, all else exact: the first
+// failure found stepping out by half a noise deviation (up to 8 deviations), then bisection to 0.1 % of a step. Where
+// success is not one interval (a ball that rattles in the jaws), a hole narrower than a step can be stepped over.
+// lo <= 0 <= hi when the intended stroke succeeds; both 0 when it fails.
 struct Tolerance {
   double lo = 0, hi = 0;
   bool bounded_lo = true, bounded_hi = true;  // false: no failure found that far out

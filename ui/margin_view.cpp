@@ -1,0 +1,108 @@
+#include "ui/margin_view.hpp"
+
+#include <numbers>
+
+#include "shotlab/io/scene_json.hpp"
+#include "ui/aim.hpp"
+#include "ui/lab.hpp"
+
+namespace shotlab {
+
+std::optional<MarginOptions> margin_options(const Lab& lab, const MarginView& view, std::string& why) {
+  const Scene& s = lab.scene;
+  if (!s.cue) {
+    why = "the scene has no cue strike";
+    return std::nullopt;
+  }
+  MarginOptions o;
+  o.noise = stroke_noise(stroke_levels()[static_cast<size_t>(view.level)]);
+  o.samples = static_cast<size_t>(view.samples);
+  if (view.target_goal) {
+    if (!lab.target) {
+      why = "set a target first (the Target tool in Aim)";
+      return std::nullopt;
+    }
+    o.goal.kind = ShotGoal::Zone, o.goal.ball = s.cue->ball;
+    o.goal.x = lab.target->x, o.goal.z = lab.target->z, o.goal.radius = lab.target_radius;
+    return o;
+  }
+  const auto line = aim_line(s);
+  if (!line || line->hit < 0) {
+    why = "aim at a ball: the margin is that of potting it";
+    return std::nullopt;
+  }
+  o.goal.ball = s.balls[line->hit].spec.id;
+  const auto& pockets = lab.table_model.pockets;
+  if (view.pocket > 0 && view.pocket <= static_cast<int>(pockets.size())) o.goal.pocket = pockets[view.pocket - 1].name;
+  return o;
+}
+
+namespace {
+std::string goal_text(const MarginOptions& o) {
+  return o.goal.ball + "|" + o.goal.pocket + "|" + std::to_string(o.goal.x) + "," + std::to_string(o.goal.z) + "," +
+         std::to_string(o.goal.radius) + "|" + std::to_string(o.noise.aim_deg) + "|" + std::to_string(o.samples);
+}
+}  // namespace
+
+std::string margin_key(const Lab& lab, const MarginOptions& o) {
+  return scene_to_json(lab.scene).dump() + goal_text(o);
+}
+
+std::string margin_map_key(const Lab& lab, const MarginView& view, const MarginOptions& o) {
+  nlohmann::json doc = scene_to_json(lab.scene);
+  doc["cue"].erase("aim_deg");
+  doc["cue"].erase("speed");
+  return doc.dump() + goal_text(o) + "|" + std::to_string(view.map_size) + "|" + std::to_string(view.map_samples);
+}
+
+namespace {
+
+// The map still answers for the current aim and speed: they lie inside its range.
+bool covers(const MarginMap& m, const CueStrike& cue) {
+  const double aim = cue.aim * 180 / std::numbers::pi;
+  return aim >= m.aim_lo_deg && aim <= m.aim_hi_deg && cue.speed >= m.speed_lo && cue.speed <= m.speed_hi;
+}
+
+void start_map(const Lab& lab, MarginView& view, const MarginOptions& o, const std::string& key) {
+  MarginOptions cell = o;
+  cell.samples = static_cast<size_t>(view.map_samples);
+  const int aims = kMapSizes[view.map_size][0], speeds = kMapSizes[view.map_size][1];
+  view.map.start([scene = lab.scene, cell, key, aims, speeds, aim = view.map_aim, speed = view.map_speed](
+                     const auto& progress, const std::atomic<bool>& cancel) {
+    return MarginMapResult{key, margin_map(scene, cell, aims, speeds, aim, speed, progress, &cancel)};
+  });
+  view.map_asked = key;
+}
+
+}  // namespace
+
+void update_margin(const Lab& lab, MarginView& view) {
+  if (!view.open || lab.shot) {  // nothing to work out: leave the cores to the shot
+    if (view.estimate.busy()) view.estimate.cancel(), view.asked.clear();
+    if (view.map.busy()) view.map.cancel(), view.map_asked.clear();
+    return;
+  }
+  view.problem.clear();
+  const auto o = margin_options(lab, view, view.problem);
+  if (!o) return;
+  if (const std::string key = margin_key(lab, *o); key != view.asked) {
+    view.estimate.start([scene = lab.scene, opts = *o, key](const auto& progress, const std::atomic<bool>& cancel) {
+      return MarginEstimate{key, opts, shot_margin(scene, opts, progress, &cancel)};
+    });
+    view.asked = key;
+  }
+  if (!view.map_wanted) return;
+  const std::string key = margin_map_key(lab, view, *o);
+  const auto done = view.map.result();
+  const bool current = done && done->key == key && covers(done->map, *lab.scene.cue);
+  if (!current && (key != view.map_asked || (done && done->key == key && !view.map.busy())))
+    start_map(lab, view, *o, key);
+}
+
+std::optional<MarginEstimate> fresh_estimate(const Lab& lab, const MarginView& view) {
+  auto e = view.estimate.result();
+  if (!e || e->key != view.asked || lab.shot) return std::nullopt;
+  return e;
+}
+
+}  // namespace shotlab

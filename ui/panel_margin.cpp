@@ -1,0 +1,170 @@
+// Shot margin (players and coaches): the success of the shot being aimed under a player's stroke noise, which error
+// hurts most, how far each can drift, and a map of success over aim x speed that sets the aim when clicked. The
+// work runs in the background (margin_view.hpp); this draws and edits the choices.
+#include <imgui.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "ui/margin_view.hpp"
+#include "ui/panels.hpp"
+#include "ui/widgets.hpp"
+
+namespace shotlab {
+namespace {
+
+constexpr double kDeg = 180 / std::numbers::pi;
+
+// A dark-blue to green to yellow ramp for probabilities 0..1 (perceptually ordered, readable on a projector).
+ImU32 ramp(double p) {
+  static const float stops[3][3] = {{68, 1, 84}, {33, 145, 140}, {253, 231, 37}};
+  const double t = std::clamp(p, 0.0, 1.0) * 2;
+  const int k = std::min(1, static_cast<int>(t));
+  const float f = static_cast<float>(t - k);
+  auto c = [&](int i) { return static_cast<int>(stops[k][i] + f * (stops[k + 1][i] - stops[k][i])); };
+  return IM_COL32(c(0), c(1), c(2), 255);
+}
+
+ImVec4 verdict_colour(double p) {
+  return p >= 0.7 ? ImVec4(0.5f, 1, 0.5f, 1) : p >= 0.3 ? ImVec4(1, 0.8f, 0.3f, 1) : ImVec4(1, 0.45f, 0.4f, 1);
+}
+
+void goal_choice(Lab& lab, MarginView& v) {
+  const auto& pockets = lab.table_model.pockets;
+  std::string shown = v.target_goal ? "cue ball stops in the target"
+                      : v.pocket == 0 || v.pocket > static_cast<int>(pockets.size())
+                          ? "aimed-at ball into any pocket"
+                          : "aimed-at ball into " + pockets[v.pocket - 1].name;
+  const Fields f({"goal", "player"});
+  f.label("goal");
+  if (ImGui::BeginCombo("##margin goal", shown.c_str())) {
+    if (ImGui::Selectable("aimed-at ball into any pocket", !v.target_goal && v.pocket == 0)) v.target_goal = false, v.pocket = 0;
+    for (size_t k = 0; k < pockets.size(); ++k)
+      if (ImGui::Selectable(("aimed-at ball into " + pockets[k].name).c_str(), !v.target_goal && v.pocket == int(k) + 1))
+        v.target_goal = false, v.pocket = static_cast<int>(k) + 1;
+    if (ImGui::Selectable("cue ball stops in the target", v.target_goal)) v.target_goal = true;
+    ImGui::EndCombo();
+  }
+  mark("margin goal");
+  f.label("player");
+  const std::vector<std::string> levels = stroke_levels();
+  if (ImGui::BeginCombo("##margin level", levels[static_cast<size_t>(v.level)].c_str())) {
+    for (size_t k = 0; k < levels.size(); ++k) {
+      if (ImGui::Selectable(levels[k].c_str(), v.level == static_cast<int>(k))) v.level = static_cast<int>(k);
+      if (ImGui::IsItemHovered()) {
+        const StrokeNoise n = stroke_noise(levels[k]);
+        ImGui::SetTooltip("stroke errors (standard deviations): aim %.3g deg, speed %.3g %%, tip %.3g mm, "
+                          "elevation %.3g deg", n.aim_deg, n.speed_pct, n.tip_mm, n.elevation_deg);
+      }
+    }
+    ImGui::EndCombo();
+  }
+  mark("margin level");
+}
+
+void estimate_readout(Lab& lab, MarginView& v) {
+  const auto e = fresh_estimate(lab, v);
+  if (!e) {
+    if (v.estimate.busy()) ImGui::ProgressBar(static_cast<float>(v.estimate.progress()), ImVec2(-1, 0), "replaying...");
+    else if (!v.estimate.error().empty()) ImGui::TextWrapped("%s", v.estimate.error().c_str());
+    return;
+  }
+  const MarginResult& r = e->result;
+  readout("margin success", r.probability);
+  const std::string where = e->options.goal.kind == ShotGoal::Zone ? "in the target"
+                            : e->options.goal.pocket.empty()       ? "into a pocket"
+                                                                   : "into " + e->options.goal.pocket;
+  ImGui::TextColored(verdict_colour(r.probability), "%s %s: %.0f %% (+-%.0f) of %zu tries", e->options.goal.ball.c_str(),
+                     where.c_str(), 100 * r.probability, 100 * r.standard_error, r.samples.size());
+  mark("margin success");
+  if (!r.nominal_success) ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "the intended stroke itself misses");
+  if (!ImGui::BeginTable("margin sources", 3, ImGuiTableFlags_SizingStretchProp)) return;
+  ImGui::TableSetupColumn("error");
+  ImGui::TableSetupColumn("alone");
+  ImGui::TableSetupColumn("holds within");
+  ImGui::TableHeadersRow();
+  static const char* names[] = {"aim (deg)", "speed (%)", "side (mm)", "height (mm)", "elevation (deg)"};
+  for (int k = 0; k < kNoiseSources; ++k) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn(), ImGui::TextUnformatted(names[k]);
+    ImGui::TableNextColumn(), ImGui::TextColored(verdict_colour(r.alone[k]), "%.0f %%", 100 * r.alone[k]);
+    ImGui::TableNextColumn();
+    const Tolerance& t = r.tolerance[k];
+    ImGui::Text("%s%.3g .. %s%.3g", t.bounded_lo ? "" : "<", t.lo, t.bounded_hi ? "" : ">", t.hi);
+  }
+  ImGui::EndTable();
+}
+
+// The map as coloured cells (speed up, aim across), the current aim and speed marked; a click aims there.
+void map_picture(Lab& lab, const MarginMap& m) {
+  const float w = ImGui::GetContentRegionAvail().x, h = std::max(em(80), w * 0.5f);
+  const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("margin map", ImVec2(w, h));
+  mark("margin map");
+  ImDrawList* d = ImGui::GetWindowDrawList();
+  const float cw = w / static_cast<float>(m.aims), ch = h / static_cast<float>(m.speeds);
+  for (int i = 0; i < m.speeds; ++i)
+    for (int j = 0; j < m.aims; ++j) {
+      const ImVec2 a(p0.x + j * cw, p0.y + h - (i + 1) * ch);
+      d->AddRectFilled(a, ImVec2(a.x + cw + 0.5f, a.y + ch + 0.5f), ramp(m.cells[i * m.aims + j]));
+    }
+  auto centre = [](double lo, double hi, int n, int k) { return n == 1 ? 0.5 * (lo + hi) : lo + (hi - lo) * k / (n - 1); };
+  const CueStrike& cue = *lab.scene.cue;
+  const float mx = p0.x + static_cast<float>((cue.aim * kDeg - m.aim_lo_deg) / (m.aim_hi_deg - m.aim_lo_deg) * (w - cw) + cw / 2);
+  const float my = p0.y + h - static_cast<float>((cue.speed - m.speed_lo) / (m.speed_hi - m.speed_lo) * (h - ch) + ch / 2);
+  d->AddLine(ImVec2(mx - 7, my), ImVec2(mx + 7, my), IM_COL32(255, 255, 255, 255), 2);
+  d->AddLine(ImVec2(mx, my - 7), ImVec2(mx, my + 7), IM_COL32(255, 255, 255, 255), 2);
+  if (!ImGui::IsItemHovered()) return;
+  const ImVec2 q = ImGui::GetIO().MousePos;
+  const int j = std::clamp(static_cast<int>((q.x - p0.x) / cw), 0, m.aims - 1);
+  const int i = std::clamp(static_cast<int>((p0.y + h - q.y) / ch), 0, m.speeds - 1);
+  const double aim = centre(m.aim_lo_deg, m.aim_hi_deg, m.aims, j), speed = centre(m.speed_lo, m.speed_hi, m.speeds, i);
+  ImGui::SetTooltip("aim %.2f deg, speed %.2f m/s: %.0f %%\nclick to shoot it like that", aim, speed,
+                    100 * m.cells[i * m.aims + j]);
+  if (ImGui::IsItemClicked()) {
+    CueStrike c = cue;
+    c.aim = aim / kDeg, c.speed = speed;
+    lab.set_cue(c, "aim from the margin map");
+  }
+}
+
+void map_section(Lab& lab, MarginView& v) {
+  const Fields f({"cells", "replays"});
+  f.label("cells");
+  const char* sizes[] = {"20 x 10", "40 x 20"};
+  ImGui::Combo("##map cells", &v.map_size, sizes, 2);
+  f.label("replays");
+  ImGui::SliderInt("##map replays", &v.map_samples, 10, 200, "%d per cell");
+  mark("map replays");
+  if (!v.map_wanted) {
+    if (ImGui::Button("Map aim x speed")) v.map_wanted = true;
+    mark("Map aim x speed");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("success over the aim (+-%.0f deg) and the speed (+-%.0f %%) around the current ones, on every "
+                        "core; kept up to date as you aim", v.map_aim, v.map_speed);
+  } else {
+    if (ImGui::Button(v.map.busy() ? "Cancel map" : "Hide map")) v.map_wanted = false, v.map.cancel(), v.map_asked.clear();
+    mark("Cancel map");
+  }
+  if (v.map.busy()) ImGui::ProgressBar(static_cast<float>(v.map.progress()), ImVec2(-1, 0));
+  readout("margin map progress", v.map.busy() ? v.map.progress() : v.map.result() ? 1.0 : 0.0);
+  const auto done = v.map.result();
+  if (v.map_wanted && done) map_picture(lab, done->map);
+}
+
+}  // namespace
+
+void margin_section(Lab& lab) {
+  MarginView& v = lab.margin;
+  ImGui::TextWrapped("How often does this shot work when the stroke is a little off?");
+  goal_choice(lab, v);
+  update_margin(lab, v);
+  if (lab.shot) ImGui::TextDisabled("back to aiming (Undo or Next) to work it out");
+  else if (!v.problem.empty()) ImGui::TextDisabled("%s", v.problem.c_str());
+  else estimate_readout(lab, v);
+  ImGui::Checkbox("draw where the tries end", &v.scatter);
+  ImGui::Separator();
+  map_section(lab, v);
+}
+
+}  // namespace shotlab
