@@ -11,6 +11,7 @@ namespace shotlab {
 void add_run_command(CLI::App& app);    // run_command.cpp
 void add_sweep_command(CLI::App& app);  // sweep_command.cpp
 void add_margin_command(CLI::App& app); // margin_command.cpp
+void add_fit_command(CLI::App& app);    // fit_command.cpp
 void add_bench_command(CLI::App& app);  // bench/command.cpp
 
 // The GUI's options (ui/gui.hpp) on the command line; run_gui is ui/'s, or no_gui.cpp's in builds without a GUI.

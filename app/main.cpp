@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
   shotlab::add_run_command(app);
   shotlab::add_sweep_command(app);
   shotlab::add_margin_command(app);
+  shotlab::add_fit_command(app);
   shotlab::add_bench_command(app);
   shotlab::GuiOptions gui;
   shotlab::add_gui_options(app, gui);

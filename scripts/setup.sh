@@ -11,6 +11,7 @@ packages=(
   python3-matplotlib                                               # the bench's figures (scripts/bench_plots.py)
   pybind11-dev python3-dev python3-numpy python3-pytest            # the Python module and its tests
   python3-distributed                                              # sweeps on a Dask cluster (shotlab.cluster)
+  libceres-dev                                                     # calibration against measured shots (shotlab fit)
 )
 missing=()
 for p in "${packages[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
