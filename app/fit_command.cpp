@@ -31,8 +31,8 @@ void print_table(const FitResult& r) {
     std::cout << "\n";
   }
   for (size_t k = 0; k < r.paths.size(); ++k)
-    std::cout << std::defaultfloat << r.paths[k] << ": " << r.start[k] << " -> " << r.values[k] << " (sd " << r.sd[k]
-              << ")\n";
+    std::cout << std::defaultfloat << std::setprecision(5) << r.paths[k] << ": " << r.start[k] << " -> " << r.values[k]
+              << " (sd " << std::setprecision(2) << r.sd[k] << ")\n";
   std::cout << std::defaultfloat << r.iterations << " iterations, " << std::setprecision(3) << r.seconds << " s\n";
 }
 

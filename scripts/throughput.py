@@ -10,12 +10,13 @@ usage: /usr/bin/python3 scripts/throughput.py [--build build] [--rounds 3] [--ou
 import argparse
 import datetime
 import os
-import platform
 import statistics
 import subprocess
 import sys
 import tempfile
 import time
+
+from machine import describe
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CUT = ["cue.speed=1:3:25", "cue.aim_deg=-77:-73:40"]  # 1000 cut shots
@@ -100,18 +101,6 @@ def dask_overhead(rounds):
     return n, med, per_task
 
 
-def machine():
-    model = "unknown CPU"
-    try:
-        with open("/proc/cpuinfo") as f:
-            model = next(line.split(":", 1)[1].strip() for line in f if line.startswith("model name"))
-    except (OSError, StopIteration):
-        pass
-    commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True,
-                            text=True).stdout.strip()
-    return f"{model}, {os.cpu_count()} vCPUs, {platform.system()} {platform.release()}; commit {commit}"
-
-
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--build", default=os.path.join(ROOT, "build"))
@@ -128,7 +117,7 @@ def main():
     lines = [
         "# Throughput of sweeps and the embedding",
         "",
-        f"`scripts/throughput.py`, {datetime.date.today()}, {machine()}. Medians of {a.rounds} alternated rounds.",
+        f"`scripts/throughput.py`, {datetime.date.today()}, {describe(ROOT)}. Medians of {a.rounds} alternated rounds.",
         "",
         "| sweep (`shotlab sweep`, whole command) | runs | shots/s, 1 thread on core 0 / core 1 | shots/s, 2 threads | "
         "speed-up over the cores' mean |",

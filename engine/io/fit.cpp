@@ -27,7 +27,8 @@ constexpr double kDeg = std::numbers::pi / 180;
 constexpr double kCueScale[] = {1.0, 1.0, 1.0, 1.0, 0.01, 1.0};  // speed, aim_deg, side, height, strike_time, elevation
 constexpr double kStepSize = 1e-4;
 constexpr double kJointRobust = 0.05;  // m: the joint fit's robust scale (Context::robust)
-constexpr int kJointRounds = 5;        // restarts of the joint fit at most
+constexpr int kJointRounds = 6;        // rounds of refits (each but the last followed by a joint fit) at most
+constexpr double kFollowed = 0.1;      // m: the joint fit sees each shot while its path is this close (followed())
 constexpr double kSideStarts[] = {0.0, -0.3, 0.3, -0.6, 0.6};  // tip offsets tried, the data cannot tell side's sign
 
 // The number at a --set style path of a scene document, or an InputError.
@@ -223,11 +224,44 @@ void uncertainty(ceres::Problem& problem, const std::vector<double*>& blocks, co
   }
 }
 
-// Every strike and the shared values together on the whole shots.
-ceres::Problem joint_problem(const Context& ctx, std::vector<std::vector<double>>& cue_u, std::vector<double>& shared_u) {
+// The part of a shot its fitted path follows: up to the first measured time where some ball is farther than
+// kFollowed from its simulated centre. Beyond, a small change of the values flips which side of a ball the path
+// passes, and numeric derivatives there say nothing about the values.
+double followed(const Context& ctx, size_t s, const Scene& scene, const std::vector<double>& u) {
+  const auto at = ctx.simulate(s, scene, ctx.cue(s, u.data()), INFINITY);
+  const MeasuredShot& m = ctx.shots[s];
+  double until = INFINITY;
+  for (size_t b = 0; b < m.balls.size(); ++b)
+    for (const MeasuredSample& p : m.tracks.at(m.balls[b])) {
+      const size_t i = std::lower_bound(ctx.times[s].begin(), ctx.times[s].end(), p.t) - ctx.times[s].begin();
+      if (std::hypot(at[i][b].x - p.x, at[i][b].z - p.z) > kFollowed) {
+        until = std::min(until, p.t - ctx.times[s].front());
+        break;
+      }
+    }
+  return until;
+}
+
+// The plain squared distance, simulated to measured centre, summed over every sample of every shot (m^2).
+double squared_error(const Context& ctx, const Scene& scene, const std::vector<std::vector<double>>& cue_u, int threads) {
+  std::vector<double> per(ctx.shots.size(), 0.0);
+  parallel_in_order(0, ctx.shots.size(), threads, [&](size_t s) {
+    std::vector<double> r(ctx.residuals[s]);
+    if (!ctx.fill(s, scene, ctx.cue(s, cue_u[s].data()), INFINITY, r.data())) return void(per[s] = INFINITY);
+    for (double x : r) per[s] += x * x;
+  });
+  double sum = 0;
+  for (double x : per) sum += x;
+  return sum;
+}
+
+// Every strike and the shared values together.
+// `windows`: per shot, the s of it the joint fit sees (INFINITY: all).
+ceres::Problem joint_problem(const Context& ctx, std::vector<std::vector<double>>& cue_u, std::vector<double>& shared_u,
+                             const std::vector<double>& windows) {
   ceres::Problem problem;
   for (size_t s = 0; s < ctx.shots.size(); ++s) {
-    problem.AddResidualBlock(shot_cost(ctx, s, INFINITY, !shared_u.empty()), nullptr,
+    problem.AddResidualBlock(shot_cost(ctx, s, windows[s], !shared_u.empty()), nullptr,
                              shared_u.empty() ? std::vector<double*>{cue_u[s].data()}
                                               : std::vector<double*>{cue_u[s].data(), shared_u.data()});
     bound_cue(problem, ctx, s, cue_u[s].data());
@@ -329,23 +363,34 @@ FitResult fit_measured(const Scene& base, const std::vector<MeasuredShot>& shots
   int iterations = 0;
   size_t residuals = 0;
   for (size_t s = 0; s < shots.size(); ++s) residuals += ctx.residuals[s];
-  // Rounds: every strike alone on growing windows with the shared values as they are, then all together; with shared
-  // values a strike fitted under the old ones can sit in another valley, so the strikes are refitted after each joint
-  // fit while a round still gains 1 %.
-  for (int round = 0; round < (settings.paths.empty() ? 1 : kJointRounds); ++round) {
+  // Rounds: every strike alone on growing windows with the shared values as they are, then all together on what the
+  // paths follow; a strike fitted under the old values can sit in another valley, so the strikes are refitted after
+  // each joint fit, while a round lowers the whole shots' squared error by 1 %. The best round is kept.
+  double best = INFINITY;  // the whole shots' plain squared error after the best round, which is kept
+  std::vector<std::vector<double>> best_cue;
+  std::vector<double> best_shared;
+  for (int round = 0; round < kJointRounds; ++round) {
     ctx.fixed = ctx.shared(shared_u.data());
     ctx.robust = 0;
     parallel_in_order(0, shots.size(), settings.threads, [&](size_t s) { cue_u[s] = fit_alone(ctx, s, cue_u[s]); },
                       [&](size_t s) { say(shots[s].name + ": cue strike fitted alone"); });
+    const double error = squared_error(ctx, ctx.with(ctx.fixed), cue_u, settings.threads);
+    say("round " + std::to_string(round + 1) + ": squared error " + number_text(error) + " m^2");
+    const bool gained = error < 0.99 * best;
+    if (error < best) best = error, best_cue = cue_u, best_shared = shared_u;
+    if (!gained || settings.paths.empty() || round + 1 == kJointRounds) break;  // a joint fit is always judged
     ctx.robust = kJointRobust;
-    ceres::Problem problem = joint_problem(ctx, cue_u, shared_u);
+    std::vector<double> windows(shots.size(), INFINITY);
+    const Scene now = ctx.with(ctx.fixed);
+    parallel_in_order(0, shots.size(), settings.threads, [&](size_t s) { windows[s] = followed(ctx, s, now, cue_u[s]); });
+    ceres::Problem problem = joint_problem(ctx, cue_u, shared_u, windows);
     ceres::Solve(solver_options(settings.threads, settings.max_iterations), &problem, &summary);
     iterations += static_cast<int>(summary.iterations.size());
     say("joint fit, round " + std::to_string(round + 1) + ": " + summary.BriefReport());
-    if (summary.final_cost > 0.99 * summary.initial_cost) break;
   }
-  ctx.robust = 0;  // the uncertainties and errors below are those of plain least squares
-  ceres::Problem problem = joint_problem(ctx, cue_u, shared_u);
+  cue_u = best_cue, shared_u = best_shared;
+  ctx.robust = 0;  // the uncertainties and errors below are those of plain least squares, on the whole shots
+  ceres::Problem problem = joint_problem(ctx, cue_u, shared_u, std::vector<double>(shots.size(), INFINITY));
 
   std::vector<double*> blocks;
   std::vector<int> sizes;
