@@ -53,6 +53,7 @@ class Background {
     std::lock_guard lock(mutex_);
     return result_;
   }
+  size_t finished() const { return finished_; }  // jobs that finished uncancelled: a new result when it grows
   std::string error() const {  // why the last job failed (an exception's message), empty if it did not
     std::lock_guard lock(mutex_);
     return error_;
@@ -85,7 +86,7 @@ class Background {
         error = e.what();
       }
       std::lock_guard lock(mutex_);
-      if (!cancel_) result_ = std::move(r), error_ = error;
+      if (!cancel_) result_ = std::move(r), error_ = error, ++finished_;
       busy_ = pending_.has_value();
     }
   }
@@ -96,7 +97,7 @@ class Background {
   std::optional<Result> result_;
   std::string error_;
   std::atomic<bool> cancel_{false}, busy_{false};
-  std::atomic<size_t> done_{0}, total_{0};
+  std::atomic<size_t> done_{0}, total_{0}, finished_{0};
   bool quit_ = false;
   std::thread thread_;  // last: started once everything above is built
 };

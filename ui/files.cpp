@@ -26,7 +26,8 @@ std::vector<DirEntry> list_scene_dir(const std::string& dir) {
     if (name.empty() || name[0] == '.') continue;
     std::error_code e2;
     const bool folder = it->is_directory(e2);
-    if (folder || it->path().extension() == ".json") out.push_back({name, folder});
+    const auto ext = it->path().extension();
+    if (folder || ext == ".json" || ext == ".csv") out.push_back({name, folder});
   }
   std::sort(out.begin(), out.end(), [](const DirEntry& a, const DirEntry& b) {
     return a.folder != b.folder ? a.folder : a.name < b.name;

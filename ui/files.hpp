@@ -15,7 +15,8 @@ struct DirEntry {
   std::string name;  // file or folder name
   bool folder;
 };
-// Folders, then .json files, by name; hidden entries left out. Empty when the folder cannot be read.
+// Folders, then .json (scenes) and .csv (measured shots) files, by name; hidden entries left out. Empty when the
+// folder cannot be read.
 std::vector<DirEntry> list_scene_dir(const std::string& dir);
 
 // Whether `path` lies inside folder `dir` (after resolving both): shipped presets are not overwritten by Save.

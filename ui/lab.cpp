@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <numbers>
 
 #include "shotlab/io/scene_json.hpp"
 
@@ -41,6 +43,7 @@ void Lab::say(MessageKind kind, std::string text) {
 }
 
 bool Lab::load(const std::string& path) {
+  if (std::filesystem::path(path).extension() == ".csv") return load_measured(path);
   try {
     Scene s = load_scene(path);
     validate(s);
@@ -51,6 +54,7 @@ bool Lab::load(const std::string& path) {
     history.clear();
     ghost.clear(), kept.clear(), compare.clear(), compare_label.clear();
     target.reset();
+    measured.fit.cancel(), measured.shot.reset(), measured.last.reset();
     say(MessageKind::Note, "loaded " + path);
     if (on_load) on_load(scene);
     return true;
@@ -58,6 +62,63 @@ bool Lab::load(const std::string& path) {
     say(MessageKind::LoadError, e.what());
     return false;
   }
+}
+
+bool Lab::load_measured(const std::string& path) {
+  try {
+    MeasuredShot m = read_measured(path);
+    const bool carom = scene.table && scene.table->kind == TableKind::Carom;
+    const Scene base = carom ? scene : load_scene(data_root + "/presets/three_cushion.json");
+    Scene s = measured_scene(base, m, initial_cue(base, m));
+    s.name = m.name + " (measured)";
+    s.description = "A measured shot: its tracked balls are drawn as dots; fit its strike in Tuning > Measured shot.";
+    validate(s);
+    loaded = s;
+    set_scene(std::move(s));
+    scene_path.clear();
+    history.clear();
+    ghost.clear(), kept.clear(), compare.clear(), compare_label.clear();
+    target.reset();
+    measured.fit.cancel();
+    measured.shot = std::move(m), measured.path = path, measured.last.reset();
+    measured.applied = measured.fit.finished();
+    say(MessageKind::Note, "loaded the measured shot " + path);
+    if (on_load) on_load(scene);
+    return true;
+  } catch (const std::exception& e) {
+    say(MessageKind::LoadError, e.what());
+    return false;
+  }
+}
+
+void Lab::start_fit() {
+  if (!measured.shot) return;
+  FitSettings fs;
+  for (int k = 0; k < kLabFitValues; ++k)
+    if (measured.fit_value[k]) fs.paths.push_back(kLabFitPaths[k][0]);
+  Scene base = scene;
+  base.cue.reset();
+  measured.fit.start([base, shot = *measured.shot, fs](const auto& progress, const std::atomic<bool>& cancel) mutable {
+    fs.progress = progress, fs.cancel = &cancel;
+    return fit_measured(base, {shot}, fs);
+  });
+}
+
+void Lab::apply_fit() {
+  if (!measured.shot || measured.fit.finished() == measured.applied || shot) return;  // a shot shown: later
+  measured.applied = measured.fit.finished();
+  const auto r = measured.fit.result();
+  if (!r || r->shots.empty() || !scene.cue) return;
+  const Scene fitted = fitted_scene(scene, *r);
+  scene.model.materials = fitted.model.materials;
+  physics_changed();
+  const CueFit& c = r->shots[0].cue;
+  CueStrike cue = *scene.cue;
+  cue.speed = c.speed, cue.aim = c.aim_deg * std::numbers::pi / 180, cue.side = c.side, cue.height = c.height;
+  cue.elevation = c.elevation_deg * std::numbers::pi / 180;
+  set_cue(cue, "fitted strike");
+  measured.last = r;
+  say(MessageKind::Note, "the fitted strike is set: shoot to compare with the measured dots");
 }
 
 void Lab::set_scene(Scene s) {
@@ -327,7 +388,7 @@ void Lab::finish_playing() {
 
 bool Lab::animating() const {
   const bool tracing = log_job_.valid() && log_job_.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
-  return playing || predicting() || tracing || margin.busy();
+  return playing || predicting() || tracing || margin.busy() || measured.fit.busy();
 }
 
 bool Lab::contact_on_screen() const {

@@ -16,6 +16,7 @@
 #include "ui/history.hpp"
 #include "ui/layout.hpp"
 #include "ui/margin_view.hpp"
+#include "ui/measured_view.hpp"
 #include "ui/predictor.hpp"
 #include "ui/settings.hpp"
 #include "ui/shot.hpp"
@@ -76,9 +77,15 @@ class Lab {
   std::string strobe_request;      // PNG path: a multiple exposure of the shot, drawn by the next frame
   std::function<void(const Scene&)> on_load;  // after a scene file loaded (gui.cpp frames the camera)
   MarginView margin;            // the shot margin worked out in the background (margin_view.hpp)
+  MeasuredView measured;        // a measured shot loaded from CSV and its fit (measured_view.hpp)
 
   // Files and scenes (lab.cpp).
   bool load(const std::string& path);  // false (and the message set) when the file is bad; nothing is lost
+  // A measured shot (CSV, docs/fit.md): the scene becomes its balls where first seen on the current scene's table
+  // (the three-cushion preset's when the current table is not a carom table), with the strike the data suggests.
+  bool load_measured(const std::string& path);
+  void start_fit();        // fits the measured shot's strike (and the chosen values) in the background
+  void apply_fit();        // puts a finished fit's strike and values into the scene (one undo entry for the strike)
   void set_scene(Scene s);
   void say(MessageKind kind, std::string text);
   void scene_changed();    // after editing `scene`'s balls or aim: re-predict

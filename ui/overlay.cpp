@@ -156,6 +156,19 @@ void margin_scatter(ImDrawList* d, const Viewport& vp, const Lab& lab) {
     }
 }
 
+// A measured shot's tracked centres as dots in each ball's colour, on the bed at the ball's height.
+void measured_tracks(ImDrawList* d, const Viewport& vp, const Lab& lab) {
+  if (!lab.measured.shot) return;
+  for (const auto& [ball, track] : lab.measured.shot->tracks) {
+    const int i = scene_ball(lab.scene, ball);
+    const double r = i >= 0 ? lab.scene.balls[i].spec.radius : 0.03;
+    const ImU32 c = ball == "yellow" ? IM_COL32(255, 215, 40, 230) : ball == "red" ? IM_COL32(235, 50, 50, 230)
+                                                                               : IM_COL32(245, 245, 245, 230);
+    for (const MeasuredSample& s : track)
+      if (const auto p = vp.project(Vec3{s.x, r, s.z})) d->AddCircleFilled(v2(*p), 2.0f, c);
+  }
+}
+
 void target(ImDrawList* d, const Viewport& vp, const Lab& lab) {
   if (!lab.target) return;
   const Vec3 t = *lab.target + Vec3{0, 0.001, 0};
@@ -226,6 +239,7 @@ void draw_all(const Lab& lab, const Viewport& vp, ImDrawList* d) {
   }
   target(d, vp, lab);
   margin_scatter(d, vp, lab);
+  measured_tracks(d, vp, lab);
   hand_zone_outline(d, vp, lab);
   labels_and_centre(d, vp, lab);
   vectors(d, vp, lab);

@@ -45,7 +45,7 @@ const std::vector<PresetEntry>& presets(const std::string& data_root) {
   return list;
 }
 
-// A folder listing with .json files: click a folder to enter it, a file to open it.
+// A folder listing with .json scenes and .csv measured shots: click a folder to enter it, a file to open it.
 void browser_popup(Lab& lab) {
   static std::string dir = fs::current_path().string();
   ImGui::SetNextWindowSize(ImVec2(em(460), em(380)), ImGuiCond_Appearing);
@@ -59,7 +59,9 @@ void browser_popup(Lab& lab) {
   ImGui::BeginChild("entries", ImVec2(0, 0), true);
   for (const DirEntry& e : list_scene_dir(dir)) {
     const std::string label = e.folder ? "[" + e.name + "]" : e.name;
-    if (ImGui::Selectable(label.c_str())) {
+    const bool picked = ImGui::Selectable(label.c_str());
+    mark("browse " + e.name);
+    if (picked) {
       const std::string path = (fs::path(dir) / e.name).string();
       if (e.folder) dir = path;
       else if (lab.load(path), true) ImGui::CloseCurrentPopup();
@@ -130,6 +132,7 @@ void preset_combo(Lab& lab) {
 void scene_section(Lab& lab) {
   preset_combo(lab);
   if (ImGui::Button("Open...")) ImGui::OpenPopup("Open scene file");
+  mark("Open...");
   browser_popup(lab);
   ImGui::SameLine();
   static std::string save_path;

@@ -267,6 +267,10 @@ void tune_panel(Lab& lab, Tuning& tuning) {
     step_plot(lab);
   }
   if (ImGui::CollapsingHeader("Contacts of the shot")) contacts_section(lab);
+  const bool measured = ImGui::CollapsingHeader("Measured shot", lab.measured.shot ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+  mark("Measured shot");
+  if (measured) measured_section(lab);
+  else lab.apply_fit();  // a fit that finished while the section was closed still lands
   if (changed) lab.physics_changed();
 }
 

@@ -82,6 +82,19 @@ json physics_json(const Lab& lab) {
   return {{"materials", m}, {"changes", lab.physics_changes()}, {"compare_trails", lab.compare.size()}};
 }
 
+json measured_json(const Lab& lab) {
+  const MeasuredView& v = lab.measured;
+  if (!v.shot) return nullptr;
+  json j{{"name", v.shot->name}, {"cue_ball", v.shot->cue_ball}, {"fitting", v.fit.busy()},
+         {"fit_error", v.fit.error()}};
+  if (v.last && !v.last->shots.empty()) {
+    const ShotFit& f = v.last->shots[0];
+    j["fit"] = {{"speed", f.cue.speed}, {"aim_deg", f.cue.aim_deg}, {"side", f.cue.side}, {"height", f.cue.height},
+                {"rms", f.rms}, {"paths", v.last->paths}, {"values", v.last->values}};
+  }
+  return j;
+}
+
 json margin_json(const Lab& lab) {
   const MarginView& v = lab.margin;
   json j{{"open", v.open}, {"problem", v.problem}, {"estimating", v.estimate.busy()}, {"mapping", v.map.busy()},
@@ -146,7 +159,8 @@ json state_json(const Lab& lab, const ScreenInfo& screen) {
          {"physics", physics_json(lab)},
          {"cue", cue_json(lab)},
          {"balls", balls_json(lab, screen)},
-         {"margin", margin_json(lab)}};
+         {"margin", margin_json(lab)},
+         {"measured", measured_json(lab)}};
   if (const auto miss = lab.target_miss()) j["target_miss"] = *miss;
   if (lab.scene.table && screen.viewport) {
     const double hx = lab.scene.table->length / 2, hz = lab.scene.table->width / 2;

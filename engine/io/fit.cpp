@@ -56,6 +56,9 @@ struct Context {
   std::vector<std::vector<double>> times;  // per shot: the measured times, sorted, unique
   std::vector<size_t> residuals;      // per shot: 2 per sample
   int cue_params;                     // 5, or 6 with elevation
+  const std::atomic<bool>* cancel = nullptr;
+  std::function<void()> window_done;  // after each window of a strike fitted alone
+  bool cancelled() const { return cancel && *cancel; }
 
   CueFit cue(size_t s, const double* u) const {
     const CueFit& c0 = cue_start[s];
@@ -156,8 +159,18 @@ void bound_cue(ceres::Problem& problem, const Context& ctx, size_t s, double* u)
   if (ctx.cue_params > 5) bound(5, 0, 60, c.elevation_deg);
 }
 
-ceres::Solver::Options solver_options(int threads, int iterations) {
+// Ends a solve once the caller cancels the fit.
+struct CancelCallback : ceres::IterationCallback {
+  const std::atomic<bool>* cancel;
+  explicit CancelCallback(const std::atomic<bool>* c) : cancel(c) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    return cancel && *cancel ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+  }
+};
+
+ceres::Solver::Options solver_options(int threads, int iterations, CancelCallback* cancel) {
   ceres::Solver::Options o;
+  o.callbacks.push_back(cancel);
   o.linear_solver_type = ceres::DENSE_SCHUR;
   o.max_num_iterations = iterations;
   o.num_threads = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -172,7 +185,8 @@ double fit_cue(const Context& ctx, size_t s, std::vector<double>& u, double wind
   problem.AddResidualBlock(shot_cost(ctx, s, window, false), nullptr, u.data());
   bound_cue(problem, ctx, s, u.data());
   ceres::Solver::Summary summary;
-  ceres::Solve(solver_options(threads, iterations), &problem, &summary);
+  CancelCallback cancel(ctx.cancel);
+  ceres::Solve(solver_options(threads, iterations, &cancel), &problem, &summary);
   return summary.final_cost;
 }
 
@@ -195,7 +209,8 @@ std::vector<double> fit_alone(const Context& ctx, size_t s, std::vector<double> 
     double best = INFINITY;
     for (std::vector<double>& t : tries)
       if (const double cost = fit_cue(ctx, s, t, window, 1, 25); cost < best) best = cost, u = t;
-    if (window >= length) return u;
+    if (ctx.window_done) ctx.window_done();
+    if (window >= length || ctx.cancelled()) return u;
   }
   fit_cue(ctx, s, u, length, 1, 25);
   return u;
@@ -343,7 +358,7 @@ Scene measured_scene(const Scene& base, const MeasuredShot& m, const CueFit& c) 
 
 FitResult fit_measured(const Scene& base, const std::vector<MeasuredShot>& shots, const FitSettings& settings) {
   const auto t0 = std::chrono::steady_clock::now();
-  Context ctx{base, scene_to_json(base), shots, settings.paths, {}, {}, {}, {}, {}, settings.elevation ? 6 : 5};
+  Context ctx{base, scene_to_json(base), shots, settings.paths, {}, {}, {}, {}, {}, settings.elevation ? 6 : 5, nullptr, {}};
   for (const std::string& p : settings.paths) ctx.start.push_back(number_at(ctx.doc, p));
   for (const MeasuredShot& m : shots) {
     ctx.cue_start.push_back(initial_cue(base, m));
@@ -369,7 +384,14 @@ FitResult fit_measured(const Scene& base, const std::vector<MeasuredShot>& shots
   double best = INFINITY;  // the whole shots' plain squared error after the best round, which is kept
   std::vector<std::vector<double>> best_cue;
   std::vector<double> best_shared;
-  for (int round = 0; round < kJointRounds; ++round) {
+  ctx.cancel = settings.cancel;
+  std::atomic<size_t> windows_done{0};
+  const size_t windows_total = shots.size() * std::size(kWindows);
+  ctx.window_done = [&] {
+    if (settings.progress) settings.progress(std::min(windows_total, ++windows_done), windows_total);
+  };
+  for (int round = 0; round < kJointRounds && !ctx.cancelled(); ++round) {
+    windows_done = 0;
     ctx.fixed = ctx.shared(shared_u.data());
     ctx.robust = 0;
     parallel_in_order(0, shots.size(), settings.threads, [&](size_t s) { cue_u[s] = fit_alone(ctx, s, cue_u[s]); },
@@ -384,11 +406,12 @@ FitResult fit_measured(const Scene& base, const std::vector<MeasuredShot>& shots
     const Scene now = ctx.with(ctx.fixed);
     parallel_in_order(0, shots.size(), settings.threads, [&](size_t s) { windows[s] = followed(ctx, s, now, cue_u[s]); });
     ceres::Problem problem = joint_problem(ctx, cue_u, shared_u, windows);
-    ceres::Solve(solver_options(settings.threads, settings.max_iterations), &problem, &summary);
+    CancelCallback cancel(settings.cancel);
+    ceres::Solve(solver_options(settings.threads, settings.max_iterations, &cancel), &problem, &summary);
     iterations += static_cast<int>(summary.iterations.size());
     say("joint fit, round " + std::to_string(round + 1) + ": " + summary.BriefReport());
   }
-  cue_u = best_cue, shared_u = best_shared;
+  if (!best_cue.empty()) cue_u = best_cue, shared_u = best_shared;  // empty: cancelled before a round ended
   ctx.robust = 0;  // the uncertainties and errors below are those of plain least squares, on the whole shots
   ceres::Problem problem = joint_problem(ctx, cue_u, shared_u, std::vector<double>(shots.size(), INFINITY));
 

@@ -4,8 +4,8 @@ and key presses of normal length from xdotool, one journey per user group (playe
 layout at three window sizes. It asserts on the program's state dumps (SIGUSR1 with --dump-state, ui/state_dump.hpp),
 which also say where each widget and ball is on screen, and on pixels of screen grabs (xwd).
 
-Usage: real_input.py SHOTLAB_BINARY SOURCE_DIR [JOURNEY ...]   (journeys: player teacher developer coach layout
-bad_scene)
+Usage: real_input.py SHOTLAB_BINARY SOURCE_DIR [JOURNEY ...]   (journeys: player teacher developer coach measured
+layout bad_scene)
 Standard-library python3 only; needs Xvfb, xdotool and xwd (scripts/setup.sh installs them).
 """
 import json
@@ -68,13 +68,13 @@ class App:
         if os.path.exists(self.dump_path):
             os.remove(self.dump_path)
         self.proc.send_signal(signal.SIGUSR1)
-        end = time.time() + 10
+        end = time.time() + 20
         while time.time() < end:
             if os.path.exists(self.dump_path):
                 with open(self.dump_path) as f:
                     return json.load(f)
             time.sleep(0.05)
-        raise RuntimeError("no state dump within 10 s")
+        raise RuntimeError("no state dump within 20 s")
 
     def wait(self, predicate, timeout, what):
         end = time.time() + timeout
@@ -428,6 +428,42 @@ def coach(binary, root, display, work):
     app.close()
 
 
+def measured(binary, root, display, work):
+    """A developer's calibration: an engine-made three-cushion shot tracked at 50 Hz (from `shotlab run
+    --trajectory`) opened through the file browser, its tracked balls drawn, its strike fitted from the Tuning tab
+    with progress, and the fitted strike set in the lab: the one the shot was made with."""
+    traj = os.path.join(work, "made.csv")
+    subprocess.run([binary, "run", os.path.join(root, "presets", "three_cushion.json"), "--until-rest", "-q",
+                    "--trajectory", traj, "--sample-rate", "50"], check=True, env=dict(os.environ, DISPLAY=""))
+    with open(traj) as f, open(os.path.join(work, "tracked.csv"), "w") as out:
+        out.write("time,ball,x,z\n")
+        for line in list(f)[1:]:
+            t, b, x, _, z = line.split(",")[:5]
+            out.write(f"{t},{b},{x},{z}\n")
+    app = App(binary, display, work, os.path.join(root, "presets", "cut.json"))
+    s = app.state()
+    app.click_widget(s, "Open...")
+    time.sleep(0.5)
+    app.click_widget(app.state(), "browse tracked.csv")
+    s = app.wait(lambda s: s["measured"] is not None, 30, "the measured shot is loaded")
+    check(s["measured"]["cue_ball"] == "white" and len(s["balls"]) == 3,
+          "the tracked shot becomes a scene of its three balls on a carom table, the white to strike")
+    app.click_widget(s, "tab Tuning")
+    time.sleep(0.3)
+    app.scroll(s["widgets"]["panel Inspector"]["x"] + 100, 400, 25)
+    app.click_widget(app.state(), "Fit the strike")
+    s = app.wait(lambda s: s["measured"]["fitting"], 10, "the fit runs")
+    s = app.wait(lambda s: s["measured"].get("fit") is not None, 180, "the fit ends")
+    f = s["measured"]["fit"]
+    check(abs(f["speed"] - 3.1) < 0.031 and abs(f["aim_deg"] + 33.7) < 0.1 and abs(f["side"] - 0.4) < 0.02,
+          f"the fit finds the strike the shot was made with ({f['speed']:.3f} m/s, {f['aim_deg']:.2f} deg, "
+          f"side {f['side']:+.3f})")
+    check(f["rms"]["white"] < 0.005, f"the fitted path follows the white to {f['rms']['white'] * 1e3:.1f} mm")
+    check(abs(s["cue"]["speed"] - f["speed"]) < 1e-9 and abs(s["cue"]["aim_deg"] - f["aim_deg"]) < 1e-9,
+          "the fitted strike is set in the lab, ready to shoot")
+    app.close()
+
+
 def layout(binary, root, display, work):
     """At 1280x720, 1920x1080 and 1024x600 the panels sit at the window's edges and the table fits between them;
     F3 collapses the inspector and the table grows into the room."""
@@ -465,8 +501,8 @@ def bad_scene(binary, root, display, work):
     check(last.endswith("cut.json"), f"the settings still name the last good scene ({os.path.basename(last)})")
 
 
-JOURNEYS = {"player": player, "teacher": teacher, "developer": developer, "coach": coach, "layout": layout,
-            "bad_scene": bad_scene}
+JOURNEYS = {"player": player, "teacher": teacher, "developer": developer, "coach": coach, "measured": measured,
+            "layout": layout, "bad_scene": bad_scene}
 
 
 def main():

@@ -2,6 +2,7 @@
 // that the simulated balls pass where the tracked ones were, by least squares on the positions at the measured times
 // (Ceres Solver, Levenberg-Marquardt with central numeric derivatives). docs/fit.md.
 #pragma once
+#include <atomic>
 #include <functional>
 #include <map>
 #include <string>
@@ -29,6 +30,8 @@ struct FitSettings {
   int threads = 0;                 // 0: one per core
   int max_iterations = 100;        // of the joint fit
   std::function<void(const std::string&)> log;  // a line per stage
+  std::function<void(size_t, size_t)> progress;   // windows fitted of the round's windows (every round starts at 0)
+  const std::atomic<bool>* cancel = nullptr;       // set: the fit stops soon and returns what it has
 };
 
 struct ShotFit {
