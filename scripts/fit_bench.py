@@ -14,7 +14,7 @@ import subprocess
 import sys
 import tempfile
 
-from machine import describe
+from machine import describe, publish
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PATHS = ["materials.ball_cloth.friction", "materials.ball_cloth.rolling_resistance",
@@ -65,11 +65,7 @@ def main():
     lines += ["", f"Optimiser: {fit['report']}"]
     if a.out:
         lines += ["", f"![measured and fitted paths]({os.path.basename(os.path.splitext(a.out)[0])}.png)"]
-    text = "\n".join(lines) + "\n"
-    print(text)
-    if a.out:
-        with open(a.out, "w") as f:
-            f.write(text)
+    publish(lines, a.out)
     return 0
 
 

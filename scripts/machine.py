@@ -1,4 +1,5 @@
-"""The line a benchmark report starts with: the CPU, the vCPUs and the commit it measured."""
+"""What the benchmark scripts share: the line a report starts with (the CPU, the vCPUs and the commit measured), and
+how a report is printed and written."""
 import os
 import platform
 import subprocess
@@ -14,3 +15,12 @@ def describe(root):
     commit = subprocess.run(["git", "-C", root, "rev-parse", "--short", "HEAD"], capture_output=True,
                             text=True).stdout.strip()
     return f"{model}, {os.cpu_count()} vCPUs, {platform.system()} {platform.release()}; commit {commit}"
+
+
+def publish(lines, out=None):
+    """Prints the report's lines and, given a path, writes them there too."""
+    text = "\n".join(lines) + "\n"
+    print(text)
+    if out:
+        with open(out, "w") as f:
+            f.write(text)

@@ -14,7 +14,7 @@ import sys
 import tempfile
 import time
 
-from machine import describe
+from machine import describe, publish
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TARGET_S = 60
@@ -52,11 +52,7 @@ def main():
              f"{t_default:.2f} s |", "",
              f"The map's best cell pots the 1 ball in {100 * best:.0f} % of 100 amateur tries; at the preset's own aim "
              f"and speed {100 * d['probability']:.0f} % of 200."]
-    text = "\n".join(lines) + "\n"
-    print(text)
-    if a.out:
-        with open(a.out, "w") as f:
-            f.write(text)
+    publish(lines, a.out)
     return 0
 
 

@@ -16,7 +16,7 @@ import sys
 import tempfile
 import time
 
-from machine import describe
+from machine import describe, publish
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CUT = ["cue.speed=1:3:25", "cue.aim_deg=-77:-73:40"]  # 1000 cut shots
@@ -142,11 +142,7 @@ def main():
         f"| the same in {n // 100} tasks of 100 rows | {dk['tasks_100']:.3f} s |",
         f"| Dask overhead per task (worker time, tasks of 1 row) | {1e3 * per_task:.2f} ms |",
     ]
-    text = "\n".join(lines) + "\n"
-    print(text)
-    if a.out:
-        with open(a.out, "w") as f:
-            f.write(text)
+    publish(lines, a.out)
     return 0
 
 

@@ -42,21 +42,29 @@ void Lab::say(MessageKind kind, std::string text) {
   message_age = 0;
 }
 
+// A scene from a file (or made from a measured shot) becomes the lab's: a fresh start without undo, trails or target;
+// a measured shot's fit that runs is dropped.
+void Lab::adopt(Scene s, const std::string& path, const std::string& what) {
+  validate(s);
+  loaded = s;
+  set_scene(std::move(s));
+  history.clear();
+  ghost.clear(), kept.clear(), compare.clear(), compare_label.clear();
+  target.reset();
+  measured.fit.cancel(), measured.shot.reset(), measured.last.reset();
+  measured.applied = measured.fit.finished();
+  std::string note = "loaded ";
+  note.append(what).append(path);
+  say(MessageKind::Note, std::move(note));
+  if (on_load) on_load(scene);
+}
+
 bool Lab::load(const std::string& path) {
   if (std::filesystem::path(path).extension() == ".csv") return load_measured(path);
   try {
-    Scene s = load_scene(path);
-    validate(s);
-    loaded = s;
-    set_scene(std::move(s));
+    adopt(load_scene(path), path, "");
     scene_path = path;
     remember_file(settings, path);
-    history.clear();
-    ghost.clear(), kept.clear(), compare.clear(), compare_label.clear();
-    target.reset();
-    measured.fit.cancel(), measured.shot.reset(), measured.last.reset();
-    say(MessageKind::Note, "loaded " + path);
-    if (on_load) on_load(scene);
     return true;
   } catch (const std::exception& e) {
     say(MessageKind::LoadError, e.what());
@@ -72,18 +80,9 @@ bool Lab::load_measured(const std::string& path) {
     Scene s = measured_scene(base, m, initial_cue(base, m));
     s.name = m.name + " (measured)";
     s.description = "A measured shot: its tracked balls are drawn as dots; fit its strike in Tuning > Measured shot.";
-    validate(s);
-    loaded = s;
-    set_scene(std::move(s));
+    adopt(std::move(s), path, "the measured shot ");
     scene_path.clear();
-    history.clear();
-    ghost.clear(), kept.clear(), compare.clear(), compare_label.clear();
-    target.reset();
-    measured.fit.cancel();
-    measured.shot = std::move(m), measured.path = path, measured.last.reset();
-    measured.applied = measured.fit.finished();
-    say(MessageKind::Note, "loaded the measured shot " + path);
-    if (on_load) on_load(scene);
+    measured.shot = std::move(m), measured.path = path;
     return true;
   } catch (const std::exception& e) {
     say(MessageKind::LoadError, e.what());

@@ -136,6 +136,7 @@ class Lab {
   void keep_shot();
 
  private:
+  void adopt(Scene s, const std::string& path, const std::string& what);  // lab.cpp: a loaded scene taken on
   bool editable(const char* what);
   bool fits(int i, const Vec3& p) const;
   void show(double t);

@@ -39,8 +39,11 @@ std::optional<MarginOptions> margin_options(const Lab& lab, const MarginView& vi
 
 namespace {
 std::string goal_text(const MarginOptions& o) {
-  return o.goal.ball + "|" + o.goal.pocket + "|" + std::to_string(o.goal.x) + "," + std::to_string(o.goal.z) + "," +
-         std::to_string(o.goal.radius) + "|" + std::to_string(o.noise.aim_deg) + "|" + std::to_string(o.samples);
+  const double numbers[] = {o.goal.x, o.goal.z, o.goal.radius, o.noise.aim_deg, o.noise.speed_pct, o.noise.tip_mm,
+                            o.noise.elevation_deg, static_cast<double>(o.samples)};
+  std::string text = o.goal.ball + "|" + o.goal.pocket;
+  for (double v : numbers) text += "|" + std::to_string(v);
+  return text;
 }
 }  // namespace
 
