@@ -121,6 +121,16 @@ bool may_release(const ContactMaterial& m, double depth, double rate) {
 
 }  // namespace
 
+bool clear_of_contacts(const Model& model, const ModelIndex& index, const State& state, const double* x, int i) {
+  const double margin = model.options.contact_margin, r = model.balls[i].radius;
+  const Vec3 p = position(x, i);
+  for (int j = 0; j < state.ball_count(); ++j)
+    if (j != i && state.in_play[j] && glm::length(p - position(x, j)) - r - model.balls[j].radius < margin) return false;
+  bool near = false;
+  near_colliders(model, index, p, r, margin, [&](int, const Penetration& pen) { near = near || pen.depth > -margin; });
+  return !near;
+}
+
 double free_acceleration(const State& state, const ModelIndex& index, int i) {
   const double g = index.gravity;
   if (state.rolling(i)) return index.collider_material(state.rolling_on[i]).rolling_resistance * g;
@@ -132,10 +142,10 @@ double free_acceleration(const State& state, const ModelIndex& index, int i) {
 }
 
 double collider_contact_time(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
-                             double horizon, StepContacts* step) {
+                             double horizon, double a, StepContacts* step) {
   const double margin = model.options.contact_margin;
   const Vec3 p = position(x, i), v = velocity(x, i);
-  const double s = glm::length(v), a = free_acceleration(state, index, i);
+  const double s = glm::length(v);
   double best = std::numeric_limits<double>::infinity();
   // Colliders farther than the ball can travel within the horizon cannot limit the step.
   const double travel = s * horizon + a * horizon * horizon + margin;
@@ -157,7 +167,7 @@ double collider_contact_time(const Model& model, const ModelIndex& index, const 
 }
 
 double time_to_possible_contact(const Model& model, const ModelIndex& index, const State& state, const double* x,
-                                double horizon, BroadPhase& broad, StepContacts* step) {
+                                double horizon, BroadPhase& broad, StepContacts* step, bool flight) {
   if (step) {  // every field reset, the lists keeping their storage
     *step = StepContacts{.separated = std::move(step->separated), .pushing = std::move(step->pushing),
                          .near = std::move(step->near)};
@@ -166,7 +176,13 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
   // Relative acceleration bound outside contacts: gravity plus cloth friction, generously twice |g|. A pair pushed
   // harder by third balls may start touching inside a step; the simulation then cuts the step at the onset.
   const double a_free = 2.0 * index.gravity;
-  auto accel = [&](int i) { return free_acceleration(state, index, i); };
+  // In flight (the caller moves every ball in closed form) a ball in the full model that no rod holds touches nothing
+  // until the step's first onset, where the step ends: gravity alone accelerates it.
+  auto accel = [&](int i) {
+    const bool flies = flight && state.active(i) && !state.rolling(i) && !state.sliding(i) &&
+                       std::none_of(model.rods.begin(), model.rods.end(), [i](const Rod& r) { return r.ball == i; });
+    return flies ? index.gravity : free_acceleration(state, index, i);
+  };
   const double margin = model.options.contact_margin;
   double best = std::numeric_limits<double>::infinity();
   double vmax = 0;
@@ -174,7 +190,7 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
   for (int i = 0; i < n; ++i) {
     if (!state.active(i)) continue;  // a sleeping ball does not move towards anything
     vmax = std::max(vmax, glm::length(velocity(x, i)));
-    best = std::min(best, collider_contact_time(model, index, state, x, i, horizon, step));
+    best = std::min(best, collider_contact_time(model, index, state, x, i, horizon, accel(i), step));
   }
   // Ball pairs whose x gap is within anything closable within the horizon (a sleeper does not move: only the awake
   // one closes in).

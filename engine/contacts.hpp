@@ -150,21 +150,27 @@ void for_each_contact(const Model& model, const ModelIndex& index, const State& 
 // Adaptive steps are capped by it so that no contact, however glancing, falls between two steps
 // (docs/model.md#step-cap). Ball pairs use their relative speed, so a cluster moving together is not held back. With
 // `step`, also sorts the contacts it looks at into step->separated (every contact that could begin within the
-// horizon, none that cannot: the list is searched on every right-hand side) and step->pushing.
+// horizon, none that cannot: the list is searched on every right-hand side) and step->pushing. `flight`: the step
+// moves every ball in closed form, so a ball in the full model that no rod holds flies (regimes.hpp), under gravity
+// alone until the first onset, and its bound is |g| instead of free_acceleration's.
 double time_to_possible_contact(const Model& model, const ModelIndex& index, const State& state, const double* x,
-                                double horizon, BroadPhase& broad, StepContacts* step = nullptr);
+                                double horizon, BroadPhase& broad, StepContacts* step = nullptr, bool flight = false);
+
+// Whether ball i (at x) is farther than contact_margin from every other ball in play and from every collider: no
+// contact acts on it (the swing and the flight move such a ball in closed form, regimes.hpp).
+bool clear_of_contacts(const Model& model, const ModelIndex& index, const State& state, const double* x, int i);
 
 // m/s^2: a bound on ball i's acceleration while it touches nothing but the bed it rolls or slides on: rolling
 // resistance mu_r g when rolling, (mu + mu_r) g when sliding, generously 2 |g| otherwise (a ball in the air, one
 // settling onto the bed).
 double free_acceleration(const State& state, const ModelIndex& index, int i);
 
-// s: a lower bound on the time before ball i could come contact_margin into a collider other than the bed it rolls
-// or slides on (as far as a step may take it), or that far over a hole's edge in that bed; +inf when nothing can
-// within `horizon`. With `step`, lists the ball's contacts
+// s: a lower bound on the time before ball i, its acceleration at most `a` (m/s^2) outside contacts, could come
+// contact_margin into a collider other than the bed it rolls or slides on (as far as a step may take it), or that far
+// over a hole's edge in that bed; +inf when nothing can within `horizon`. With `step`, lists the ball's contacts
 // in step->separated and step->pushing as time_to_possible_contact does (unsorted).
 double collider_contact_time(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
-                             double horizon, StepContacts* step = nullptr);
+                             double horizon, double a, StepContacts* step = nullptr);
 
 // s: when two balls whose centres are d0 apart (m, d0 = p_i - p_j) and whose relative velocity is v (m/s) come within
 // `reach` (m) of each other on straight paths; +inf when they pass wider than that, 0 when they are that close now.

@@ -21,7 +21,7 @@ std::optional<FreePath> free_path(const Model& model, const State& state, const 
   // Up to free_for the ball may come contact_margin into a collider (collider_contact_time), which pushes it back by
   // at most that much.
   return FreePath{position(x, i), velocity(x, i), free_acceleration(state, index, i), jump,
-                  model.options.contact_margin, std::min(horizon, collider_contact_time(model, index, state, x, i, horizon))};
+                  model.options.contact_margin, std::min(horizon, collider_contact_time(model, index, state, x, i, horizon, free_acceleration(state, index, i)))};
 }
 
 double path_meeting_time(const FreePath& a, const FreePath& b, double reach, double closing) {

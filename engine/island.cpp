@@ -195,7 +195,9 @@ double Island::plan(double limit, bool& constant) {
                                         &trial_.swings, &continuing_);
   if (!constant) trial_.tails.clear(), trial_.swings.clear();
   const double horizon = constant ? std::min(limit - span_.t1, kLoneHorizon) : dt;
-  return std::min({horizon, band, time_to_possible_contact(model_, index_, integ_, span_.x1.data(), horizon, cap_broad_, &plan_)});
+  const double touch = time_to_possible_contact(model_, index_, integ_, span_.x1.data(), horizon, cap_broad_, &plan_,
+                                                     constant && model_.options.flight_regime);
+  return std::min({horizon, band, touch});
 }
 
 // The changing contacts keep their law through the step (StepContacts). A contact left out has no force at the step's

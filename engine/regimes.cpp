@@ -1,5 +1,6 @@
 #include "regimes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -149,11 +150,18 @@ void BandScan::ball(const State& state, int i, int bed) {
   }
 }
 
-// The swings of the balls in the full model, each alone on its rod; false at the first that is not.
-bool add_swings(const Model& model, const State& state, const ModelIndex& index, const double* x,
-                std::vector<Swing>& swings, const std::vector<Swing>* continuing) {
+// The balls in the full model that move in closed form: each swinging alone on its rod (listed in `swings`) or flying,
+// held by no rod and touching nothing, under gravity alone (the constant acceleration of the island's closed-form
+// step); false at the first that does neither.
+bool add_free_motions(const Model& model, const State& state, const ModelIndex& index, const double* x,
+                      std::vector<Swing>& swings, const std::vector<Swing>* continuing) {
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.active(i) || state.rolling(i) || state.sliding(i)) continue;
+    const bool held = std::any_of(model.rods.begin(), model.rods.end(), [i](const Rod& r) { return r.ball == i; });
+    if (!held) {
+      if (!model.options.flight_regime || !clear_of_contacts(model, index, state, x, i)) return false;
+      continue;
+    }
     const Swing* last = nullptr;
     if (continuing)
       for (const Swing& s : *continuing)
@@ -178,13 +186,13 @@ double time_to_band_edge(const Model& model, const State& state, const ModelInde
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.active(i)) continue;  // asleep or out of play: frozen
     const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : -1;
-    if (bed < 0) full = true;  // the full model, unless the ball swings alone on its rod (below)
+    if (bed < 0) full = true;  // the full model, unless the ball swings alone on its rod or flies (below)
     else scan.ball(state, i, bed);
   }
-  // The swings last: worked out only where nothing else keeps the island from its closed form.
+  // The swings and flights last: worked out only where nothing else keeps the island from its closed form.
   bool outside = scan.outside;
-  if (full && !(swings && !model.rods.empty())) outside = false;
-  if (full && outside) outside = add_swings(model, state, index, x, *swings, continuing);
+  if (full && !swings) outside = false;
+  if (full && outside) outside = add_free_motions(model, state, index, x, *swings, continuing);
   if (constant) *constant = outside;
   return scan.best;
 }

@@ -3,6 +3,7 @@
 //  - sliding: alone on the bed and settled onto it: held at its static sink, the bed's friction at its weight, no
 //    stiff vertical contact mode to integrate;
 //  - rolling: alone on the bed with no slip: closed-form rolling instead of the stiff smoothed friction;
+//  - flight: held by no rod and touching nothing: constant acceleration (gravity), in closed form;
 //  - asleep: a group of touching balls at rest for sleep_time is frozen exactly until a moving ball touches it.
 // Friction tails inside their bands follow band_tail.hpp, a ball alone on its rod swing.hpp. A ball leaves a regime
 // when anything but its bed comes within contact_margin or its support is no longer the flat bed; contact onsets end
@@ -85,7 +86,8 @@ double entry_slip(const Model& model);
 // against that: it is listed there instead, to be followed in closed form (band_tail.hpp), and a tail's end (the
 // stop cut, the rolling entry) counts as an edge. With `swings`, neither does a ball in the full model that swings
 // alone on its rod (swing_of): it is listed there, to follow the pendulum's closed form (`continuing`: the swings of
-// the step that ended at x, their phases moved on to its end).
+// the step that ended at x, their phases moved on to its end); nor one that flies (Options::flight_regime: held by no
+// rod, nothing within contact_margin), whose right-hand side is gravity alone.
 double time_to_band_edge(const Model& model, const State& state, const ModelIndex& index, const double* x,
                          bool* constant = nullptr, std::vector<BandTail>* tails = nullptr,
                          std::vector<Swing>* swings = nullptr, const std::vector<Swing>* continuing = nullptr);

@@ -59,14 +59,8 @@ std::optional<Swing> swing_of(const Model& model, const State& state, const Mode
   if (!rod || rod->length <= 0) return std::nullopt;
   // Touching nothing, now: the step caps and the closed-form step's cut at the first touch (island.cpp) see to the
   // rest of the step.
-  const double margin = model.options.contact_margin, r = model.balls[i].radius;
+  if (!clear_of_contacts(model, index, state, x, i)) return std::nullopt;
   const Vec3 p = position(x, i), v = velocity(x, i);
-  for (int j = 0; j < state.ball_count(); ++j)
-    if (j != i && state.in_play[j] && glm::length(p - position(x, j)) - r - model.balls[j].radius < margin)
-      return std::nullopt;
-  bool near = false;
-  near_colliders(model, index, p, r, margin, [&](int, const Penetration&) { near = true; });
-  if (near) return std::nullopt;
   if (last) {  // bit for bit where the last step's closed form put it (closed_form_step): nothing changed it since
     double b[kBallDofs];
     last->apply(0.0, b);

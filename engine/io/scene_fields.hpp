@@ -50,6 +50,7 @@ constexpr Field<Options, bool> kOptionSwitches[] = {
     {"rolling_regime", &Options::rolling_regime, &JsonNode::boolean},
     {"sliding_regime", &Options::sliding_regime, &JsonNode::boolean},
     {"swing_regime", &Options::swing_regime, &JsonNode::boolean},
+    {"flight_regime", &Options::flight_regime, &JsonNode::boolean},
     {"islands", &Options::islands, &JsonNode::boolean},
 };
 

@@ -11,8 +11,8 @@ namespace {
 
 // Every ball integrated, as one system, all along (the plain path but for the regimes on the bed, which these scenes
 // without a bed do not use).
-const std::vector<std::string> kEveryBallIntegrated = {"model.swing_regime=false", "model.sleep_time=0",
-                                                       "model.islands=false"};
+const std::vector<std::string> kEveryBallIntegrated = {"model.swing_regime=false", "model.flight_regime=false",
+                                                       "model.sleep_time=0", "model.islands=false"};
 
 nlohmann::json ball(const std::string& id, double x, double z, double vx = 0, double vz = 0) {
   return {{"id", id}, {"position", {x, kR, z}}, {"velocity", {vx, 0, vz}}, {"angular_velocity", {vz / kR, 0, -vx / kR}}};
