@@ -73,6 +73,7 @@ void Predictor::run() {
 Prediction Predictor::predict(const Scene& scene, double limit, long generation) {
   Prediction out;
   out.generation = generation;
+  const auto began = std::chrono::steady_clock::now();
   try {
     validate(scene);
     Prepared prep = prepare(scene);
@@ -101,6 +102,7 @@ Prediction Predictor::predict(const Scene& scene, double limit, long generation)
   } catch (const std::exception& e) {
     out.problem = e.what();
   }
+  out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   return out;
 }
 

@@ -25,6 +25,7 @@ struct Prediction {
   long generation = -1;                     // which request it answers
   std::vector<std::vector<PathPoint>> paths;  // per ball, in scene order
   double simulated = 0;                     // s covered
+  double wall_seconds = 0;                  // spent computing it (scene preparation and simulation)
   std::string problem;                      // why it stopped early (engine status, invalid scene), empty if none
 };
 

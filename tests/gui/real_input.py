@@ -22,6 +22,11 @@ PRESS = 0.08  # s a key or button is held: a normal press, not a synthetic zero-
 FAILURES = []
 
 
+def figure(what):
+    """A measured figure, printed for the record: timings are reported here, never asserted."""
+    print("fig   " + what, flush=True)
+
+
 def check(condition, what):
     print(("ok    " if condition else "FAIL  ") + what, flush=True)
     if not condition:
@@ -249,6 +254,8 @@ def player(binary, root, display, work):
     app.key("Left")
     s2 = app.state()
     check(abs(s2["cue"]["aim_deg"] - s["cue"]["aim_deg"] - 0.1) < 1e-6, "Left turns the aim by 0.1 degree")
+    s2 = app.wait(lambda s: s["prediction_ready"], 20, "the new aim's predicted paths")
+    figure(f"the new aim's predicted paths took {s2['prediction_ms']:.2f} ms to compute")
     app.key("Right")
 
     tip = app.widget(s, "tip widget")
@@ -291,7 +298,13 @@ def player(binary, root, display, work):
     check(s["cue"] is not None and s["cue"]["speed"] > 6, "the break comes with a firm cue strike")
     racked = s
     app.key("s")
-    s = app.wait(lambda s: s["shot_over"], 90, "the break comes to rest")
+    seen = []  # (fps, physics ms) of the frames sampled while the break runs
+    s = app.wait(lambda s: (s["playing"] and seen.append((s["fps"], s["physics_ms"]))) or s["shot_over"], 90,
+                 "the break comes to rest")
+    if seen:
+        fps = sorted(f for f, _ in seen)
+        figure(f"while the break ran: {fps[len(fps) // 2]:.0f} fps median, {fps[0]:.0f} lowest over {len(seen)} samples; "
+               f"physics {max(p for _, p in seen):.2f} ms in the busiest frame sampled")
     moved = sum(1 for b, a in zip(s["balls"], racked["balls"])
                 if not b["in_play"] or sum((p - q) ** 2 for p, q in zip(b["position"], a["position"])) > 0.05 ** 2)
     check(s["shot"]["end"] == "rest" and moved >= 8,
