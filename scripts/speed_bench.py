@@ -1,0 +1,97 @@
+#!/usr/bin/python3
+"""Whole shots to rest (issue 34), printed and written as markdown: the break (presets/break.json) and the cut
+(presets/cut.json) timed by tests/benchmarks/shot_speed on one pinned core, this build against a baseline build of
+the same benchmark (another commit's), in alternated rounds; the plain all-ODE path once for reference; and where
+this build's steps and right-hand sides go, by the kind of island that took them.
+
+usage: python3 scripts/speed_bench.py [--build build] [--baseline OTHER_BUILD] [--label TEXT] [--core 0]
+                                      [--rounds 5] [--out docs/bench/speed.md]
+"""
+import argparse
+import datetime
+import os
+import statistics
+import subprocess
+
+from machine import describe, publish
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCENES = ["break.json", "cut.json"]
+
+
+def measure(build, core, runs, plain=False):
+    """{scene: (median ms, steps, rejected, rhs, digest)} from one call of shot_speed pinned to `core`."""
+    tool = os.path.join(build, "tests", "benchmarks", "shot_speed")
+    args = ["taskset", "-c", str(core), tool, "--rounds", str(runs)] + (["--plain"] if plain else [])
+    text = subprocess.run(args + [os.path.join(ROOT, "presets", s) for s in SCENES], check=True, capture_output=True,
+                          text=True).stdout
+    out = {}
+    for line in text.splitlines():
+        f = line.split()
+        v = dict(zip(f[1::2], f[2::2]))
+        out[os.path.basename(f[0])] = (float(v["median_ms"]), int(v["steps"]), int(v["rejected"]), int(v["rhs"]),
+                                       v["digest"])
+    return out
+
+
+def census(build):
+    """[(scene, kind, steps, rhs)] of one untimed run of each scene."""
+    tool = os.path.join(build, "tests", "benchmarks", "shot_speed")
+    text = subprocess.run([tool, "--rounds", "1", "--census"] + [os.path.join(ROOT, "presets", s) for s in SCENES],
+                          check=True, capture_output=True, text=True).stdout
+    out = []
+    for line in text.splitlines():
+        if " census " not in line:
+            continue
+        scene, rest = line.split(" census ", 1)
+        kind, counts = rest.split(" steps ")
+        steps, rhs = counts.split(" rhs ")
+        out.append((os.path.basename(scene), kind, int(steps), int(rhs)))
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    ap.add_argument("--baseline", help="a build directory of another commit with tests/benchmarks/shot_speed")
+    ap.add_argument("--label", default="baseline", help="how the report names the baseline")
+    ap.add_argument("--core", type=int, default=0)
+    ap.add_argument("--rounds", type=int, default=5, help="alternated rounds of 10 shots of each scene")
+    ap.add_argument("--out")
+    a = ap.parse_args()
+    sides = {"this build": a.build} | ({a.label: a.baseline} if a.baseline else {})
+    times = {k: {s: [] for s in SCENES} for k in sides}
+    last = {}
+    for r in range(a.rounds):
+        for k in (list(sides) if r % 2 == 0 else list(reversed(sides))):
+            last[k] = measure(sides[k], a.core, 10)
+            for s in SCENES:
+                times[k][s].append(last[k][s][0])
+    plain = measure(a.build, a.core, 1, plain=True)
+    when = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    lines = ["# Whole shots to rest: the break and the cut", "",
+             f"{describe(ROOT)}; {when}; pinned to CPU {a.core}; `python3 scripts/speed_bench.py"
+             + (f" --baseline ... --label '{a.label}'" if a.baseline else "") + f" --rounds {a.rounds}`.", "",
+             "Each figure is the median of the rounds' medians (a round: 10 shots of each scene, frames of 1/60 s to the "
+             "first frame at rest, timed from the simulation's construction); the rounds alternate the builds. Steps, "
+             "rejected steps and right-hand sides are exact.", "",
+             "| scene | build | wall ms | steps | rejected | right-hand sides |", "|---|---|---|---|---|---|"]
+    for s in SCENES:
+        for k in sides:
+            _, steps, rej, rhs, _ = last[k][s]
+            lines.append(f"| {s} | {k} | {statistics.median(times[k][s]):.3f} | {steps} | {rej} | {rhs} |")
+        _, steps, rej, rhs, _ = plain[s]
+        lines.append(f"| {s} | this build, plain path (one round) | {plain[s][0]:.1f} | {steps} | {rej} | {rhs} |")
+    if a.baseline:
+        lines += ["", "| scene | wall time, this build / " + a.label + " |", "|---|---|"]
+        for s in SCENES:
+            ratios = [x / y for x, y in zip(times["this build"][s], times[a.label][s])]
+            lines.append(f"| {s} | {statistics.median(ratios):.3f} ({min(ratios):.3f}-{max(ratios):.3f}) |")
+    lines += ["", "Where this build's steps go (one run of each scene; a lone ball in closed form rolls, slides or flies "
+              "at one right-hand side a step):", "", "| scene | island | steps | right-hand sides |", "|---|---|---|---|"]
+    lines += [f"| {s} | {k} | {n} | {r} |" for s, k, n, r in census(a.build)]
+    publish(lines, a.out)
+
+
+if __name__ == "__main__":
+    main()

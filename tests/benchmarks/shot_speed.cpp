@@ -1,0 +1,109 @@
+// The time of whole shots to rest (issue 34): each scene run in frames of 1/60 s until the first frame at which every
+// ball is at rest, as a game or the bench's S7 and S8 run it, timed from the simulation's construction to that frame.
+// Rounds alternate the scenes; each scene's median and fastest wall time, its steps, rejected steps and right-hand
+// sides (the same in every round), and a digest of the end state (to tell that two builds ran the same physics) are
+// printed, one line a scene. Run it pinned to one core (scripts/speed_bench.py does). With --census, one more run
+// of each scene counts its steps and right-hand sides by the kind of island that took them (untimed).
+//   shot_speed [--rounds N] [--plain] [--census] SCENE...
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "shotlab/io/scene_json.hpp"
+#include "shotlab/simulation.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Run {
+  double ms = 0;
+  shotlab::Stats stats;
+  double end_time = 0, digest = 0;
+};
+
+// One shot to rest; false (printed) if the engine stops or no rest comes within ten minutes of simulated time.
+bool run_to_rest(const shotlab::Prepared& prepared, Run& out) {
+  shotlab::Prepared p = prepared;
+  const auto t0 = Clock::now();
+  shotlab::Simulation sim(std::move(p.model), std::move(p.state));
+  for (int frame = 0; frame < 60 * 600 && !sim.at_rest(); ++frame)
+    if (sim.advance(1.0 / 60) != shotlab::Status::Ok) {
+      std::fprintf(stderr, "shot_speed: %s\n", sim.diagnostic().c_str());
+      return false;
+    }
+  out.ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  if (!sim.at_rest()) return std::fprintf(stderr, "shot_speed: no rest within 600 s\n"), false;
+  out.stats = sim.stats();
+  out.end_time = sim.time();
+  out.digest = 0;
+  for (double v : sim.state().x) out.digest += v;
+  return true;
+}
+
+// Steps and right-hand sides of one run to rest by island: "N balls" for islands of several, and for lone balls
+// "lone, closed form" (one right-hand side a step: rolling, sliding, flying) or "lone, integrated".
+void census(const std::string& file, const shotlab::Prepared& prepared) {
+  shotlab::Prepared p = prepared;
+  shotlab::Simulation sim(std::move(p.model), std::move(p.state));
+  std::map<std::string, std::pair<long, long>> count;  // kind -> steps, rhs
+  std::map<const shotlab::Stats*, long> seen;          // each island's right-hand sides at its last step
+  sim.set_observer([&](const shotlab::StepView& v) {
+    long& last = seen[&v.stats];
+    if (last > v.stats.rhs_evaluations) last = 0;  // a new island in an old one's place
+    const long rhs = v.stats.rhs_evaluations - last;
+    last = v.stats.rhs_evaluations;
+    const std::string kind = v.balls.size() > 1 ? std::to_string(v.balls.size()) + " balls"
+                             : rhs <= 1       ? "lone, closed form"
+                                              : "lone, integrated";
+    count[kind].first += 1;
+    count[kind].second += rhs;
+  });
+  for (int frame = 0; frame < 60 * 600 && !sim.at_rest(); ++frame)
+    if (sim.advance(1.0 / 60) != shotlab::Status::Ok) return;
+  for (const auto& [kind, n] : count)
+    std::printf("%s census %s steps %ld rhs %ld\n", file.c_str(), kind.c_str(), n.first, n.second);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int rounds = 20;
+  bool plain = false, with_census = false;
+  std::vector<std::string> files;
+  for (int a = 1; a < argc; ++a) {
+    if (!std::strcmp(argv[a], "--rounds") && a + 1 < argc) rounds = std::max(1, std::atoi(argv[++a]));
+    else if (!std::strcmp(argv[a], "--plain")) plain = true;
+    else if (!std::strcmp(argv[a], "--census")) with_census = true;
+    else files.push_back(argv[a]);
+  }
+  if (files.empty()) return std::fprintf(stderr, "usage: shot_speed [--rounds N] [--plain] [--census] SCENE...\n"), 2;
+  std::vector<shotlab::Prepared> scenes;
+  try {
+    for (const std::string& f : files) {
+      scenes.push_back(shotlab::prepare(shotlab::load_scene(f)));
+      if (plain) shotlab::use_path(scenes.back().model.options, shotlab::SolverPath::Plain);
+    }
+  } catch (const std::exception& e) {
+    return std::fprintf(stderr, "shot_speed: %s\n", e.what()), 1;
+  }
+  std::vector<std::vector<Run>> runs(scenes.size());
+  for (int r = 0; r < rounds; ++r)
+    for (size_t s = 0; s < scenes.size(); ++s)
+      if (!run_to_rest(scenes[s], runs[s].emplace_back())) return 1;
+  for (size_t s = 0; s < scenes.size(); ++s) {
+    std::vector<double> ms;
+    for (const Run& run : runs[s]) ms.push_back(run.ms);
+    std::sort(ms.begin(), ms.end());
+    const Run& last = runs[s].back();
+    std::printf("%s median_ms %.4f min_ms %.4f steps %ld rejected %ld rhs %ld end_s %.4f digest %.12e\n", files[s].c_str(),
+                ms[ms.size() / 2], ms.front(), last.stats.steps, last.stats.rejected_steps, last.stats.rhs_evaluations,
+                last.end_time, last.digest);
+  }
+  for (size_t s = 0; s < scenes.size() && with_census; ++s) census(files[s], scenes[s]);
+  return 0;
+}
