@@ -20,7 +20,8 @@ SCENES = ["break.json", "cut.json"]
 
 
 def measure(build, core, runs, plain=False):
-    """{scene: (median ms, steps, rejected, rhs, digest)} from one call of shot_speed pinned to `core`."""
+    """{scene: (median ms, steps, rejected, redone, rhs, digest)} from one call of shot_speed pinned to `core`; redone is
+    None from a build whose benchmark does not count it."""
     tool = os.path.join(build, "tests", "benchmarks", "shot_speed")
     args = ["taskset", "-c", str(core), tool, "--rounds", str(runs)] + (["--plain"] if plain else [])
     text = subprocess.run(args + [os.path.join(ROOT, "presets", s) for s in SCENES], check=True, capture_output=True,
@@ -29,8 +30,8 @@ def measure(build, core, runs, plain=False):
     for line in text.splitlines():
         f = line.split()
         v = dict(zip(f[1::2], f[2::2]))
-        out[os.path.basename(f[0])] = (float(v["median_ms"]), int(v["steps"]), int(v["rejected"]), int(v["rhs"]),
-                                       v["digest"])
+        out[os.path.basename(f[0])] = (float(v["median_ms"]), int(v["steps"]), int(v["rejected"]),
+                                       int(v["redone"]) if "redone" in v else None, int(v["rhs"]), v["digest"])
     return out
 
 
@@ -74,14 +75,16 @@ def main():
              + (f" --baseline ... --label '{a.label}'" if a.baseline else "") + f" --rounds {a.rounds}`.", "",
              "Each figure is the median of the rounds' medians (a round: 10 shots of each scene, frames of 1/60 s to the "
              "first frame at rest, timed from the simulation's construction); the rounds alternate the builds. Steps, "
-             "rejected steps and right-hand sides are exact.", "",
-             "| scene | build | wall ms | steps | rejected | right-hand sides |", "|---|---|---|---|---|---|"]
+             "rejected steps, redone steps (accepted trials done again to end where a contact or friction law changes) "
+             "and right-hand sides are exact.", "",
+             "| scene | build | wall ms | steps | rejected | redone | right-hand sides |", "|---|---|---|---|---|---|---|"]
     for s in SCENES:
         for k in sides:
-            _, steps, rej, rhs, _ = last[k][s]
-            lines.append(f"| {s} | {k} | {statistics.median(times[k][s]):.3f} | {steps} | {rej} | {rhs} |")
-        _, steps, rej, rhs, _ = plain[s]
-        lines.append(f"| {s} | this build, plain path (one round) | {plain[s][0]:.1f} | {steps} | {rej} | {rhs} |")
+            _, steps, rej, redo, rhs, _ = last[k][s]
+            lines.append(f"| {s} | {k} | {statistics.median(times[k][s]):.3f} | {steps} | {rej} | "
+                         f"{'-' if redo is None else redo} | {rhs} |")
+        _, steps, rej, redo, rhs, _ = plain[s]
+        lines.append(f"| {s} | this build, plain path (one round) | {plain[s][0]:.1f} | {steps} | {rej} | {redo} | {rhs} |")
     if a.baseline:
         lines += ["", "| scene | wall time, this build / " + a.label + " |", "|---|---|"]
         for s in SCENES:

@@ -1,7 +1,7 @@
 // The time of whole shots to rest (issue 34): each scene run in frames of 1/60 s until the first frame at which every
 // ball is at rest, as a game or the bench's S7 and S8 run it, timed from the simulation's construction to that frame.
 // Rounds alternate the scenes; each scene's median and fastest wall time, its steps, rejected steps and right-hand
-// sides (the same in every round), and a digest of the end state (to tell that two builds ran the same physics) are
+// sides (the same in every round; redone: accepted trials done again to end where a law changes), and a digest of the end state (to tell that two builds ran the same physics) are
 // printed, one line a scene. Run it pinned to one core (scripts/speed_bench.py does). With --census, one more run
 // of each scene counts its steps and right-hand sides by the kind of island that took them (untimed).
 //   shot_speed [--rounds N] [--plain] [--census] SCENE...
@@ -100,9 +100,9 @@ int main(int argc, char** argv) {
     for (const Run& run : runs[s]) ms.push_back(run.ms);
     std::sort(ms.begin(), ms.end());
     const Run& last = runs[s].back();
-    std::printf("%s median_ms %.4f min_ms %.4f steps %ld rejected %ld rhs %ld end_s %.4f digest %.12e\n", files[s].c_str(),
-                ms[ms.size() / 2], ms.front(), last.stats.steps, last.stats.rejected_steps, last.stats.rhs_evaluations,
-                last.end_time, last.digest);
+    std::printf("%s median_ms %.4f min_ms %.4f steps %ld rejected %ld redone %ld rhs %ld end_s %.4f digest %.12e\n",
+                files[s].c_str(), ms[ms.size() / 2], ms.front(), last.stats.steps, last.stats.rejected_steps,
+                last.stats.redone_steps, last.stats.rhs_evaluations, last.end_time, last.digest);
   }
   for (size_t s = 0; s < scenes.size() && with_census; ++s) census(files[s], scenes[s]);
   return 0;
