@@ -90,6 +90,13 @@ Bounds bounds(const Shape& shape) {
   return {Vec3{-inf}, Vec3{inf}};
 }
 
+const Hole* hole_over(const Shape& shape, const Vec3& p) {
+  if (const auto* s = std::get_if<Plane>(&shape)) return hole_under(s->holes, p, s->normal, glm::dot(p - s->point, s->normal));
+  if (const auto* s = std::get_if<BoundedPlane>(&shape))
+    return hole_under(s->holes, p, s->normal, glm::dot(p - s->origin, s->normal));
+  return nullptr;
+}
+
 double hole_gap(const Shape& shape, const Vec3& p) {
   const std::vector<Hole>* holes = nullptr;
   Vec3 n{0.0};

@@ -10,10 +10,12 @@ namespace shotlab {
 
 namespace {
 
-// Time for a gap (m) to close at initial closing speed s (m/s) and closing acceleration at most a (m/s^2):
-// the positive root of gap = s t + a t^2 / 2, written to stay accurate when a or s is small.
+// Time for a gap (m) to close at initial closing speed s (m/s; negative: opening) and closing acceleration at most a
+// (m/s^2): the positive root of gap = s t + a t^2 / 2, written to stay accurate when a or s is small.
 double closing_time(double gap, double s, double a) {
-  const double den = s + std::sqrt(s * s + 2.0 * a * gap);
+  const double root = std::sqrt(s * s + 2.0 * a * gap);
+  if (s < 0) return a > 0 ? (root - s) / a : std::numeric_limits<double>::infinity();  // turns back first
+  const double den = s + root;
   return den > 0 ? 2.0 * gap / den : std::numeric_limits<double>::infinity();
 }
 
@@ -49,21 +51,27 @@ void overlapping_pairs(const Model& model, const ModelIndex& index, const State&
 
 namespace {
 
-// Bound on how fast a ball at p moving at v can close its gap to a collider. Using |v| everywhere would make a ball
-// moving along a cushion approach it in ever smaller steps (each step closing only the normal share of the gap);
-// planes close at the normal speed exactly, a capsule's side at the speed across its axis.
-double collider_closing_speed(const Shape& shape, const Vec3& p, const Vec3& v) {
-  if (hole_gap(shape, p) == 0) return glm::length(v);  // over a pocket the gap is to the rim, closing any way
-  if (const auto* s = std::get_if<Plane>(&shape)) return std::max(0.0, -glm::dot(v, s->normal));
-  if (const auto* s = std::get_if<BoundedPlane>(&shape))
-    return std::max(0.0, -glm::dot(v, s->normal));
-  if (const auto* s = std::get_if<Capsule>(&shape)) {
-    const Vec3 ab = s->b - s->a;
-    const double len2 = glm::dot(ab, ab);
-    const double t = len2 > 0 ? glm::dot(p - s->a, ab) / len2 : 0.0;
-    if (t > 0 && t < 1) return glm::length(v - glm::dot(v, ab) / len2 * ab);
-  }
-  return glm::length(v);
+// s: a lower bound on when a ball (centre p, radius r, velocity v, acceleration at most a) closes `gap` (m) to a
+// collider it misses by -pen.depth, within `horizon` (docs/model.md#step-cap). Its distance D to the collider changes
+// at D' = v.n now (n = pen.normal, D's gradient), and D'' >= -a: D is linear for a plane (also over its holes' edges
+// when it is outside them) and convex for a sphere's centre or a capsule's axis. Over a hole of radius rho, D is the
+// distance to the rim circle, concave along the rim by at most 1 / (rho - D): D'' >= -(V^2 / (rho - D) + a), V the
+// speed bound, for as long as the centre keeps rho - D above half its value now (the bound is no later than that);
+// the later of that and the 1-Lipschitz bound (D falls at most at |v|) holds. Using |v|
+// everywhere would make a ball moving along a cushion, or falling past a pocket's rim, approach it in ever smaller
+// steps.
+double collider_closing_time(const Shape& shape, const Vec3& p, double r, const Vec3& v, const Penetration& pen,
+                             double gap, double a, double horizon) {
+  const double rate = glm::dot(v, pen.normal);
+  const Hole* hole = hole_over(shape, p);
+  if (!hole) return closing_time(gap, -rate, a);
+  const double room = hole->radius - (r - pen.depth), speed0 = glm::length(v);  // room: rho - D now
+  const double anyway = closing_time(gap, speed0, a);  // D falls at most at |v| (it is 1-Lipschitz)
+  if (room <= 0) return anyway;
+  // Until h the centre moves less than room / 2, so rho - D stays above room / 2; the bound holds that long. Near the
+  // hole's axis (room small, the rim far) the first bound is the better one.
+  const double h = std::min(horizon, 0.5 * room / (speed0 + a * horizon)), speed = speed0 + a * h;
+  return std::max(anyway, std::min(h, closing_time(gap, -rate, speed * speed / (0.5 * room) + a)));
 }
 
 }  // namespace
@@ -151,7 +159,8 @@ double collider_contact_time(const Model& model, const ModelIndex& index, const 
   const double travel = s * horizon + a * horizon * horizon + margin;
   near_colliders(model, index, p, model.balls[i].radius, travel, [&](int c, const Penetration& pen) {
     if (pen.depth <= 0) {
-      const double t = closing_time(margin - pen.depth, collider_closing_speed(model.colliders[c].shape, p, v), a);
+      const double t = collider_closing_time(model.colliders[c].shape, p, model.balls[i].radius, v, pen, margin - pen.depth,
+                                             a, horizon);
       best = std::min(best, t);
       if (step && pen.depth <= -kTouch && t <= horizon) step->separated.emplace_back(i, -1 - c);
     }

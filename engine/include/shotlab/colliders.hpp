@@ -82,6 +82,8 @@ Bounds bounds(const Shape& shape);
 // Distance (m) from the projection of p onto a plane-like shape to the nearest edge of a hole it is outside of;
 // +inf for shapes without holes, 0 when over a hole.
 double hole_gap(const Shape& shape, const Vec3& p);
+// The hole of a plane-like shape that the projection of p lies over, if any.
+const Hole* hole_over(const Shape& shape, const Vec3& p);
 
 
 }  // namespace shotlab
