@@ -56,10 +56,9 @@ namespace {
 // at D' = v.n now (n = pen.normal, D's gradient), and D'' >= -a: D is linear for a plane (also over its holes' edges
 // when it is outside them) and convex for a sphere's centre or a capsule's axis. Over a hole of radius rho, D is the
 // distance to the rim circle, concave along the rim by at most 1 / (rho - D): D'' >= -(V^2 / (rho - D) + a), V the
-// speed bound, for as long as the centre keeps rho - D above half its value now (the bound is no later than that);
-// the later of that and the 1-Lipschitz bound (D falls at most at |v|) holds. Using |v|
-// everywhere would make a ball moving along a cushion, or falling past a pocket's rim, approach it in ever smaller
-// steps.
+// speed bound, while the centre keeps rho - D above half its value now; the later of that bound and the 1-Lipschitz
+// one (D falls at most at |v|) holds. With |v| everywhere a ball moving along a cushion, or falling past a pocket's
+// rim, would approach it in ever smaller steps.
 double collider_closing_time(const Shape& shape, const Vec3& p, double r, const Vec3& v, const Penetration& pen,
                              double gap, double a, double horizon) {
   const double rate = glm::dot(v, pen.normal);
