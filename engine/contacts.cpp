@@ -187,8 +187,7 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
   // In flight (the caller moves every ball in closed form) a ball in the full model that no rod holds touches nothing
   // until the step's first onset, where the step ends: gravity alone accelerates it.
   auto accel = [&](int i) {
-    const bool flies = flight && state.active(i) && !state.rolling(i) && !state.sliding(i) &&
-                       std::none_of(model.rods.begin(), model.rods.end(), [i](const Rod& r) { return r.ball == i; });
+    const bool flies = flight && state.active(i) && !state.rolling(i) && !state.sliding(i) && index.rods_on[i] == 0;
     return flies ? index.gravity : free_acceleration(state, index, i);
   };
   const double margin = model.options.contact_margin;

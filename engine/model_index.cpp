@@ -112,6 +112,9 @@ void ModelIndex::index_balls(const Model& model) {
     inv_inertia_r2.push_back(b.radius * b.radius / b.inertia());
     max_radius = std::max(max_radius, b.radius);
   }
+  rods_on.assign(model.balls.size(), 0);
+  for (const Rod& rod : model.rods)
+    if (rod.ball >= 0 && static_cast<size_t>(rod.ball) < rods_on.size()) ++rods_on[rod.ball];
 }
 
 }  // namespace shotlab

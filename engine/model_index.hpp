@@ -54,6 +54,7 @@ struct ModelIndex {
   // Each ball's mobilities (contact_force.hpp): 1/m (1/kg) and r^2/I (1/kg); the largest radius (m).
   std::vector<double> inv_mass, inv_inertia_r2;
   double max_radius = 0;
+  std::vector<int> rods_on;  // how many rods hold each ball
 
  private:
   void index_balls(const Model& model);

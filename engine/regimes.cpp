@@ -157,8 +157,7 @@ bool add_free_motions(const Model& model, const State& state, const ModelIndex& 
                       std::vector<Swing>& swings, const std::vector<Swing>* continuing) {
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.active(i) || state.rolling(i) || state.sliding(i)) continue;
-    const bool held = std::any_of(model.rods.begin(), model.rods.end(), [i](const Rod& r) { return r.ball == i; });
-    if (!held) {
+    if (index.rods_on[i] == 0) {
       if (!model.options.flight_regime || !clear_of_contacts(model, index, state, x, i)) return false;
       continue;
     }
@@ -209,8 +208,7 @@ int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& heig
   // Other balls and rods first: they are cheap to check and rule out most balls of a rack.
   for (int j : touching_[i])
     if (glm::length(p - position(x, j)) - r - model_.balls[j].radius < margin) return -1;
-  for (const Rod& rod : model_.rods)
-    if (rod.ball == i) return -1;
+  if (index_.rods_on[i] > 0) return -1;
   int support = -1;
   bool other = false;  // something other than one flat bed is within the margin
   near_colliders(model_, index_, p, r, margin, [&](int c, const Penetration& pen) {

@@ -111,6 +111,7 @@ class Lab {
   bool contact_on_screen() const;  // a ball touches another ball or a cushion in the frame shown
   Trails trails(double until) const;  // of the current shot, up to `until`
   std::optional<Prediction> prediction() const;  // the current scene's, when ready
+  std::optional<double> prediction_seconds() const { return predictor_.wall_seconds(wanted_); }  // its compute time
   bool predicting() const { return predictor_.busy(); }
   // The contacts of the current shot with their force histories, traced on a worker thread; the latest complete
   // log (possibly older than the shot's events while a new one is being traced).

@@ -270,11 +270,11 @@ void message_banner(Lab& lab, const Rect& view) {
 void status_line(const Lab& lab, const Rect& view, double frame_seconds) {
   char text[200];
   const double physics = lab.shot && lab.playing ? lab.shot->last_wall() * 1e3 : 0.0;
-  const auto prediction = lab.prediction();
+  const auto prediction = lab.prediction_seconds();
   const int n = std::snprintf(text, sizeof text, "frame %.1f ms (%.0f fps)   physics %.2f ms/frame", frame_seconds * 1e3,
                               frame_seconds > 0 ? 1 / frame_seconds : 0.0, physics);
   if (prediction && n > 0 && n < static_cast<int>(sizeof text))
-    std::snprintf(text + n, sizeof text - n, "   prediction %.1f ms", prediction->wall_seconds * 1e3);
+    std::snprintf(text + n, sizeof text - n, "   prediction %.1f ms", *prediction * 1e3);
   ImDrawList* d = ImGui::GetBackgroundDrawList();
   const ImVec2 size = ImGui::CalcTextSize(text);
   const ImVec2 at{std::max(view.x + view.w - size.x - em(8), view.x + em(4)), view.bottom() - size.y - em(6)};

@@ -43,6 +43,12 @@ std::optional<Prediction> Predictor::latest() const {
   return done_;
 }
 
+std::optional<double> Predictor::wall_seconds(long generation) const {
+  std::lock_guard lock(mutex_);
+  if (!done_ || done_->generation != generation) return std::nullopt;
+  return done_->wall_seconds;
+}
+
 void Predictor::run() {
   for (;;) {
     Scene scene;

@@ -43,6 +43,8 @@ class Predictor {
   void set_notify(std::function<void()> notify);
   // The latest finished prediction, if any.
   std::optional<Prediction> latest() const;
+  // s: the latest finished prediction's compute time, if it answers request `generation` (its paths not copied).
+  std::optional<double> wall_seconds(long generation) const;
   bool busy() const { return busy_; }
 
  private:
