@@ -3,6 +3,7 @@
 // centre of mass, the ball-in-hand zone, and velocity, spin and contact-force vectors.
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "ui/aim.hpp"
 #include "ui/panels.hpp"
@@ -44,15 +45,57 @@ void arrow(ImDrawList* d, const Viewport& vp, const Vec3& from, const Vec3& to, 
   d->AddTriangleFilled(v2(*pb), v2(*pb - u * head + n * head * 0.45), v2(*pb - u * head - n * head * 0.45), color);
 }
 
-// Trails: by motion colour, or in one colour (kept shots, ghost, A trails), dashed when `dashed`.
+// A trail's points lie 2 mm apart on the table, under a pixel at most zooms: drawn, a point comes this many pixels
+// after the last one kept (more for dashes, so that they show). Thousands of sub-pixel segments a frame held a break's
+// frame rate far under the display's on a software renderer.
+constexpr float kTrailPixels = 2.0f, kDashPixels = 6.0f;
+
+// Appends p to a run of screen points, replacing the run's last point while it is within `spacing` of the one before:
+// the run always ends at the latest point.
+void extend(std::vector<ImVec2>& run, ImVec2 p, float spacing) {
+  if (run.size() >= 2) {
+    const ImVec2 a = run[run.size() - 2];
+    if ((p.x - a.x) * (p.x - a.x) + (p.y - a.y) * (p.y - a.y) < spacing * spacing) {
+      run.back() = p;
+      return;
+    }
+  }
+  run.push_back(p);
+}
+
+void stroke(ImDrawList* d, const std::vector<ImVec2>& run, ImU32 colour, float width, bool dashed) {
+  if (run.size() < 2) return;
+  if (!dashed) return d->AddPolyline(run.data(), static_cast<int>(run.size()), colour, ImDrawFlags_None, width);
+  for (size_t k = 0; k + 1 < run.size(); k += 2) d->AddLine(run[k], run[k + 1], colour, width);
+}
+
+// Trails: by motion colour (the segment into a point takes that point's motion), or in one colour (kept shots, ghost,
+// A trails), dashed when `dashed`. Each run of one colour is one polyline in screen space.
 void paths(ImDrawList* d, const Viewport& vp, const Trails& trails, float alpha, float width, bool by_motion,
            ImU32 colour = IM_COL32(220, 220, 220, 255), bool dashed = false) {
   const ImU32 plain = (colour & ~IM_COL32_A_MASK) | (static_cast<ImU32>(alpha * 255) << IM_COL32_A_SHIFT);
-  for (const auto& path : trails)
-    for (size_t k = 1; k < path.size(); ++k) {
-      if (dashed && k % 2) continue;
-      line(d, vp, path[k - 1].position, path[k].position, by_motion ? motion_color(path[k].motion, alpha) : plain, width);
+  const float spacing = dashed ? kDashPixels : kTrailPixels;
+  std::vector<ImVec2> run;
+  for (const auto& path : trails) {
+    run.clear();
+    ImU32 run_colour = plain;
+    for (const PathPoint& point : path) {
+      const auto s = vp.project(point.position);
+      if (!s) {  // behind the camera: the trail breaks there
+        stroke(d, run, run_colour, width, dashed);
+        run.clear();
+        continue;
+      }
+      const ImU32 c = by_motion ? motion_color(point.motion, alpha) : plain;
+      if (c != run_colour && !run.empty()) {
+        stroke(d, run, run_colour, width, dashed);
+        run.erase(run.begin(), run.end() - 1);  // the new colour starts where the old one ended
+      }
+      run_colour = c;
+      extend(run, v2(*s), spacing);
     }
+    stroke(d, run, run_colour, width, dashed);
+  }
 }
 
 void aim(ImDrawList* d, const Viewport& vp, const Lab& lab) {
