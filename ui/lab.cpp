@@ -428,7 +428,12 @@ const ContactLog* Lab::contact_log() {
   }
   const std::vector<Event>& events = shot->sim().events();
   const bool stale = log_shot_ != shot_id_ || log_.events != events.size();
-  if (stale && !log_job_.valid()) {
+  // Each trace runs the shot again from its start: while it plays, new events come every frame, and tracing them all
+  // back to back would keep a core busy that the renderer needs. Then the log follows once a second.
+  const auto now = std::chrono::steady_clock::now();
+  const bool due = !playing || log_shot_ != shot_id_ || now - job_started_ >= std::chrono::seconds(1);
+  if (stale && due && !log_job_.valid()) {
+    job_started_ = now;
     job_shot_ = shot_id_;
     log_job_ = std::async(std::launch::async, trace_contacts, shot->start(), events, shot->sim().time());
   }

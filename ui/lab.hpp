@@ -4,6 +4,7 @@
 //  - `history` is one undo stack for edits and shots (history.hpp); tuned physics has its own reset.
 // The actions live in lab.cpp (files, shots, playback) and lab_edit.cpp (aiming and editing the table).
 #pragma once
+#include <chrono>
 #include <functional>
 #include <future>
 #include <memory>
@@ -155,6 +156,7 @@ class Lab {
   int log_shot_ = -1;
   std::future<ContactLog> log_job_;
   int job_shot_ = -1;
+  std::chrono::steady_clock::time_point job_started_;  // of the last trace, which runs the shot again from its start
 };
 
 }  // namespace shotlab
