@@ -180,15 +180,17 @@ void pointer_fallback(GLFWwindow* window) {
 // Sleeps while nothing changes on screen; after input, draws a few frames so that ImGui settles.
 class Pacer {
  public:
-  void wait(bool busy) {
+  // True when it slept: the frame's time is then the wait.
+  bool wait(bool busy) {
     if (busy || settle_ > 0) {
       glfwPollEvents();
       settle_ = busy ? kSettle : settle_ - 1;
-      return;
+      return false;
     }
     const double before = glfwGetTime();
     glfwWaitEventsTimeout(kIdleWake);
     if (glfwGetTime() - before < kIdleWake * 0.9) settle_ = kSettle;  // woken by an event, not the timeout
+    return true;
   }
 
  private:
@@ -233,8 +235,9 @@ int run_gui(const GuiOptions& options) {
       std::signal(SIGTERM, on_signal);
       if (!options.dump_state.empty()) std::signal(SIGUSR1, on_dump_signal);
       while (!glfwWindowShouldClose(window.handle) && !interrupted && !(script && script->done())) {
+        bool slept = false;
         if (script) glfwPollEvents();
-        else pacer.wait(lab.animating() || tuning.busy() || ImGui::IsAnyMouseDown());
+        else slept = pacer.wait(lab.animating() || tuning.busy() || ImGui::IsAnyMouseDown());
         const double now = glfwGetTime();
         const double dt = script && !host.real_clock ? 1.0 / 60 : std::min(now - last, 0.1);
         frame_seconds = now - last;
@@ -267,7 +270,7 @@ int run_gui(const GuiOptions& options) {
         settings.panels.right_open = inspector_panel(lab, tuning, layout.right);
         help_panel(&settings.view.help);
         message_banner(lab, layout.view);
-        status_line(lab, layout.view, frame_seconds);
+        status_line(lab, layout.view, frame_seconds, slept);
         draw_overlay(lab, viewport, ImGui::GetBackgroundDrawList());
 
         if (!lab.strobe_request.empty()) write_strobe(lab, renderer, viewport, h);

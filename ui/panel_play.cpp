@@ -267,12 +267,15 @@ void message_banner(Lab& lab, const Rect& view) {
   ImGui::End();
 }
 
-void status_line(const Lab& lab, const Rect& view, double frame_seconds) {
+void status_line(const Lab& lab, const Rect& view, double frame_seconds, bool slept) {
   char text[200];
   const double physics = lab.shot && lab.playing ? lab.shot->last_wall() * 1e3 : 0.0;
   const auto prediction = lab.prediction_seconds();
-  const int n = std::snprintf(text, sizeof text, "frame %.1f ms (%.0f fps)   physics %.2f ms/frame", frame_seconds * 1e3,
-                              frame_seconds > 0 ? 1 / frame_seconds : 0.0, physics);
+  // At idle the window sleeps until input (or half a second): the frame's time is then the wait, not the drawing.
+  const int n = !slept
+                    ? std::snprintf(text, sizeof text, "frame %.1f ms (%.0f fps)   physics %.2f ms/frame",
+                                    frame_seconds * 1e3, frame_seconds > 0 ? 1 / frame_seconds : 0.0, physics)
+                    : std::snprintf(text, sizeof text, "idle: drawn on input");
   if (prediction && n > 0 && n < static_cast<int>(sizeof text))
     std::snprintf(text + n, sizeof text - n, "   prediction %.1f ms", *prediction * 1e3);
   ImDrawList* d = ImGui::GetBackgroundDrawList();

@@ -48,7 +48,7 @@ void measured_section(Lab& lab);      // panel_measured.cpp: a measured shot and
 void help_panel(bool* open);          // panel_play.cpp: shortcuts
 void message_banner(Lab& lab, const Rect& view);  // panel_play.cpp: errors and notes over the 3D view
 // The frame's timing in the view's corner: frame time and rate, physics time this frame (developers).
-void status_line(const Lab& lab, const Rect& view, double frame_seconds);
+void status_line(const Lab& lab, const Rect& view, double frame_seconds, bool slept);
 
 // A plot with its exports handled (files named after the scene, in the export folder); returns the picked time.
 std::optional<double> lab_plot(Lab& lab, const char* id, const PlotSpec& spec, const std::vector<PlotSeries>& series,
