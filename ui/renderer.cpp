@@ -58,7 +58,7 @@ std::vector<float> sphere_mesh(int slices, int stacks) {
   for (int j = 0; j < stacks; ++j)
     for (int i = 0; i < slices; ++i) {
       const glm::vec3 a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
-      for (const glm::vec3& p : {a, c, b, a, d, c}) push(v, p, p);
+      for (const glm::vec3& p : {a, b, c, a, c, d}) push(v, p, p);  // counter-clockwise seen from outside
     }
   return v;
 }
@@ -207,9 +207,9 @@ void Renderer::begin(const glm::dmat4& view_proj, const glm::dvec3& eye, int x0,
   glClearColor(0.13f, 0.14f, 0.16f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_CULL_FACE);  // meshes wind counter-clockwise seen from outside; only a slab's top is seen
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);  // on only for see-through draws (draw): blending costs a
+                                                      // software renderer a read of every pixel it shades
   glUseProgram(program_);
   glUniformMatrix4fv(loc_view_proj_, 1, GL_FALSE, glm::value_ptr(glm::mat4(view_proj)));
   glUniform3fv(loc_eye_, 1, glm::value_ptr(glm::vec3(eye)));
@@ -227,8 +227,11 @@ void Renderer::draw(const Mesh& mesh, const glm::dmat4& model, const glm::vec3& 
   glUniform1f(loc_alpha_, alpha);
   glUniform1i(loc_pattern_, pattern);
   glUniform1i(loc_number_, digits_ ? number_ : 0);
+  glFrontFace(glm::determinant(glm::mat3(m)) < 0 ? GL_CW : GL_CCW);  // a mirroring transform turns the winding
   glBindVertexArray(mesh.vao);
+  if (alpha < 1) glEnable(GL_BLEND);
   glDrawArrays(GL_TRIANGLES, 0, mesh.count);
+  glDisable(GL_BLEND);
 }
 
 void Renderer::draw_ball(const glm::dvec3& p, const glm::dquat& q, double r, const BallLook& look, float alpha) {
