@@ -207,7 +207,7 @@ void Renderer::begin(const glm::dmat4& view_proj, const glm::dvec3& eye, int x0,
   glClearColor(0.13f, 0.14f, 0.16f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
-  glEnable(GL_CULL_FACE);  // meshes wind counter-clockwise seen from outside; only a slab's top is seen
+  glEnable(GL_CULL_FACE);  // meshes wind counter-clockwise seen from outside: faces turned away go unshaded
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);  // on only for see-through draws (draw): blending costs a
                                                       // software renderer a read of every pixel it shades
   glUseProgram(program_);
