@@ -317,9 +317,19 @@ void EventDetector::changes(const State& state, const StepSpan& span, const Step
   std::set_difference(contacts_.begin(), contacts_.end(), now.begin(), now.end(), std::back_inserter(ended));
 }
 
+// A contact that pushed nothing at the step's start (released: separating with its force clamped at zero) ends with
+// zero force on both sides: its end is no kink.
+bool EventDetector::released_at_start(const Key& k, const std::vector<ContactRecord>* start) {
+  if (!start) return false;
+  const auto r = std::lower_bound(start->begin(), start->end(), k,
+                                  [](const ContactRecord& c, const Key& key) { return c.key < key; });
+  return r != start->end() && r->key == k && r->normal <= 0;
+}
+
 EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span, const State& state,
                                                            const StepContacts& kept,
-                                                           const std::vector<ContactRecord>* record) {
+                                                           const std::vector<ContactRecord>* record,
+                                                           const std::vector<ContactRecord>* start) {
   changes(state, span, kept, record);
   constexpr double inf = std::numeric_limits<double>::infinity();
   Changes first{inf, inf};
@@ -331,7 +341,8 @@ EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span,
                   }));
   };
   for (const Key& k : begun_) locate(k, span.x0, true, first.begin);
-  for (const Key& k : ended_) locate(k, span.x1, false, first.end);
+  for (const Key& k : ended_)
+    if (!released_at_start(k, start)) locate(k, span.x1, false, first.end);
   return first;
 }
 

@@ -43,12 +43,13 @@ class EventDetector {
   void scan(const StepSpan& span, const State& state, const StepContacts& kept,
             const std::vector<ContactRecord>* record, std::vector<Event>& events, std::vector<Exit>& exits);
   // Earliest times in the span at which a contact begins and at which one ends (where the force law has a kink);
-  // +inf when none.
+  // +inf when none. `start`: the contacts at the span's start (sorted by key), whose released ones end with no kink.
   struct Changes {
     double begin, end;
   };
   Changes first_contact_change(const StepSpan& span, const State& state, const StepContacts& kept,
-                               const std::vector<ContactRecord>* record);
+                               const std::vector<ContactRecord>* record,
+                               const std::vector<ContactRecord>* start = nullptr);
   // Earliest time in the span at which one of the `separated` contacts touches (depth > 0), located to
   // kOnsetResolution; +inf when none. `which`, when given, gets that contact.
   double first_touch(const StepSpan& span, const std::vector<ContactKey>& separated, ContactKey* which = nullptr);
@@ -72,6 +73,7 @@ class EventDetector {
 
  private:
   using Key = ContactKey;
+  static bool released_at_start(const Key& k, const std::vector<ContactRecord>* start);
   // The contacts deeper than kTouch at x, sorted: by a broad phase, or from the record at x.
   void collect(const State& state, const double* x, std::vector<Key>& keys);
   void collect(const State& state, const StepSpan& span, const StepContacts& kept,

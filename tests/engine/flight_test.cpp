@@ -117,5 +117,30 @@ TEST(Flight, ABallFallingPastAPocketsAxisIsNotHeldBack) {
   EXPECT_LT(sim->stats().steps, 1000);
 }
 
+// A ball dropped onto the bed releases it before it leaves it: the damped force reaches zero while the bed is still
+// compressed, and from there on pushes nothing until the depth is gone. Only the release is a kink; no step is cut
+// to end where the contact ends (docs/model.md#step-control), and the hop's top comes out as with the cut.
+TEST(Flight, ALiftOffAfterTheReleaseIsNoKink) {
+  auto sim = simulate(scene(throw_scene(kR + 0.01, {0, 0, 0}, {0, 0, 0})));
+  std::vector<double> ends;
+  sim->set_observer([&](const StepView& v) { ends.push_back(v.t1); });
+  advance_to(*sim, 0.05);
+  const double begin = event_time(*sim, "contact_begin", "b"), end = event_time(*sim, "contact_end", "b");
+  ASSERT_GT(begin, 0);
+  ASSERT_GT(end, begin);
+  double nearest = 1;
+  for (double t : ends) nearest = std::min(nearest, std::abs(t - end));
+  EXPECT_GT(nearest, 1e-9) << "a step was cut to end at the lift-off";
+  // After the lift-off the ball flies: its top against the rebound speed the lift-off gave it (the same drop again,
+  // stopped there).
+  sim = simulate(scene(throw_scene(kR + 0.01, {0, 0, 0}, {0, 0, 0})));
+  advance_to(*sim, end);
+  const double vy = velocity(sim->state().x, 0).y, y = position(sim->state().x, 0).y;
+  ASSERT_GT(vy, 0);
+  advance_to(*sim, end + vy / kG);
+  EXPECT_NEAR(position(sim->state().x, 0).y, y + vy * vy / (2 * kG), 1e-10);
+  EXPECT_NEAR(velocity(sim->state().x, 0).y, 0, 1e-9);
+}
+
 }  // namespace
 }  // namespace shotlab::test
