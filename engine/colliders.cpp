@@ -90,24 +90,35 @@ Bounds bounds(const Shape& shape) {
   return {Vec3{-inf}, Vec3{inf}};
 }
 
+namespace {
+
+// A plane-like shape's holes, its normal and a point on it; no holes for the other shapes.
+struct HoledPlane {
+  const std::vector<Hole>* holes = nullptr;
+  Vec3 normal{0.0}, point{0.0};
+};
+
+HoledPlane holed_plane(const Shape& shape) {
+  if (const auto* s = std::get_if<Plane>(&shape)) return {&s->holes, s->normal, s->point};
+  if (const auto* s = std::get_if<BoundedPlane>(&shape)) return {&s->holes, s->normal, s->origin};
+  return {};
+}
+
+}  // namespace
+
 const Hole* hole_over(const Shape& shape, const Vec3& p) {
-  if (const auto* s = std::get_if<Plane>(&shape)) return hole_under(s->holes, p, s->normal, glm::dot(p - s->point, s->normal));
-  if (const auto* s = std::get_if<BoundedPlane>(&shape))
-    return hole_under(s->holes, p, s->normal, glm::dot(p - s->origin, s->normal));
-  return nullptr;
+  const HoledPlane h = holed_plane(shape);
+  return h.holes ? hole_under(*h.holes, p, h.normal, glm::dot(p - h.point, h.normal)) : nullptr;
 }
 
 double hole_gap(const Shape& shape, const Vec3& p) {
-  const std::vector<Hole>* holes = nullptr;
-  Vec3 n{0.0};
-  if (const auto* s = std::get_if<Plane>(&shape)) holes = &s->holes, n = s->normal;
-  if (const auto* s = std::get_if<BoundedPlane>(&shape)) holes = &s->holes, n = s->normal;
+  const HoledPlane h = holed_plane(shape);
   double gap = std::numeric_limits<double>::infinity();
-  if (!holes) return gap;
-  for (const Hole& h : *holes) {
-    Vec3 d = p - h.center;
-    d -= glm::dot(d, n) * n;
-    gap = std::min(gap, std::max(0.0, glm::length(d) - h.radius));
+  if (!h.holes) return gap;
+  for (const Hole& hole : *h.holes) {
+    Vec3 d = p - hole.center;
+    d -= glm::dot(d, h.normal) * h.normal;
+    gap = std::min(gap, std::max(0.0, glm::length(d) - hole.radius));
   }
   return gap;
 }
