@@ -150,13 +150,16 @@ bool Island::go_on_to_touch(Trials& tr, double& dt) {
 }
 
 // The next step's trial length (dt: what the stepper suggests after the accepted trial). After a rejection, do not grow
-// the step at once (a stability-limited stiff switch would be rejected again); a step cut at a change passed the
-// control at its first length and may try it again; after an onset the onset's own length caps it, and the step after
-// one that started at an onset may be onset_factor^(1/5) longer (docs/model.md#step-control).
+// the step at once (a stability-limited stiff switch would be rejected again), but a step then cut at a change goes
+// on at the length that passed, not at the cut's (often a few ns: the next steps would only grow it back); a step cut
+// at a change passed the control at its first length and may try it again; after an onset the onset's own length
+// caps it, and the step after one that started at an onset may be onset_factor^(1/5) longer
+// (docs/model.md#step-control).
 void Island::size_next_step(double dt, double wanted, bool capped, bool from_onset, const Trials& tr, bool rejected) {
   const bool sized = onset_growth_ > 1;  // the method has onset_step
   if (from_onset && sized && !(tr.retries > 0 && tr.at_onset))
     dt_next_ = (rejected ? std::min(dt, tr.tried) : dt) * onset_growth_;
+  else if (rejected && tr.retries > 0 && !tr.at_onset && tr.tried < 0.01 * tr.passed) dt_next_ = tr.passed;
   else if (rejected || (tr.retries > 0 && tr.at_onset && !sized)) dt_next_ = std::min(dt, tr.tried);
   else if (tr.retries > 0) dt_next_ = std::max({dt, tr.passed, capped ? wanted : 0.0});
   else dt_next_ = capped ? std::max(dt, wanted) : dt;
