@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "shotlab/contact.hpp"
+#include "shotlab/diagnostics.hpp"
 #include "shotlab/io/scene_json.hpp"
 #include "shotlab/simulation.hpp"
 
@@ -46,27 +48,44 @@ bool run_to_rest(const shotlab::Prepared& prepared, Run& out) {
 }
 
 // Steps and right-hand sides of one run to rest by island: "N balls" for islands of several, and for lone balls
-// "lone, closed form" (one right-hand side a step: rolling, sliding, flying) or "lone, integrated".
+// "lone, closed form" (one right-hand side a step: rolling, sliding, flying) or "lone, integrated". For each kind also
+// what shortens its steps: how many ended at a contact or friction change (redone), the trials the error control
+// rejected, and how many steps ended with a friction term inside a band widened by the rate limit (there the term is a
+// linear damper at the limit's rate, docs/model.md#rate-limit).
+struct Census {
+  long steps = 0, rhs = 0, redone = 0, rejected = 0, limited = 0;
+};
+
 void census(const std::string& file, const shotlab::Prepared& prepared) {
   shotlab::Prepared p = prepared;
   shotlab::Simulation sim(std::move(p.model), std::move(p.state));
-  std::map<std::string, std::pair<long, long>> count;  // kind -> steps, rhs
-  std::map<const shotlab::Stats*, long> seen;          // each island's right-hand sides at its last step
+  std::map<std::string, Census> count;
+  std::map<const shotlab::Stats*, shotlab::Stats> seen;  // each island's counts at its last step
+  constexpr uint8_t kLimited = shotlab::kSlipLimited | shotlab::kRollLimited | shotlab::kSpinLimited;
   sim.set_observer([&](const shotlab::StepView& v) {
-    long& last = seen[&v.stats];
-    if (last > v.stats.rhs_evaluations) last = 0;  // a new island in an old one's place
-    const long rhs = v.stats.rhs_evaluations - last;
-    last = v.stats.rhs_evaluations;
+    shotlab::Stats& last = seen[&v.stats];
+    if (last.rhs_evaluations > v.stats.rhs_evaluations) last = shotlab::Stats{};  // a new island in an old one's place
+    const long rhs = v.stats.rhs_evaluations - last.rhs_evaluations;
     const std::string kind = v.balls.size() > 1 ? std::to_string(v.balls.size()) + " balls"
                              : rhs <= 1       ? "lone, closed form"
                                               : "lone, integrated";
-    count[kind].first += 1;
-    count[kind].second += rhs;
+    Census& c = count[kind];
+    c.steps += 1;
+    c.rhs += rhs;
+    c.redone += v.stats.redone_steps > last.redone_steps;
+    c.rejected += v.stats.rejected_steps - last.rejected_steps;
+    for (const shotlab::Contact& contact : shotlab::contacts(v.model, v.state))
+      if (contact.force.bands & kLimited) {
+        ++c.limited;
+        break;
+      }
+    last = v.stats;
   });
   for (int frame = 0; frame < 60 * 600 && !sim.at_rest(); ++frame)
     if (sim.advance(1.0 / 60) != shotlab::Status::Ok) return;
-  for (const auto& [kind, n] : count)
-    std::printf("%s census %s steps %ld rhs %ld\n", file.c_str(), kind.c_str(), n.first, n.second);
+  for (const auto& [kind, c] : count)
+    std::printf("%s census %s steps %ld rhs %ld redone %ld rejected %ld limited %ld\n", file.c_str(), kind.c_str(),
+                c.steps, c.rhs, c.redone, c.rejected, c.limited);
 }
 
 }  // namespace
