@@ -271,6 +271,7 @@ int run_gui(const GuiOptions& options) {
         help_panel(&settings.view.help);
         message_banner(lab, layout.view);
         status_line(lab, layout.view, frame_seconds, slept);
+        lab.await_prediction();
         draw_overlay(lab, viewport, ImGui::GetBackgroundDrawList());
 
         if (!lab.strobe_request.empty()) write_strobe(lab, renderer, viewport, h);

@@ -416,8 +416,13 @@ Trails Lab::trails(double until) const {
 
 std::optional<Prediction> Lab::prediction() const {
   auto p = predictor_.latest();
-  if (!p || p->generation != wanted_) return std::nullopt;
+  if (!p || p->generation != wanted_ || !p->complete) return std::nullopt;
   return p;
+}
+
+void Lab::await_prediction() const {
+  constexpr double kWait = 4e-3;  // s: a quarter of a frame at 60 Hz
+  if (!shot && settings.view.predicted && predictor_.busy()) predictor_.wait_for(wanted_, kWait);
 }
 
 const ContactLog* Lab::contact_log() {

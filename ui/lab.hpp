@@ -111,7 +111,14 @@ class Lab {
   const Frame& frame() const { return frame_; }  // the balls as on screen
   bool contact_on_screen() const;  // a ball touches another ball or a cushion in the frame shown
   Trails trails(double until) const;  // of the current shot, up to `until`
-  std::optional<Prediction> prediction() const;  // the current scene's, when ready
+  std::optional<Prediction> prediction() const;  // the current scene's, when finished
+  // The predicted paths to draw: the current scene's, finished or so far, else the last ones handed out (the aim
+  // changed in this frame and its paths are not out yet), so that they never blink off while the aim is dragged.
+  std::optional<Prediction> predicted_paths() const { return predictor_.latest(); }
+  long prediction_request() const { return wanted_; }  // the current scene's (Prediction::generation)
+  // Before a frame is drawn: a new aim's prediction gets a few milliseconds to finish, so that a shot that takes no
+  // longer to predict (a cut) shows its own paths in the frame that changed the aim.
+  void await_prediction() const;
   std::optional<double> prediction_seconds() const { return predictor_.wall_seconds(wanted_); }  // its compute time
   bool predicting() const { return predictor_.busy(); }
   // The contacts of the current shot with their force histories, traced on a worker thread; the latest complete

@@ -267,7 +267,15 @@ void draw_all(const Lab& lab, const Viewport& vp, ImDrawList* d) {
     if (v.trails) paths(d, vp, lab.trails(lab.view_time), 0.9f, 2.5f, true);
   } else {
     if (v.predicted)
-      if (const auto p = lab.prediction()) paths(d, vp, p->paths, 0.7f, 2.0f, true);
+      if (const auto p = lab.predicted_paths()) {
+        paths(d, vp, p->paths, 0.7f, 2.0f, true);
+        size_t points = 0;
+        for (const auto& path : p->paths) points += path.size();
+        // What the frame drew, for the state dump: how much, whether finished, and how many aims ago it was asked.
+        readout("predicted path points", static_cast<double>(points));
+        readout("predicted paths complete", p->complete);
+        readout("predicted aims behind", static_cast<double>(lab.prediction_request() - p->generation));
+      }
     if (v.aim && lab.scene.cue) aim(d, vp, lab);
   }
   const Frame& f = lab.frame();

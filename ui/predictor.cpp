@@ -7,8 +7,9 @@
 namespace shotlab {
 
 namespace {
-constexpr double kSample = 1.0 / 120;  // s between path points
-constexpr double kWallLimit = 4.0;     // s of wall time a prediction may take (a break at tight tolerances)
+constexpr double kSample = 1.0 / 120;   // s between path points
+constexpr double kWallLimit = 4.0;      // s of wall time a prediction may take (a break at tight tolerances)
+constexpr double kShowEvery = 8e-3;     // s of computing between hand-outs of a running prediction's paths so far
 }  // namespace
 
 Predictor::Predictor() : thread_([this] { run(); }) {}
@@ -43,10 +44,32 @@ std::optional<Prediction> Predictor::latest() const {
   return done_;
 }
 
+bool Predictor::wait_for(long generation, double seconds) const {
+  std::unique_lock lock(mutex_);
+  ++waiting_;
+  const bool out = published_.wait_for(lock, std::chrono::duration<double>(seconds),
+                                       [&] { return done_ && done_->generation == generation && done_->complete; });
+  --waiting_;
+  return out;
+}
+
 std::optional<double> Predictor::wall_seconds(long generation) const {
   std::lock_guard lock(mutex_);
-  if (!done_ || done_->generation != generation) return std::nullopt;
+  if (!done_ || done_->generation != generation || !done_->complete) return std::nullopt;
   return done_->wall_seconds;
+}
+
+void Predictor::publish(Prediction p) {
+  std::function<void()> notify;
+  {
+    std::lock_guard lock(mutex_);
+    if (p.generation != generation_) return;  // superseded while it ran
+    if (p.complete) busy_ = false;
+    done_ = std::move(p);
+    notify = notify_;
+  }
+  published_.notify_all();
+  if (notify) notify();
 }
 
 void Predictor::run() {
@@ -64,15 +87,8 @@ void Predictor::run() {
       limit = limit_;
     }
     Prediction p = predict(scene, limit, generation);
-    std::function<void()> notify;
-    {
-      std::lock_guard lock(mutex_);
-      if (p.generation != generation_) continue;  // superseded while it ran
-      done_ = std::move(p);
-      busy_ = false;
-      notify = notify_;
-    }
-    if (notify) notify();
+    p.complete = true;
+    publish(std::move(p));
   }
 }
 
@@ -92,6 +108,7 @@ Prediction Predictor::predict(const Scene& scene, double limit, long generation)
           out.paths[i].push_back({position(sim.state().x, i), sim.motion(i)});
     };
     sample();
+    double shown = 0;  // s of computing when the paths so far were last handed out
     while (sim.time() < limit && !(sim.time() > 0 && sim.at_rest())) {
       if (wanted_ != generation) return out;  // superseded: the result is dropped by run()
       if (sim.advance(kSample) != Status::Ok) {
@@ -99,7 +116,14 @@ Prediction Predictor::predict(const Scene& scene, double limit, long generation)
         break;
       }
       sample();
-      if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > kWallLimit) {
+      const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (waiting_ > 0 || spent - shown > kShowEvery) {
+        shown = spent;
+        out.simulated = sim.time();
+        out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+        publish(out);
+      }
+      if (spent > kWallLimit) {
         out.problem = "prediction cut short after " + std::to_string(kWallLimit) + " s of computing";
         break;
       }

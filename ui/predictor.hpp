@@ -1,6 +1,7 @@
 // Predicted paths before the shot: a background thread runs its own Simulation of the scene as it would be shot,
-// until its balls rest, and hands back each ball's path. A newer request supersedes a running one (the thread checks between chunks), so
-// dragging the aim never queues work.
+// until its balls rest, and hands back each ball's path. A newer request supersedes a running one (the thread checks
+// between chunks), so dragging the aim never queues work. A long prediction (a break) hands out its paths so far as
+// it goes: every kShowEvery of computing, and at every chunk while the window waits for it (wait_for).
 #pragma once
 #include <atomic>
 #include <condition_variable>
@@ -26,6 +27,7 @@ struct Prediction {
   std::vector<std::vector<PathPoint>> paths;  // per ball, in scene order
   double simulated = 0;                     // s covered
   double wall_seconds = 0;                  // spent computing it (scene preparation and simulation)
+  bool complete = false;                    // false: the paths so far of a prediction still running
   std::string problem;                      // why it stopped early (engine status, invalid scene), empty if none
 };
 
@@ -39,10 +41,13 @@ class Predictor {
   // Starts predicting `scene` until its balls rest or `limit` s (abandoning any older request); returns the
   // request's generation.
   long request(const Scene& scene, double limit);
-  // Called on the worker thread when a prediction is ready (the window's event loop wakes up to draw it).
+  // Called on the worker thread when a prediction, or more of one, is out (the window's event loop wakes up to draw).
   void set_notify(std::function<void()> notify);
-  // The latest finished prediction, if any.
+  // The latest prediction handed out, finished or so far (Prediction::complete), of whichever request.
   std::optional<Prediction> latest() const;
+  // Waits at most `seconds` until request `generation` is finished; true if it is. Meanwhile the worker hands out its
+  // paths so far at every chunk, so that latest() has them when the time is up.
+  bool wait_for(long generation, double seconds) const;
   // s: the latest finished prediction's compute time, if it answers request `generation` (its paths not copied).
   std::optional<double> wall_seconds(long generation) const;
   bool busy() const { return busy_; }
@@ -50,9 +55,12 @@ class Predictor {
  private:
   void run();
   Prediction predict(const Scene& scene, double limit, long generation);
+  void publish(Prediction p);  // hands it out unless a newer request came meanwhile
 
   mutable std::mutex mutex_;
   std::condition_variable wake_;
+  mutable std::condition_variable published_;
+  mutable std::atomic<int> waiting_{0};  // calls of wait_for blocked now: the worker hands out what it has
   std::optional<Scene> pending_;
   double limit_ = 0;
   std::function<void()> notify_;

@@ -136,6 +136,33 @@ class App:
             self.xdotool("keyup", m)
         time.sleep(0.25)
 
+    def sweep(self, x0, y0, x1, y1, samples):
+        """Holds the button and moves the pointer to and fro between two points every 10 ms, as a hand sweeps the aim,
+        taking `samples` state dumps meanwhile; returns them."""
+        import threading
+        self.hover(x0, y0)
+        self.xdotool("mousedown", "1")
+        time.sleep(PRESS)
+        stop = threading.Event()
+
+        def to_and_fro():
+            k = 0
+            while not stop.is_set():
+                f = abs((k % 40) - 20) / 20  # 0 -> 1 -> 0 over 40 moves
+                self.xdotool("mousemove", "--window", self.window, str(int(x0 + (x1 - x0) * f)),
+                             str(int(y0 + (y1 - y0) * f)))
+                k += 1
+                time.sleep(0.01)
+        mover = threading.Thread(target=to_and_fro)
+        mover.start()
+        time.sleep(0.3)
+        states = [self.state() for _ in range(samples)]
+        stop.set()
+        mover.join()
+        self.xdotool("mouseup", "1")
+        time.sleep(0.25)
+        return states
+
     def key(self, name, times=1):
         for _ in range(times):
             self.xdotool("keydown", name)
@@ -257,6 +284,23 @@ def player(binary, root, display, work):
     s2 = app.wait(lambda s: s["prediction_ready"], 20, "the new aim's predicted paths")
     figure(f"the new aim's predicted paths took {s2['prediction_ms']:.2f} ms to compute")
     app.key("Right")
+
+    # Sweeping the aim with the button held: every frame changes the aim, and each still draws predicted paths, its own
+    # (the cut predicts in a few ms) or the aim's just before it, never none.
+    swept = app.sweep(ox - 60, oy + 60, ox + 60, oy + 60, 10)
+    shown = [st["readouts"].get("predicted path points", 0) for st in swept]
+    behind = [st["readouts"].get("predicted aims behind", 99) for st in swept]
+    aims = {round(st["cue"]["aim_deg"], 3) for st in swept}
+    check(len(aims) >= 5, f"the sweep turned the aim while the dumps were taken ({len(aims)} aims in 10 dumps)")
+    check(all(n > 0 for n in shown), f"every frame of the sweep drew predicted paths ({', '.join(f'{n:.0f}' for n in shown)} "
+          "points)")
+    check(sum(b <= 1 for b in behind) >= len(behind) / 2,
+          f"most of them were the frame's own aim's or the one before ({', '.join(f'{b:.0f}' for b in behind)} aims behind)")
+    figure(f"while the aim was swept: {sum(b == 0 for b in behind)} of {len(behind)} frames drew their own aim's paths, "
+           f"{min(st['fps'] for st in swept):.0f}-{max(st['fps'] for st in swept):.0f} fps")
+    app.click(ox, oy)  # back to the pocket line: full ball on the object ball, then P
+    app.key("p")
+    check(abs(app.state()["cue"]["aim_deg"] + 75) < 0.5, "a click on the object ball and P aim at the pocket again")
 
     tip = app.widget(s, "tip widget")
     r = tip["w"] / 2 - 6
