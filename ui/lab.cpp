@@ -420,9 +420,11 @@ std::optional<Prediction> Lab::prediction() const {
   return p;
 }
 
-void Lab::await_prediction() const {
+void Lab::await_prediction() {
   constexpr double kWait = 4e-3;  // s: a quarter of a frame at 60 Hz
-  if (!shot && settings.view.predicted && predictor_.busy()) predictor_.wait_for(wanted_, kWait);
+  if (shot || !settings.view.predicted || awaited_ == wanted_) return;
+  awaited_ = wanted_;
+  predictor_.wait_for(wanted_, kWait);
 }
 
 const ContactLog* Lab::contact_log() {

@@ -116,9 +116,9 @@ class Lab {
   // changed in this frame and its paths are not out yet), so that they never blink off while the aim is dragged.
   std::optional<Prediction> predicted_paths() const { return predictor_.latest(); }
   long prediction_request() const { return wanted_; }  // the current scene's (Prediction::generation)
-  // Before a frame is drawn: a new aim's prediction gets a few milliseconds to finish, so that a shot that takes no
-  // longer to predict (a cut) shows its own paths in the frame that changed the aim.
-  void await_prediction() const;
+  // Before a frame is drawn: a new aim's prediction gets a few milliseconds to finish, once, so that a shot that takes
+  // no longer to predict (a cut) shows its own paths in the frame that changed the aim.
+  void await_prediction();
   std::optional<double> prediction_seconds() const { return predictor_.wall_seconds(wanted_); }  // its compute time
   bool predicting() const { return predictor_.busy(); }
   // The contacts of the current shot with their force histories, traced on a worker thread; the latest complete
@@ -155,6 +155,7 @@ class Lab {
 
   Predictor predictor_;
   long wanted_ = -1;
+  long awaited_ = -1;  // the last request a frame waited for (await_prediction)
   Frame frame_;
   double exact_time_ = -1;  // the paused frame's time, so that the exact state is not worked out every frame
   size_t events_seen_ = 0;  // of the shot's events, those playback has passed (pause_on_events)
