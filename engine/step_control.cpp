@@ -150,9 +150,9 @@ bool Island::go_on_to_touch(Trials& tr, double& dt) {
 }
 
 // The next step's trial length (dt: what the stepper suggests after the accepted trial). After a rejection, do not grow
-// the step at once (a stability-limited stiff switch would be rejected again), but a step then cut at a change goes
-// on at the length that passed, not at the cut's (often a few ns: the next steps would only grow it back); a step cut
-// at a change passed the control at its first length and may try it again; after an onset the onset's own length
+// the step at once (a stability-limited stiff switch would be rejected again), but a step then cut at a change within
+// 1 % of the length that passed (a few ns on: the next steps would only grow it back) goes on at that length; a step
+// cut at a change passed the control at its first length and may try it again; after an onset the onset's own length
 // caps it, and the step after one that started at an onset may be onset_factor^(1/5) longer
 // (docs/model.md#step-control).
 void Island::size_next_step(double dt, double wanted, bool capped, bool from_onset, const Trials& tr, bool rejected) {
