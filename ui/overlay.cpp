@@ -1,10 +1,6 @@
 // The 2D overlay over the 3D view (ImGui's background draw list): trails, predicted paths, the aim line with its
 // ghost ball and cut angle, kept shots and the A trails of the A/B comparison, the position target, ball labels, the
 // centre of mass, the ball-in-hand zone, and velocity, spin and contact-force vectors.
-#include <boost/geometry/algorithms/simplify.hpp>
-#include <boost/geometry/geometries/register/linestring.hpp>
-#include <boost/geometry/geometries/register/point.hpp>
-#include <boost/geometry/strategies/strategies.hpp>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -12,10 +8,6 @@
 #include "ui/aim.hpp"
 #include "ui/panels.hpp"
 #include "ui/widgets.hpp"
-
-// A run of screen points as a Boost.Geometry line, for its Douglas-Peucker simplification (stroke).
-BOOST_GEOMETRY_REGISTER_POINT_2D(ImVec2, float, boost::geometry::cs::cartesian, x, y)
-BOOST_GEOMETRY_REGISTER_LINESTRING(std::vector<ImVec2>)
 
 namespace shotlab {
 
@@ -55,9 +47,9 @@ void arrow(ImDrawList* d, const Viewport& vp, const Vec3& from, const Vec3& to, 
 
 // A trail's points lie 2 mm apart on the table, under a pixel at most zooms: drawn, a point comes this many pixels
 // after the last one kept (more for dashes, so that they show). Thousands of sub-pixel segments a frame held a break's
-// frame rate far under the display's on a software renderer. A solid run is then drawn with the fewest of its points
-// that keep it within kTrailTolerance pixels (a ball's path is straight between hits but where spin bends it).
-constexpr float kTrailPixels = 2.0f, kDashPixels = 6.0f, kTrailTolerance = 0.3f;
+// frame rate far under the display's on a software renderer. A solid run is then drawn simplified (a ball's path is
+// straight between hits but where spin bends it).
+constexpr float kTrailPixels = 2.0f, kDashPixels = 6.0f;
 
 // Appends p to a run of screen points, replacing the run's last point while it is within `spacing` of the one before:
 // the run always ends at the latest point.
@@ -74,14 +66,8 @@ void extend(std::vector<ImVec2>& run, ImVec2 p, float spacing) {
 
 void stroke(ImDrawList* d, const std::vector<ImVec2>& run, ImU32 colour, float width, bool dashed) {
   if (run.size() < 2) return;
-  if (dashed) {
-    for (size_t k = 0; k + 1 < run.size(); k += 2) d->AddLine(run[k], run[k + 1], colour, width);
-    return;
-  }
-  static thread_local std::vector<ImVec2> kept;
-  kept.clear();
-  boost::geometry::simplify(run, kept, kTrailTolerance);
-  d->AddPolyline(kept.data(), static_cast<int>(kept.size()), colour, ImDrawFlags_None, width);
+  if (!dashed) return simplified_polyline(d, run, colour, width);
+  for (size_t k = 0; k + 1 < run.size(); k += 2) d->AddLine(run[k], run[k + 1], colour, width);
 }
 
 // Trails: by motion colour (the segment into a point takes that point's motion), or in one colour (kept shots, ghost,

@@ -115,7 +115,7 @@ PlotAction plot(const char* id, const PlotSpec& spec, const std::vector<PlotSeri
     std::vector<ImVec2> pts;
     for (size_t k = 0; k < s.time.size(); ++k)
       if (std::isfinite(s.value[k])) pts.push_back({px(s.time[k]), py(std::clamp(s.value[k], v.lo, v.hi))});
-    if (pts.size() > 1) d->AddPolyline(pts.data(), static_cast<int>(pts.size()), s.colour, 0, em(1.6f));
+    simplified_polyline(d, pts, s.colour, em(1.6f));
   }
   if (spec.cursor >= t0 && spec.cursor <= t1) d->AddLine({px(spec.cursor), a.y}, {px(spec.cursor), b.y}, IM_COL32(255, 255, 255, 200), 1.5f);
   d->PopClipRect();

@@ -1,9 +1,17 @@
 #include "ui/widgets.hpp"
 
 #include <algorithm>
+#include <boost/geometry/algorithms/simplify.hpp>
+#include <boost/geometry/geometries/register/linestring.hpp>
+#include <boost/geometry/geometries/register/point.hpp>
+#include <boost/geometry/strategies/strategies.hpp>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+
+// Screen points as a Boost.Geometry line, for its Douglas-Peucker simplification (simplified_polyline).
+BOOST_GEOMETRY_REGISTER_POINT_2D(ImVec2, float, boost::geometry::cs::cartesian, x, y)
+BOOST_GEOMETRY_REGISTER_LINESTRING(std::vector<ImVec2>)
 
 namespace shotlab {
 
@@ -15,6 +23,15 @@ std::map<std::string, double> current_readouts, last_readouts;
 }  // namespace
 
 float em(float pixels) { return pixels * ImGui::GetFontSize() / kBaseFont; }
+
+void simplified_polyline(ImDrawList* d, const std::vector<ImVec2>& points, ImU32 colour, float width) {
+  constexpr float kTolerance = 0.3f;  // px
+  if (points.size() < 2) return;
+  static thread_local std::vector<ImVec2> kept;
+  kept.clear();
+  boost::geometry::simplify(points, kept, kTolerance);
+  d->AddPolyline(kept.data(), static_cast<int>(kept.size()), colour, ImDrawFlags_None, width);
+}
 
 Fields::Fields(std::initializer_list<const char*> labels) {
   for (const char* l : labels) column_ = std::max(column_, ImGui::CalcTextSize(l).x);

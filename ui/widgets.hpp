@@ -1,5 +1,5 @@
 // Small ImGui building blocks shared by the panels: labelled fields that never clip their labels, sliders over
-// doubles, the cue-tip widget, horizontal bar charts, and `mark`, which names a widget's screen rectangle for the
+// doubles, the cue-tip widget, horizontal bar charts, simplified polylines, and `mark`, which names a widget's screen rectangle for the
 // state dump (the real-input GUI test clicks what the dump says is where).
 #pragma once
 #include <imgui.h>
@@ -59,6 +59,10 @@ const std::map<std::string, Rect>& marks();
 // Records a value a panel shows (a readout) under `name` for the state dump, as marks() do for rectangles.
 void readout(const std::string& name, double value);
 const std::map<std::string, double>& readouts();
+
+// Strokes a polyline of screen points with the fewest of them that keep it within 0.3 px (Douglas-Peucker): a software
+// renderer pays for every anti-aliased segment, and trails and plots hold several points a pixel.
+void simplified_polyline(ImDrawList* d, const std::vector<ImVec2>& points, ImU32 colour, float width);
 
 // Scales a size given in unscaled pixels by the current font size (ui scale and presentation mode).
 float em(float pixels);
