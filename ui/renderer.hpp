@@ -44,9 +44,15 @@ class Renderer {
   void draw_table(const TableSpec& table, const Model& model);
   void draw_colliders(const Model& model);
   void build_digits();  // the numerals' glyph atlas (none when the font is missing)
+  double screen_radius(const glm::dvec3& p, double r) const;  // pixels a sphere's radius spans in the viewport
 
   unsigned program_ = 0;
-  Mesh sphere_, cube_, cylinder_;
+  // A ball small on screen takes the coarse sphere (draw_ball): its outline stays within a fifth of a pixel of the
+  // circle, and a software renderer pays for every triangle.
+  Mesh sphere_, coarse_sphere_, cube_, cylinder_;
+  glm::dmat4 view_proj_{1.0};
+  glm::dvec3 eye_{0.0};
+  double half_width_ = 1, half_height_ = 1;  // px: the viewport's
   unsigned digits_ = 0;  // texture
   int number_ = 0;       // of the ball being drawn
   int loc_view_proj_, loc_model_, loc_normal_, loc_color_, loc_alpha_, loc_pattern_, loc_eye_, loc_number_;
