@@ -275,8 +275,7 @@ int run_gui(const GuiOptions& options) {
         draw_overlay(lab, viewport, ImGui::GetBackgroundDrawList());
 
         if (!lab.strobe_request.empty()) write_strobe(lab, renderer, viewport, h);
-        renderer.begin(viewport.view_proj, viewport.eye, static_cast<int>(viewport.x0),
-                       static_cast<int>(viewport.width), h);
+        renderer.begin(viewport);
         renderer.draw_scene(lab.scene, lab.shot ? lab.shot->sim().model() : lab.table_model);
         draw_balls(renderer, lab, lab.frame(), 1.0f);
         ImGui::Render();

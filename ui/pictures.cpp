@@ -61,7 +61,7 @@ void write_strobe(Lab& lab, Renderer& renderer, const Viewport& vp, int window_h
   lab.strobe_request.clear();
   if (!lab.shot) return lab.say(MessageKind::Refused, "shoot first: a strobe picture shows a shot");
   Shot& shot = *lab.shot;
-  renderer.begin(vp.view_proj, vp.eye, static_cast<int>(vp.x0), static_cast<int>(vp.width), window_h);
+  renderer.begin(vp);
   renderer.draw_scene(lab.scene, shot.sim().model());
   const double end = shot.sim().time();
   for (int k = 0; k < kStrobeExposures; ++k) {

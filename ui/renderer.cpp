@@ -203,12 +203,9 @@ Renderer::Mesh Renderer::upload(const std::vector<float>& data) {
   return m;
 }
 
-void Renderer::begin(const glm::dmat4& view_proj, const glm::dvec3& eye, int x0, int width, int height) {
-  view_proj_ = view_proj;
-  eye_ = eye;
-  half_width_ = 0.5 * width;
-  half_height_ = 0.5 * height;
-  glViewport(x0, 0, width, height);
+void Renderer::begin(const Viewport& viewport) {
+  viewport_ = viewport;
+  glViewport(static_cast<int>(viewport.x0), 0, static_cast<int>(viewport.width), static_cast<int>(viewport.height));
   glClearColor(0.13f, 0.14f, 0.16f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
@@ -216,8 +213,8 @@ void Renderer::begin(const glm::dmat4& view_proj, const glm::dvec3& eye, int x0,
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);  // on only for see-through draws (draw): blending costs a
                                                       // software renderer a read of every pixel it shades
   glUseProgram(program_);
-  glUniformMatrix4fv(loc_view_proj_, 1, GL_FALSE, glm::value_ptr(glm::mat4(view_proj)));
-  glUniform3fv(loc_eye_, 1, glm::value_ptr(glm::vec3(eye)));
+  glUniformMatrix4fv(loc_view_proj_, 1, GL_FALSE, glm::value_ptr(glm::mat4(viewport.view_proj)));
+  glUniform3fv(loc_eye_, 1, glm::value_ptr(glm::vec3(viewport.eye)));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, digits_);
   glUniform1i(glGetUniformLocation(program_, "u_digits"), 0);
@@ -239,22 +236,13 @@ void Renderer::draw(const Mesh& mesh, const glm::dmat4& model, const glm::vec3& 
   glDisable(GL_BLEND);
 }
 
-// The offset of the radius across the line of sight, both ends projected; a point behind the eye counts as large.
-double Renderer::screen_radius(const glm::dvec3& p, double r) const {
-  const glm::dvec3 sight = p - eye_;
-  glm::dvec3 across = glm::cross(sight, glm::dvec3{0, 1, 0});
-  if (glm::length(across) < 1e-9 * glm::length(sight)) across = glm::cross(sight, glm::dvec3{1, 0, 0});
-  const glm::dvec4 a = view_proj_ * glm::dvec4(p, 1.0), b = view_proj_ * glm::dvec4(p + r * glm::normalize(across), 1.0);
-  if (a.w <= 0 || b.w <= 0) return 1e9;
-  return glm::length(glm::dvec2{(a.x / a.w - b.x / b.w) * half_width_, (a.y / a.w - b.y / b.w) * half_height_});
-}
-
 void Renderer::draw_ball(const glm::dvec3& p, const glm::dquat& q, double r, const BallLook& look, float alpha) {
   constexpr double kCoarseUpTo = 12;  // px of radius: a 20-gon's outline is then within 0.15 px of the circle
   const glm::dmat4 m = glm::translate(glm::dmat4(1.0), p) * glm::mat4_cast(q) * glm::scale(glm::dmat4(1.0), glm::dvec3(r));
   if (alpha < 1) glDepthMask(GL_FALSE);  // a see-through ghost must not hide what is behind it
   number_ = look.number;
-  draw(screen_radius(p, r) <= kCoarseUpTo ? coarse_sphere_ : sphere_, m, look.color, look.pattern, alpha);
+  const double on_screen = viewport_->screen_radius(p, r);  // 0 when p is behind the eye: nothing shows
+  draw(on_screen <= kCoarseUpTo ? coarse_sphere_ : sphere_, m, look.color, look.pattern, alpha);
   number_ = 0;
   glDepthMask(GL_TRUE);
 }

@@ -4,9 +4,11 @@
 #pragma once
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <optional>
 #include <string>
 
 #include "shotlab/scene.hpp"
+#include "ui/camera.hpp"
 
 namespace shotlab {
 
@@ -27,8 +29,8 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Clears the window and draws into the viewport from x0 (pixels) of the given size.
-  void begin(const glm::dmat4& view_proj, const glm::dvec3& eye, int x0, int width, int height);
+  // Clears the window and draws into the viewport (its height is the window's).
+  void begin(const Viewport& viewport);
   // `model` is the prepared model (table colliders added) of `scene`.
   void draw_scene(const Scene& scene, const Model& model);
   void draw_ball(const glm::dvec3& p, const glm::dquat& orientation, double radius, const BallLook& look,
@@ -44,15 +46,12 @@ class Renderer {
   void draw_table(const TableSpec& table, const Model& model);
   void draw_colliders(const Model& model);
   void build_digits();  // the numerals' glyph atlas (none when the font is missing)
-  double screen_radius(const glm::dvec3& p, double r) const;  // pixels a sphere's radius spans in the viewport
 
   unsigned program_ = 0;
   // A ball small on screen takes the coarse sphere (draw_ball): its outline stays within a fifth of a pixel of the
   // circle, and a software renderer pays for every triangle.
   Mesh sphere_, coarse_sphere_, cube_, cylinder_;
-  glm::dmat4 view_proj_{1.0};
-  glm::dvec3 eye_{0.0};
-  double half_width_ = 1, half_height_ = 1;  // px: the viewport's
+  std::optional<Viewport> viewport_;  // of the frame being drawn (begin)
   unsigned digits_ = 0;  // texture
   int number_ = 0;       // of the ball being drawn
   int loc_view_proj_, loc_model_, loc_normal_, loc_color_, loc_alpha_, loc_pattern_, loc_eye_, loc_number_;
