@@ -116,11 +116,12 @@ Prediction Predictor::predict(const Scene& scene, double limit, long generation)
         break;
       }
       sample();
-      const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const auto now = std::chrono::steady_clock::now();
+      const double spent = std::chrono::duration<double>(now - start).count();
       if (waiting_ > 0 || spent - shown > kShowEvery) {
         shown = spent;
         out.simulated = sim.time();
-        out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+        out.wall_seconds = std::chrono::duration<double>(now - began).count();
         publish(out);
       }
       if (spent > kWallLimit) {

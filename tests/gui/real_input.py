@@ -16,6 +16,7 @@ import struct
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 
 PRESS = 0.08  # s a key or button is held: a normal press, not a synthetic zero-length one
@@ -139,7 +140,6 @@ class App:
     def sweep(self, x0, y0, x1, y1, samples):
         """Holds the button and moves the pointer to and fro between two points every 10 ms, as a hand sweeps the aim,
         taking `samples` state dumps meanwhile; returns them."""
-        import threading
         self.hover(x0, y0)
         self.xdotool("mousedown", "1")
         time.sleep(PRESS)
