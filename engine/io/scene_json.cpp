@@ -265,9 +265,12 @@ std::string read_scene_file(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a folder, not a scene file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the file");
-  std::string text(kMaxSceneBytes + 1, '\0');  // a scene is kilobytes: /dev/zero or a wrong file must not fill memory
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<size_t>(in.gcount()));
+  // Read in chunks up to one byte past the limit: /dev/zero or a wrong file must not fill memory, and a scene of a few
+  // kilobytes must not cost a buffer of the limit's size.
+  std::string text;
+  char chunk[1 << 16];
+  while (text.size() <= kMaxSceneBytes && in.read(chunk, sizeof chunk).gcount() > 0)
+    text.append(chunk, static_cast<size_t>(in.gcount()));
   if (text.size() > kMaxSceneBytes)
     throw InputError(path + ": larger than " + std::to_string(kMaxSceneBytes >> 20) + " MiB, not a scene file");
   return text;
