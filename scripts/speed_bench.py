@@ -35,10 +35,10 @@ def measure(build, core, runs, plain=False):
     return out
 
 
-def census(build):
-    """[(scene, kind, {steps, rhs, redone, rejected, limited})] of one untimed run of each scene."""
+def census(build, core):
+    """[(scene, kind, {steps, rhs, redone, rejected, limited, wall_us})]: one run of each scene counted, ten timed."""
     tool = os.path.join(build, "tests", "benchmarks", "shot_speed")
-    text = subprocess.run([tool, "--rounds", "1", "--census"] + [os.path.join(ROOT, "presets", s) for s in SCENES],
+    text = subprocess.run(["taskset", "-c", str(core), tool, "--rounds", "1", "--census"] + [os.path.join(ROOT, "presets", s) for s in SCENES],
                           check=True, capture_output=True, text=True).stdout
     out = []
     for line in text.splitlines():
@@ -47,7 +47,8 @@ def census(build):
         scene, rest = line.split(" census ", 1)
         kind, counts = rest.split(" steps ")
         f = ("steps " + counts).split()
-        out.append((os.path.basename(scene), kind, {k: int(n) for k, n in zip(f[0::2], f[1::2])}))
+        out.append((os.path.basename(scene), kind, {k: float(n) if k == "wall_us" else int(n)
+                                                    for k, n in zip(f[0::2], f[1::2])}))
     return out
 
 
@@ -93,11 +94,16 @@ def main():
     lines += ["", "Where this build's steps go (one run of each scene; a lone ball in closed form rolls, slides or flies "
               "at one right-hand side a step). What shortens them: steps that ended at a contact or friction change "
               "(redone), trials the error control rejected, and steps that ended with a friction term inside a band "
-              "widened by the rate limit, a linear damper at 2e5 1/s there (docs/model.md#rate-limit):", "",
-              "| scene | island | steps | right-hand sides | ended at a change | rejected trials | in a rate-limited band |",
-              "|---|---|---|---|---|---|---|"]
-    lines += [f"| {s} | {k} | {c['steps']} | {c['rhs']} | {c['redone']} | {c['rejected']} | {c['limited']} |"
-              for s, k, c in census(a.build)]
+              "widened by the rate limit, a linear damper at 2e5 1/s there (docs/model.md#rate-limit). The wall time "
+              "of a kind (mean of ten runs on the same core) is what passed from one step's end to the end of its step: "
+              "the step, and the regroups and frame ends before it:", "",
+              "| scene | island | steps | right-hand sides | ended at a change | rejected trials | in a rate-limited band "
+              "| wall ms (share) |",
+              "|---|---|---|---|---|---|---|---|"]
+    rows = census(a.build, a.core)
+    total = {s: sum(c["wall_us"] for t, _, c in rows if t == s) for s in SCENES}
+    lines += [f"| {s} | {k} | {c['steps']} | {c['rhs']} | {c['redone']} | {c['rejected']} | {c['limited']} | "
+              f"{c['wall_us'] / 1e3:.3f} ({100 * c['wall_us'] / total[s]:.0f} %) |" for s, k, c in rows]
     publish(lines, a.out)
 
 

@@ -3,7 +3,8 @@
 // Rounds alternate the scenes; each scene's median and fastest wall time, its steps, rejected steps and right-hand
 // sides (the same in every round; redone: accepted trials done again to end where a law changes), and a digest of the end state (to tell that two builds ran the same physics) are
 // printed, one line a scene. Run it pinned to one core (scripts/speed_bench.py does). With --census, one more run
-// of each scene counts its steps and right-hand sides by the kind of island that took them (untimed).
+// of each scene counts its steps and right-hand sides by the kind of island that took them, and ten more share out
+// the wall time between the kinds.
 //   shot_speed [--rounds N] [--plain] [--census] SCENE...
 #include <algorithm>
 #include <chrono>
@@ -51,41 +52,54 @@ bool run_to_rest(const shotlab::Prepared& prepared, Run& out) {
 // "lone, closed form" (one right-hand side a step: rolling, sliding, flying) or "lone, integrated". For each kind also
 // what shortens its steps: how many ended at a contact or friction change (redone), the trials the error control
 // rejected, and how many steps ended with a friction term inside a band widened by the rate limit (there the term is a
-// linear damper at the limit's rate, docs/model.md#rate-limit).
+// linear damper at the limit's rate, docs/model.md#rate-limit). The wall time a kind takes is what passed between the
+// end of the observer's last call and the start of this one: the step, with the regroups and the frame ends before it
+// (the observer's own work left out), averaged over kCensusTimed runs.
 struct Census {
   long steps = 0, rhs = 0, redone = 0, rejected = 0, limited = 0;
+  double wall_ms = 0;
 };
+constexpr int kCensusTimed = 10;
 
 void census(const std::string& file, const shotlab::Prepared& prepared) {
-  shotlab::Prepared p = prepared;
-  shotlab::Simulation sim(std::move(p.model), std::move(p.state));
   std::map<std::string, Census> count;
-  std::map<const shotlab::Stats*, shotlab::Stats> seen;  // each island's counts at its last step
   constexpr uint8_t kLimited = shotlab::kSlipLimited | shotlab::kRollLimited | shotlab::kSpinLimited;
-  sim.set_observer([&](const shotlab::StepView& v) {
-    shotlab::Stats& last = seen[&v.stats];
-    if (last.rhs_evaluations > v.stats.rhs_evaluations) last = shotlab::Stats{};  // a new island in an old one's place
-    const long rhs = v.stats.rhs_evaluations - last.rhs_evaluations;
-    const std::string kind = v.balls.size() > 1 ? std::to_string(v.balls.size()) + " balls"
-                             : rhs <= 1       ? "lone, closed form"
-                                              : "lone, integrated";
-    Census& c = count[kind];
-    c.steps += 1;
-    c.rhs += rhs;
-    c.redone += v.stats.redone_steps > last.redone_steps;
-    c.rejected += v.stats.rejected_steps - last.rejected_steps;
-    for (const shotlab::Contact& contact : shotlab::contacts(v.model, v.state))
-      if (contact.force.bands & kLimited) {
-        ++c.limited;
-        break;
+  for (int run = 0; run <= kCensusTimed; ++run) {  // run 0 counts, the others time
+    shotlab::Prepared p = prepared;
+    shotlab::Simulation sim(std::move(p.model), std::move(p.state));
+    std::map<const shotlab::Stats*, shotlab::Stats> seen;  // each island's counts at its last step
+    auto since = Clock::now();
+    sim.set_observer([&](const shotlab::StepView& v) {
+      const auto now = Clock::now();
+      shotlab::Stats& last = seen[&v.stats];
+      if (last.rhs_evaluations > v.stats.rhs_evaluations) last = shotlab::Stats{};  // a new island in an old one's place
+      const long rhs = v.stats.rhs_evaluations - last.rhs_evaluations;
+      const std::string kind = v.balls.size() > 1 ? std::to_string(v.balls.size()) + " balls"
+                               : rhs <= 1       ? "lone, closed form"
+                                                : "lone, integrated";
+      Census& c = count[kind];
+      if (run > 0) {
+        c.wall_ms += std::chrono::duration<double, std::milli>(now - since).count() / kCensusTimed;
+      } else {
+        c.steps += 1;
+        c.rhs += rhs;
+        c.redone += v.stats.redone_steps > last.redone_steps;
+        c.rejected += v.stats.rejected_steps - last.rejected_steps;
+        for (const shotlab::Contact& contact : shotlab::contacts(v.model, v.state))
+          if (contact.force.bands & kLimited) {
+            ++c.limited;
+            break;
+          }
       }
-    last = v.stats;
-  });
-  for (int frame = 0; frame < 60 * 600 && !sim.at_rest(); ++frame)
-    if (sim.advance(1.0 / 60) != shotlab::Status::Ok) return;
+      last = v.stats;
+      since = Clock::now();
+    });
+    for (int frame = 0; frame < 60 * 600 && !sim.at_rest(); ++frame)
+      if (sim.advance(1.0 / 60) != shotlab::Status::Ok) return;
+  }
   for (const auto& [kind, c] : count)
-    std::printf("%s census %s steps %ld rhs %ld redone %ld rejected %ld limited %ld\n", file.c_str(), kind.c_str(),
-                c.steps, c.rhs, c.redone, c.rejected, c.limited);
+    std::printf("%s census %s steps %ld rhs %ld redone %ld rejected %ld limited %ld wall_us %.0f\n", file.c_str(),
+                kind.c_str(), c.steps, c.rhs, c.redone, c.rejected, c.limited, 1e3 * c.wall_ms);
 }
 
 }  // namespace
