@@ -274,6 +274,10 @@ int run_gui(const GuiOptions& options) {
         lab.await_prediction();
         draw_overlay(lab, viewport, ImGui::GetBackgroundDrawList());
 
+        // The side panels' background (they draw none), then the view clears its own part.
+        const ImVec4 panel = panel_background();
+        glClearColor(panel.x, panel.y, panel.z, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
         if (!lab.strobe_request.empty()) write_strobe(lab, renderer, viewport, h);
         renderer.begin(viewport);
         renderer.draw_scene(lab.scene, lab.shot ? lab.shot->sim().model() : lab.table_model);

@@ -189,8 +189,7 @@ void balls_section(Lab& lab) {
 
 bool left_panel(Lab& lab, Camera& camera, const Rect& where) {
   static bool shown = true;
-  place_side_panel(where, lab.settings.panels.left_open, shown);
-  if (ImGui::Begin("Shot lab", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize)) {
+  if (begin_side_panel("Shot lab", where, lab.settings.panels.left_open, shown)) {
     ImGui::TextWrapped("%s", lab.scene.name.c_str());
     if (!lab.scene.description.empty() && ImGui::CollapsingHeader("What to look for", ImGuiTreeNodeFlags_DefaultOpen))
       ImGui::TextWrapped("%s", lab.scene.description.c_str());

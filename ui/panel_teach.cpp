@@ -200,10 +200,9 @@ void teach_panel(Lab& lab) {
 bool inspector_panel(Lab& lab, Tuning& tuning, const Rect& where) {
   ViewFlags& v = lab.settings.view;
   static bool shown = true;
-  place_side_panel(where, lab.settings.panels.right_open, shown);
   static bool first = true;  // the saved tab is selected once; after that the tab bar follows the clicks
   if (first) v.tab_request = v.tab, first = false;
-  if (ImGui::Begin("Inspector", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize)) {
+  if (begin_side_panel("Inspector", where, lab.settings.panels.right_open, shown)) {
     if (ImGui::BeginTabBar("tabs")) {
       const char* names[2] = {"Teaching", "Tuning"};
       for (int i = 0; i < 2; ++i) {

@@ -205,9 +205,14 @@ Renderer::Mesh Renderer::upload(const std::vector<float>& data) {
 
 void Renderer::begin(const Viewport& viewport) {
   viewport_ = viewport;
-  glViewport(static_cast<int>(viewport.x0), 0, static_cast<int>(viewport.width), static_cast<int>(viewport.height));
+  const int x = static_cast<int>(viewport.x0), w = static_cast<int>(viewport.width), h = static_cast<int>(viewport.height);
+  glViewport(x, 0, w, h);
+  // The view's part of the window only: the side panels beside it have the window's own background (gui.cpp).
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x, 0, w, h);
   glClearColor(0.13f, 0.14f, 0.16f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);  // meshes wind counter-clockwise seen from outside: faces turned away go unshaded
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);  // on only for see-through draws (draw): blending costs a

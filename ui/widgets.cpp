@@ -82,10 +82,22 @@ bool tip_widget(CueStrike& cue, float size) {
   return true;
 }
 
-void place_side_panel(const Rect& where, bool want_open, bool shown) {
+bool begin_side_panel(const char* name, const Rect& where, bool want_open, bool shown) {
   ImGui::SetNextWindowPos(ImVec2(where.x, where.y), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(where.w, where.h), ImGuiCond_Always);
   if (want_open != shown) ImGui::SetNextWindowCollapsed(!want_open, ImGuiCond_Always);
+  // No background of its own: the window is cleared to it (panel_background), which costs a software renderer far
+  // less than a blended rectangle over a third of the window.
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0, 0, 0, 0));
+  const bool open = ImGui::Begin(name, nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+  ImGui::PopStyleColor();
+  return open;
+}
+
+ImVec4 panel_background() {
+  ImVec4 c = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+  c.w = 1;
+  return c;
 }
 
 bool end_side_panel(const std::string& name) {

@@ -38,9 +38,11 @@ struct Bar {
   double value;
   ImU32 colour;
 };
-// Before Begin() of a side panel: puts it at `where`, and collapses or opens it when `want_open` differs from how
-// it was last shown (`shown`, updated by end_side_panel): a key (F2, F3) toggles it, a click on its arrow too.
-void place_side_panel(const Rect& where, bool want_open, bool shown);
+// ImGui::Begin() of a side panel, returning what Begin returns: puts it at `where`, and collapses or opens it when
+// `want_open` differs from how it was last shown (`shown`, updated by end_side_panel): a key (F2, F3) toggles it, a
+// click on its arrow too. The panel draws no background: the frame clears the window to panel_background() first.
+bool begin_side_panel(const char* name, const Rect& where, bool want_open, bool shown);
+ImVec4 panel_background();  // the style's window background, opaque
 // Before End(): records the window's rectangle under `name` and returns whether it is open.
 bool end_side_panel(const std::string& name);
 
