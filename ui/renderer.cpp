@@ -261,8 +261,6 @@ void Renderer::draw_table(const TableSpec& t, const Model& model) {
   const glm::vec3 cloth{0.05f, 0.42f, 0.22f}, rubber{0.04f, 0.34f, 0.17f}, wood{0.36f, 0.2f, 0.09f};
   const double hx = t.length / 2, hz = t.width / 2, rw = t.rail_width;
   const double rail_in = 0.05, rail_top = t.nose_height + t.cushion_radius + 0.004;
-  // Cloth over the whole bed collider, which reaches rail_width beyond the noses.
-  draw(cube_, slab({-hx - rw, 0, 0}, {hx + rw, 0, 0}, {0, 0, 1}, -hz - rw, hz + rw, -0.02, 0.0), cloth, 0, 1);
   // Cushion rubber from each cushion collider's nose back to the rail.
   for (const Collider& c : model.colliders) {
     const auto* cap = std::get_if<Capsule>(&c.shape);
@@ -297,6 +295,9 @@ void Renderer::draw_table(const TableSpec& t, const Model& model) {
       draw(cylinder_, glm::translate(glm::dmat4(1.0), {pk.center.x, y - 0.0005, pk.center.z}) *
                           glm::scale(glm::dmat4(1.0), {pk.radius, 0.001, pk.radius}),
            {0.02f, 0.02f, 0.02f}, 0, 1);
+  // Cloth over the whole bed collider, which reaches rail_width beyond the noses; last, so that the depth test spares
+  // shading it under the rails, cushions and pockets drawn over it.
+  draw(cube_, slab({-hx - rw, 0, 0}, {hx + rw, 0, 0}, {0, 0, 1}, -hz - rw, hz + rw, -0.02, 0.0), cloth, 0, 1);
 }
 
 void Renderer::draw_colliders(const Model& model) {
