@@ -28,11 +28,14 @@ std::string read_asset(const std::string& root, const std::string& name) {
   return s.str();
 }
 
-unsigned compile(GLenum kind, const std::string& root, const std::string& name) {
+// `define` (a macro name or nullptr) is defined right after the source's first line, its #version.
+unsigned compile(GLenum kind, const std::string& root, const std::string& name, const char* define = nullptr) {
   const std::string text = read_asset(root, name);
-  const char* src = text.c_str();
+  const size_t eol = text.find('\n') == std::string::npos ? text.size() : text.find('\n') + 1;
+  const std::string version = text.substr(0, eol), defined = define ? "#define " + std::string(define) + "\n" : "";
+  const char* src[3] = {version.c_str(), defined.c_str(), text.c_str() + eol};
   const unsigned shader = glCreateShader(kind);
-  glShaderSource(shader, 1, &src, nullptr);
+  glShaderSource(shader, 3, src, nullptr);
   glCompileShader(shader);
   int ok = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -123,26 +126,34 @@ BallLook ball_look(const std::string& id) {
   return {{0.3f + (h % 7) * 0.1f, 0.2f + (h / 7 % 7) * 0.1f, 0.3f + (h / 49 % 7) * 0.1f}, 1};
 }
 
-Renderer::Renderer(const std::string& data_root) {
-  program_ = glCreateProgram();
+Renderer::Program Renderer::link(const std::string& data_root, const char* define) {
+  Program p;
+  p.id = glCreateProgram();
   const unsigned vs = compile(GL_VERTEX_SHADER, data_root, "shaders/mesh.vert");
-  const unsigned fs = compile(GL_FRAGMENT_SHADER, data_root, "shaders/mesh.frag");
-  glAttachShader(program_, vs);
-  glAttachShader(program_, fs);
-  glLinkProgram(program_);
+  const unsigned fs = compile(GL_FRAGMENT_SHADER, data_root, "shaders/mesh.frag", define);
+  glAttachShader(p.id, vs);
+  glAttachShader(p.id, fs);
+  glLinkProgram(p.id);
   glDeleteShader(vs);
   glDeleteShader(fs);
   int ok = 0;
-  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+  glGetProgramiv(p.id, GL_LINK_STATUS, &ok);
   if (!ok) throw std::runtime_error("mesh shader program does not link");
-  loc_view_proj_ = glGetUniformLocation(program_, "u_view_proj");
-  loc_model_ = glGetUniformLocation(program_, "u_model");
-  loc_normal_ = glGetUniformLocation(program_, "u_normal_matrix");
-  loc_color_ = glGetUniformLocation(program_, "u_color");
-  loc_alpha_ = glGetUniformLocation(program_, "u_alpha");
-  loc_pattern_ = glGetUniformLocation(program_, "u_pattern");
-  loc_eye_ = glGetUniformLocation(program_, "u_eye");
-  loc_number_ = glGetUniformLocation(program_, "u_number");
+  // A uniform a variant does not use is -1, which glUniform* ignores.
+  p.view_proj = glGetUniformLocation(p.id, "u_view_proj");
+  p.model = glGetUniformLocation(p.id, "u_model");
+  p.normal = glGetUniformLocation(p.id, "u_normal_matrix");
+  p.color = glGetUniformLocation(p.id, "u_color");
+  p.alpha = glGetUniformLocation(p.id, "u_alpha");
+  p.pattern = glGetUniformLocation(p.id, "u_pattern");
+  p.eye = glGetUniformLocation(p.id, "u_eye");
+  p.number = glGetUniformLocation(p.id, "u_number");
+  p.digits = glGetUniformLocation(p.id, "u_digits");
+  return p;
+}
+
+Renderer::Renderer(const std::string& data_root)
+    : plain_(link(data_root, nullptr)), ball_(link(data_root, "BALL")) {
   build_digits();
   sphere_ = upload(sphere_mesh(40, 20));
   coarse_sphere_ = upload(sphere_mesh(20, 10));
@@ -156,7 +167,8 @@ Renderer::~Renderer() {
     glDeleteVertexArrays(1, &m->vao);
   }
   glDeleteTextures(1, &digits_);
-  glDeleteProgram(program_);
+  glDeleteProgram(plain_.id);
+  glDeleteProgram(ball_.id);
 }
 
 void Renderer::build_digits() {
@@ -217,23 +229,28 @@ void Renderer::begin(const Viewport& viewport) {
   glEnable(GL_CULL_FACE);  // meshes wind counter-clockwise seen from outside: faces turned away go unshaded
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);  // on only for see-through draws (draw): blending costs a
                                                       // software renderer a read of every pixel it shades
-  glUseProgram(program_);
-  glUniformMatrix4fv(loc_view_proj_, 1, GL_FALSE, glm::value_ptr(glm::mat4(viewport.view_proj)));
-  glUniform3fv(loc_eye_, 1, glm::value_ptr(glm::vec3(viewport.eye)));
+  for (const Program* p : {&ball_, &plain_}) {
+    glUseProgram(p->id);
+    glUniformMatrix4fv(p->view_proj, 1, GL_FALSE, glm::value_ptr(glm::mat4(viewport.view_proj)));
+    glUniform3fv(p->eye, 1, glm::value_ptr(glm::vec3(viewport.eye)));
+    glUniform1i(p->digits, 0);
+  }
+  current_ = &plain_;
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, digits_);
-  glUniform1i(glGetUniformLocation(program_, "u_digits"), 0);
 }
 
 void Renderer::draw(const Mesh& mesh, const glm::dmat4& model, const glm::vec3& color, int pattern, float alpha) {
   const glm::mat4 m(model);
   const glm::mat3 normal = glm::transpose(glm::inverse(glm::mat3(m)));
-  glUniformMatrix4fv(loc_model_, 1, GL_FALSE, glm::value_ptr(m));
-  glUniformMatrix3fv(loc_normal_, 1, GL_FALSE, glm::value_ptr(normal));
-  glUniform3fv(loc_color_, 1, glm::value_ptr(color));
-  glUniform1f(loc_alpha_, alpha);
-  glUniform1i(loc_pattern_, pattern);
-  glUniform1i(loc_number_, digits_ ? number_ : 0);
+  const Program& p = pattern == 0 ? plain_ : ball_;
+  if (current_ != &p) glUseProgram(p.id), current_ = &p;
+  glUniformMatrix4fv(p.model, 1, GL_FALSE, glm::value_ptr(m));
+  glUniformMatrix3fv(p.normal, 1, GL_FALSE, glm::value_ptr(normal));
+  glUniform3fv(p.color, 1, glm::value_ptr(color));
+  glUniform1f(p.alpha, alpha);
+  glUniform1i(p.pattern, pattern);
+  glUniform1i(p.number, digits_ ? number_ : 0);
   glFrontFace(glm::determinant(glm::mat3(m)) < 0 ? GL_CW : GL_CCW);  // a mirroring transform turns the winding
   glBindVertexArray(mesh.vao);
   if (alpha < 1) glEnable(GL_BLEND);

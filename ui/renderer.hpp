@@ -47,14 +47,20 @@ class Renderer {
   void draw_colliders(const Model& model);
   void build_digits();  // the numerals' glyph atlas (none when the font is missing)
 
-  unsigned program_ = 0;
+  // The mesh shader built twice: for plain surfaces (pattern 0: the table, colliders) and for balls (BALL defined).
+  struct Program {
+    unsigned id = 0;
+    int view_proj, model, normal, color, alpha, pattern, eye, number, digits;
+  };
+  static Program link(const std::string& data_root, const char* define);
+  Program plain_, ball_;
+  const Program* current_ = nullptr;  // in use (begin, draw)
   // A ball small on screen takes the coarse sphere (draw_ball): its outline stays within a fifth of a pixel of the
   // circle, and a software renderer pays for every triangle.
   Mesh sphere_, coarse_sphere_, cube_, cylinder_;
   std::optional<Viewport> viewport_;  // of the frame being drawn (begin)
   unsigned digits_ = 0;  // texture
   int number_ = 0;       // of the ball being drawn
-  int loc_view_proj_, loc_model_, loc_normal_, loc_color_, loc_alpha_, loc_pattern_, loc_eye_, loc_number_;
 };
 
 }  // namespace shotlab

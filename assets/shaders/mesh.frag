@@ -1,7 +1,9 @@
 #version 330 core
-// Lambert + a little specular. u_pattern: 0 plain; 1 solid ball (white number circles at the poles);
-// 2 striped ball (white with a coloured band); 3 cue ball (white with red dots on the six axes, so its spin shows).
-// u_number (1 to 15, 0: none) is printed in the number circles from u_digits, an atlas of the glyphs 0 to 9.
+// Lambert, and for balls (compiled with BALL defined) their pattern and a little specular. u_pattern: 1 solid ball
+// (white number circles at the poles); 2 striped ball (white with a coloured band); 3 cue ball (white with red dots
+// on the six axes, so its spin shows). u_number (1 to 15, 0: none) is printed in the number circles from u_digits, an
+// atlas of the glyphs 0 to 9. Plain surfaces take the program without BALL: a software renderer would otherwise pay
+// for the balls' branch on every pixel of the cloth.
 in vec3 v_normal;
 in vec3 v_object;
 in vec3 v_world;
@@ -13,6 +15,7 @@ uniform int u_number;
 uniform sampler2D u_digits;
 out vec4 frag_color;
 
+#ifdef BALL
 // Ink (0 to 1) of the number at p, in the number circle's own coordinates (its radius is 1).
 float number_ink(vec2 p) {
   const float h = 1.1, w = h * 32.0 / 48.0;  // glyph box, in circle radii (atlas cells are 32 x 48)
@@ -39,13 +42,19 @@ vec3 ball_color(vec3 n) {
   if (u_pattern == 2 && pole > 0.45) return white;
   return u_color;
 }
+#endif
 
 void main() {
   vec3 n = normalize(v_normal);
-  vec3 base = u_pattern == 0 ? u_color : ball_color(normalize(v_object));
   vec3 light = normalize(vec3(0.3, 1.0, 0.45));
-  vec3 view = normalize(u_eye - v_world);
   float diffuse = max(dot(n, light), 0.0);
-  float specular = u_pattern == 0 ? 0.0 : pow(max(dot(reflect(-light, n), view), 0.0), 40.0) * 0.5;
+#ifdef BALL
+  vec3 base = ball_color(normalize(v_object));
+  vec3 view = normalize(u_eye - v_world);
+  float specular = pow(max(dot(reflect(-light, n), view), 0.0), 40.0) * 0.5;
+#else
+  vec3 base = u_color;
+  float specular = 0.0;
+#endif
   frag_color = vec4(base * (0.35 + 0.7 * diffuse) + vec3(specular), u_alpha);
 }
