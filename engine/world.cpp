@@ -33,8 +33,8 @@ World::World(Model model, State initial)
   regroup(integ_.time, {}, std::move(awake));
 }
 
-double World::meeting_time(double t, const std::vector<int>& balls, double energy, const std::optional<FreePath>& path_a,
-                                Island& other, double until) {
+double World::meeting_time(double t, const std::vector<int>& balls, double energy,
+                           const std::function<const std::optional<FreePath>&()>& path_a, Island& other, double until) {
   other.state_at(t, scratch_);
   const State& flags = other.flags_at(t);
   double best = std::numeric_limits<double>::infinity();
@@ -52,12 +52,12 @@ double World::meeting_time(double t, const std::vector<int>& balls, double energ
   }
   // Two lone balls on free paths (regimes.hpp) may meet much later than their speed bounds say; worth a look only
   // where the speed bounds would set a deadline.
-  if (t + best < until && path_a && other.balls().size() == 1) {
+  if (t + best < until && other.balls().size() == 1 && path_a()) {
     const int a = balls[0], b = other.balls()[0];
     const auto path_b = other.free_path(t, kLoneHorizon);
     if (path_b) {
       const double reach = model_.balls[a].radius + model_.balls[b].radius + model_.options.contact_margin;
-      best = std::max(best, path_meeting_time(*path_a, *path_b, reach,
+      best = std::max(best, path_meeting_time(*path_a(), *path_b, reach,
                                               partition_.speed_bound(energy, a) + partition_.speed_bound(other.energy_bound(), b)));
     }
   }
@@ -78,7 +78,9 @@ Partition World::split_group(double t, std::vector<Island*>& group, std::vector<
                                   std::vector<double>& deadline) {
   auto in_group = [&](const Island* island) { return std::find(group.begin(), group.end(), island) != group.end(); };
   Partition p;
-  std::vector<std::optional<FreePath>> paths;  // of each new island that is a lone ball on a free path
+  // Of each new island that is a lone ball on a free path, worked out the first time a meeting time asks for it.
+  std::vector<std::optional<FreePath>> paths;
+  std::vector<uint8_t> path_known;
   for (size_t taken = 0;;) {
     // The group's balls at t (a member past t is rewound to t: its last step began at or before t).
     for (; taken < group.size(); ++taken) {
@@ -99,18 +101,21 @@ Partition World::split_group(double t, std::vector<Island*>& group, std::vector<
     // rewound to t and split with the group; the others only lower their deadlines.
     deadline.resize(p.islands.size());
     paths.assign(p.islands.size(), std::nullopt);
-    for (size_t n = 0; n < p.islands.size(); ++n) {
-      deadline[n] = t + p.horizon[n];
-      const std::vector<int>& balls = p.islands[n];
-      if (balls.size() == 1 && integ_.in_play[balls[0]] && islands_.size() > group.size())
-        paths[n] = free_path(model_, integ_, integ_.x.data(), balls[0], index_, kLoneHorizon);
-    }
+    path_known.assign(p.islands.size(), 0);
+    for (size_t n = 0; n < p.islands.size(); ++n) deadline[n] = t + p.horizon[n];
     bool grew = false;
     for (const auto& other : islands_) {
       if (in_group(other.get())) continue;
       double meet = std::numeric_limits<double>::infinity();
       for (size_t n = 0; n < p.islands.size(); ++n) {
-        const double m = meeting_time(t, p.islands[n], p.energy[n], paths[n], *other, std::max(deadline[n], other->deadline()));
+        auto path = [&, n]() -> const std::optional<FreePath>& {
+          const std::vector<int>& balls = p.islands[n];
+          if (!path_known[n] && balls.size() == 1 && integ_.in_play[balls[0]])
+            paths[n] = free_path(model_, integ_, integ_.x.data(), balls[0], index_, kLoneHorizon);
+          path_known[n] = 1;
+          return paths[n];
+        };
+        const double m = meeting_time(t, p.islands[n], p.energy[n], path, *other, std::max(deadline[n], other->deadline()));
         deadline[n] = std::min(deadline[n], m);
         meet = std::min(meet, m);
       }

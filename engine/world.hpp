@@ -60,10 +60,11 @@ class World {
   void replace_group(double t, const std::vector<Island*>& group, Partition& p, const std::vector<double>& deadline);
   bool islands_disjoint() const;
   // s: the earliest time at which `balls` (at time t in integ_, in an island of energy `energy`; path_a: their free
-  // path where they are a lone ball on one) could touch a ball of `other` (at time t on its dense output); a closer
+  // path where they are a lone ball on one, else nullopt) could touch a ball of `other` (at time t on its dense output); a closer
   // look only for a bound before `until` (s).
-  double meeting_time(double t, const std::vector<int>& balls, double energy, const std::optional<FreePath>& path_a,
-                      Island& other, double until);
+  // path_a is asked for only where it can matter (it may cost a look at the colliders).
+  double meeting_time(double t, const std::vector<int>& balls, double energy,
+                      const std::function<const std::optional<FreePath>&()>& path_a, Island& other, double until);
   void check_energy();
   void stop(Status why, std::string message);
 
