@@ -28,10 +28,10 @@ int ball_under(const Lab& lab, const Vec3& p) {
   return -1;
 }
 
-// The aim and speed keys: Left/Right 0.1 degree (shift 1, ctrl 0.01), Up/Down 0.25 m/s (shift 1, ctrl 0.02).
+// The aim and speed keys: Left/Right kAimStepDeg (shift 1 degree, ctrl 0.01), Up/Down 0.25 m/s (shift 1, ctrl 0.02).
 bool nudge(Lab& lab, const KeyPress& k) {
   const bool shift = k.mods & GLFW_MOD_SHIFT, ctrl = k.mods & GLFW_MOD_CONTROL;
-  const double deg = shift ? 1.0 : ctrl ? 0.01 : 0.1, mps = shift ? 1.0 : ctrl ? 0.02 : 0.25;
+  const double deg = shift ? 1.0 : ctrl ? 0.01 : kAimStepDeg, mps = shift ? 1.0 : ctrl ? 0.02 : 0.25;
   switch (k.key) {
     case GLFW_KEY_LEFT: lab.nudge_aim(deg); return true;
     case GLFW_KEY_RIGHT: lab.nudge_aim(-deg); return true;

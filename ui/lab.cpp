@@ -143,7 +143,15 @@ void Lab::scene_changed() {
     frame_ = Frame{0, p.state, std::vector<glm::dquat>(n, glm::dquat(1, 0, 0, 0)), {}, at_start.energy()};
     for (int i = 0; i < n; ++i) frame_.motion.push_back(at_start.motion(i));
   }
-  wanted_ = predictor_.request(scene, settings.safety_limit);
+  // The aims an aim key press away, the last key's direction first: predicted while the window idles, so that the
+  // press finds its paths finished.
+  std::vector<Scene> next;
+  if (scene.cue)
+    for (const double deg : {last_turn_deg_, -last_turn_deg_}) {
+      next.push_back(scene);
+      next.back().cue = turned(*scene.cue, deg);
+    }
+  wanted_ = predictor_.request(scene, settings.safety_limit, std::move(next));
 }
 
 void Lab::physics_changed() {

@@ -44,6 +44,9 @@ struct KeptShot {
   bool visible = true;
 };
 inline constexpr size_t kMaxKeptShots = 8;
+inline constexpr double kAimStepDeg = 0.1;  // the aim keys' plain step (shift 1 degree, ctrl 0.01)
+// The cue turned by `degrees` (positive: counter-clockwise seen from above), as the aim keys turn it.
+CueStrike turned(const CueStrike& cue, double degrees);
 
 class Lab {
  public:
@@ -155,6 +158,7 @@ class Lab {
 
   Predictor predictor_;
   long wanted_ = -1;
+  double last_turn_deg_ = kAimStepDeg;  // the last aim key's step: the guessed next aims repeat it first
   long awaited_ = -1;  // the last request a frame waited for (await_prediction)
   Frame frame_;
   double exact_time_ = -1;  // the paused frame's time, so that the exact state is not worked out every frame

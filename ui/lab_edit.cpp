@@ -71,11 +71,16 @@ void Lab::aim_for_pocket(int step) {
                              deg(aims[next].cut_deg * M_PI / 180) + " deg)");
 }
 
+CueStrike turned(const CueStrike& cue, double degrees) {
+  CueStrike out = cue;
+  out.aim = std::remainder(cue.aim + degrees * M_PI / 180, 2 * M_PI);
+  return out;
+}
+
 void Lab::nudge_aim(double degrees) {
   if (!scene.cue) return;
-  CueStrike cue = *scene.cue;
-  cue.aim = std::remainder(cue.aim + degrees * M_PI / 180, 2 * M_PI);
-  set_cue(cue, "aim");
+  if (std::abs(degrees) == kAimStepDeg) last_turn_deg_ = degrees;
+  set_cue(turned(*scene.cue, degrees), "aim");
 }
 
 void Lab::nudge_speed(double mps) {

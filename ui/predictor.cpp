@@ -1,7 +1,9 @@
 #include "ui/predictor.hpp"
 
+#include <algorithm>
 #include <chrono>
 
+#include "shotlab/io/scene_json.hpp"
 #include "shotlab/simulation.hpp"
 
 namespace shotlab {
@@ -10,6 +12,12 @@ namespace {
 constexpr double kSample = 1.0 / 120;   // s between path points
 constexpr double kWallLimit = 4.0;      // s of wall time a prediction may take (a break at tight tolerances)
 constexpr double kShowEvery = 8e-3;     // s of computing between hand-outs of a running prediction's paths so far
+constexpr size_t kKept = 8;             // finished predictions kept (a break's is about half a megabyte)
+
+// What a prediction depends on: the scene, every number in it, and the limit.
+std::string key_of(const Scene& scene, double limit) {
+  return scene_to_json(scene).dump() + "|" + std::to_string(limit);
+}
 }  // namespace
 
 Predictor::Predictor() : thread_([this] { run(); }) {}
@@ -29,14 +37,48 @@ void Predictor::set_notify(std::function<void()> notify) {
   notify_ = std::move(notify);
 }
 
-long Predictor::request(const Scene& scene, double limit) {
-  std::lock_guard lock(mutex_);
-  pending_ = scene;
-  limit_ = limit;
-  wanted_ = ++generation_;
-  busy_ = true;
+long Predictor::request(const Scene& scene, double limit, std::vector<Scene> next) {
+  const std::string key = key_of(scene, limit);
+  std::function<void()> notify;
+  long generation;
+  {
+    std::lock_guard lock(mutex_);
+    generation = wanted_ = ++generation_;
+    limit_ = limit;
+    next_ = std::move(next);
+    if (const Prediction* known = find(key)) {
+      pending_.reset();
+      done_ = *known;
+      done_->generation = generation;
+      busy_ = false;
+      notify = notify_;
+    } else {
+      pending_ = scene;
+      busy_ = true;
+    }
+  }
   wake_.notify_one();
-  return generation_;
+  published_.notify_all();
+  if (notify) notify();
+  return generation;
+}
+
+bool Predictor::kept(const Scene& scene, double limit) const {
+  const std::string key = key_of(scene, limit);
+  std::lock_guard lock(mutex_);
+  return find(key) != nullptr;
+}
+
+const Prediction* Predictor::find(const std::string& key) const {
+  const auto it = std::find_if(kept_.begin(), kept_.end(), [&](const auto& k) { return k.first == key; });
+  return it == kept_.end() ? nullptr : &it->second;
+}
+
+void Predictor::keep(std::string key, const Prediction& p) {
+  std::lock_guard lock(mutex_);
+  if (find(key)) return;
+  kept_.emplace_back(std::move(key), p);
+  if (kept_.size() > kKept) kept_.pop_front();
 }
 
 std::optional<Prediction> Predictor::latest() const {
@@ -77,22 +119,36 @@ void Predictor::run() {
     Scene scene;
     long generation;
     double limit;
+    bool guess;
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return quit_ || pending_; });
+      wake_.wait(lock, [&] { return quit_ || pending_ || !next_.empty(); });
       if (quit_) return;
-      scene = std::move(*pending_);
-      pending_.reset();
+      guess = !pending_;
+      if (guess) {
+        scene = std::move(next_.front());
+        next_.erase(next_.begin());
+      } else {
+        scene = std::move(*pending_);
+        pending_.reset();
+      }
       generation = generation_;
       limit = limit_;
     }
-    Prediction p = predict(scene, limit, generation);
-    p.complete = true;
-    publish(std::move(p));
+    const std::string key = key_of(scene, limit);
+    if (guess) {
+      std::lock_guard lock(mutex_);
+      if (find(key)) continue;
+    }
+    std::optional<Prediction> p = predict(scene, limit, generation, guess);
+    if (!p) continue;  // superseded
+    p->complete = true;
+    keep(key, *p);
+    if (!guess) publish(std::move(*p));
   }
 }
 
-Prediction Predictor::predict(const Scene& scene, double limit, long generation) {
+std::optional<Prediction> Predictor::predict(const Scene& scene, double limit, long generation, bool guess) {
   Prediction out;
   out.generation = generation;
   const auto began = std::chrono::steady_clock::now();
@@ -110,7 +166,7 @@ Prediction Predictor::predict(const Scene& scene, double limit, long generation)
     sample();
     double shown = 0;  // s of computing when the paths so far were last handed out
     while (sim.time() < limit && !(sim.time() > 0 && sim.at_rest())) {
-      if (wanted_ != generation) return out;  // superseded: the result is dropped by run()
+      if (wanted_ != generation) return std::nullopt;  // superseded
       if (sim.advance(kSample) != Status::Ok) {
         out.problem = std::string(status_name(sim.status())) + ": " + sim.diagnostic();
         break;
@@ -118,7 +174,7 @@ Prediction Predictor::predict(const Scene& scene, double limit, long generation)
       sample();
       const auto now = std::chrono::steady_clock::now();
       const double spent = std::chrono::duration<double>(now - start).count();
-      if (waiting_ > 0 || spent - shown > kShowEvery) {
+      if (!guess && (waiting_ > 0 || spent - shown > kShowEvery)) {
         shown = spent;
         out.simulated = sim.time();
         out.wall_seconds = std::chrono::duration<double>(now - began).count();

@@ -1,8 +1,10 @@
 // The predicted paths' worker (ui/predictor.hpp): a finished prediction runs to rest; a long one hands out its paths
-// so far while the window waits, each a beginning of the finished paths; a superseded request never shows.
+// so far while the window waits, each a beginning of the finished paths; a superseded request never shows; a scene
+// named as likely next is predicted meanwhile, and asking for it is answered at once with what a fresh run gives.
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <thread>
 
 #include "shotlab/io/scene_json.hpp"
@@ -71,6 +73,38 @@ TEST(Predictor, ASupersededRequestNeverShows) {
   finish(p, second, kPatience);
   std::this_thread::sleep_for(std::chrono::milliseconds(50));  // time for the break's worker to hand anything out
   EXPECT_EQ(p.latest()->generation, second);
+}
+
+// The break with the aim turned by an aim key press (0.1 degree) is named as likely next: once the break is finished the
+// worker predicts it unasked, and the request for it is answered before it returns, finished, point for point what a
+// worker of its own predicts. The break's own prediction stays kept too: turning back is answered at once as well.
+TEST(Predictor, ALikelyNextAimIsPredictedBeforeItIsAskedFor) {
+  const Scene now = load_scene(test::preset("break.json"));
+  Scene next = now;
+  next.cue->aim += 0.1 * M_PI / 180;
+  Predictor p;
+  finish(p, p.request(now, kLimit, {next}), kPatience);
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(kPatience);
+  while (!p.kept(next, kLimit) && std::chrono::steady_clock::now() < end)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_TRUE(p.kept(next, kLimit)) << "the likely next aim predicted while nothing else waited";
+  const long asked = p.request(next, kLimit);
+  EXPECT_FALSE(p.busy());
+  const auto answer = p.latest();
+  ASSERT_TRUE(answer && answer->generation == asked && answer->complete);
+
+  Predictor fresh;
+  const Prediction alone = finish(fresh, fresh.request(next, kLimit), kPatience);
+  ASSERT_EQ(answer->paths.size(), alone.paths.size());
+  for (size_t b = 0; b < alone.paths.size(); ++b) {
+    ASSERT_EQ(answer->paths[b].size(), alone.paths[b].size());
+    for (size_t k = 0; k < alone.paths[b].size(); ++k) ASSERT_EQ(answer->paths[b][k].position, alone.paths[b][k].position);
+  }
+  EXPECT_NE(answer->paths[0].back().position, finish(fresh, fresh.request(now, kLimit), kPatience).paths[0].back().position)
+      << "the turned aim sends the cue ball elsewhere";
+  EXPECT_TRUE(p.kept(now, kLimit));
+  const long back = p.request(now, kLimit);
+  EXPECT_TRUE(p.wait_for(back, 0.0));
 }
 
 }  // namespace
