@@ -53,7 +53,7 @@ long Predictor::request(const Scene& scene, double limit, std::vector<Scene> nex
       busy_ = false;
       notify = notify_;
     } else {
-      pending_ = scene;
+      pending_ = Pending{scene, key};
       busy_ = true;
     }
   }
@@ -117,6 +117,7 @@ void Predictor::publish(Prediction p) {
 void Predictor::run() {
   for (;;) {
     Scene scene;
+    std::string key;  // key_of(scene, limit), worked out once
     long generation;
     double limit;
     bool guess;
@@ -129,14 +130,15 @@ void Predictor::run() {
         scene = std::move(next_.front());
         next_.erase(next_.begin());
       } else {
-        scene = std::move(*pending_);
+        scene = std::move(pending_->scene);
+        key = std::move(pending_->key);
         pending_.reset();
       }
       generation = generation_;
       limit = limit_;
     }
-    const std::string key = key_of(scene, limit);
     if (guess) {
+      key = key_of(scene, limit);
       std::lock_guard lock(mutex_);
       if (find(key)) continue;
     }

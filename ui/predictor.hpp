@@ -71,7 +71,11 @@ class Predictor {
   std::condition_variable wake_;
   mutable std::condition_variable published_;
   mutable std::atomic<int> waiting_{0};  // calls of wait_for blocked now: the worker hands out what it has
-  std::optional<Scene> pending_;
+  struct Pending {
+    Scene scene;
+    std::string key;  // its key among the kept ones, worked out by request()
+  };
+  std::optional<Pending> pending_;
   std::vector<Scene> next_;  // guesses still to predict, likeliest first (request)
   double limit_ = 0;
   std::deque<std::pair<std::string, Prediction>> kept_;  // finished predictions by key (scene and limit), oldest first
