@@ -1,17 +1,20 @@
 #!/usr/bin/python3
 """Whole shots to rest (issue 34), printed and written as markdown: the break (presets/break.json) and the cut
 (presets/cut.json) timed by tests/benchmarks/shot_speed on one pinned core, this build against a baseline build of
-the same benchmark (another commit's), in alternated rounds; the plain all-ODE path once for reference; and where
-this build's steps and right-hand sides go, by the kind of island that took them.
+the same benchmark (another commit's), in alternated rounds; the plain all-ODE path once for reference; where
+this build's steps and right-hand sides go, by the kind of island that took them; and what the cost follows: the same
+shots at looser integrator tolerances and softer friction rate limits.
 
 usage: python3 scripts/speed_bench.py [--build build] [--baseline OTHER_BUILD] [--label TEXT] [--core 0]
-                                      [--rounds 5] [--out docs/bench/speed.md]
+                                      [--rounds 5] [--sweep-rounds 3] [--out docs/bench/speed.md]
 """
 import argparse
 import datetime
 import os
+import json
 import statistics
 import subprocess
+import tempfile
 
 from machine import describe, publish
 
@@ -19,13 +22,20 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENES = ["break.json", "cut.json"]
 
 
-def measure(build, core, runs, plain=False):
-    """{scene: (median ms, steps, rejected, redone, rhs, digest)} from one call of shot_speed pinned to `core`; redone is
-    None from a build whose benchmark does not count it."""
+# The variants of the sweep: (label, scene section, field, value); the first is the default, each other changes one
+# number of it (docs/scene-format.md).
+VARIANTS = [("default (tolerance 1e-7, rate limit 2e5 1/s)", None, None, None)] + \
+    [(f"tolerance {t:.0e}", "integrator", None, t) for t in (1e-6, 1e-5, 1e-4, 1e-3)] + \
+    [(f"rate limit {r:.0e} 1/s", "model", "friction_rate_limit", r) for r in (5e4, 2e4)]
+
+
+def measure(build, core, runs, plain=False, paths=None):
+    """{scene: (median ms, steps, rejected, redone, rhs, digest)} from one call of shot_speed pinned to `core`, of the
+    presets or of `paths`; redone is None from a build whose benchmark does not count it."""
     tool = os.path.join(build, "tests", "benchmarks", "shot_speed")
     args = ["taskset", "-c", str(core), tool, "--rounds", str(runs)] + (["--plain"] if plain else [])
-    text = subprocess.run(args + [os.path.join(ROOT, "presets", s) for s in SCENES], check=True, capture_output=True,
-                          text=True).stdout
+    paths = paths or [os.path.join(ROOT, "presets", s) for s in SCENES]
+    text = subprocess.run(args + paths, check=True, capture_output=True, text=True).stdout
     out = {}
     for line in text.splitlines():
         f = line.split()
@@ -52,6 +62,35 @@ def census(build, core):
     return out
 
 
+def sweep(build, core, rounds):
+    """[(label, {scene: (median ms, steps, rejected, redone, rhs, digest)})]: each variant of VARIANTS written beside
+    the presets' scenes in a scratch folder, in rounds that alternate the variants; median of the rounds' medians."""
+    times, last = {}, {}
+    with tempfile.TemporaryDirectory() as tmp:
+        files = {}
+        for n, (label, section, field, value) in enumerate(VARIANTS):
+            files[label] = []
+            for s in SCENES:
+                with open(os.path.join(ROOT, "presets", s)) as f:
+                    scene = json.load(f)
+                if section == "integrator":
+                    scene["integrator"] = {"abs_tol": value, "rel_tol": value}
+                elif section:
+                    scene.setdefault(section, {})[field] = value
+                path = os.path.join(tmp, f"{n}_{s}")
+                with open(path, "w") as f:
+                    json.dump(scene, f)
+                files[label].append(path)
+        for r in range(rounds):
+            for label in (files if r % 2 == 0 else reversed(list(files))):
+                last[label] = {k.split("_", 1)[1]: v for k, v in measure(build, core, 10, paths=files[label]).items()}
+                times.setdefault(label, {s: [] for s in SCENES})
+                for s in SCENES:
+                    times[label][s].append(last[label][s][0])
+    return [(label, {s: (statistics.median(times[label][s]),) + last[label][s][1:] for s in SCENES})
+            for label, *_ in VARIANTS]
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
@@ -60,6 +99,7 @@ def main():
     ap.add_argument("--core", type=int, default=0)
     ap.add_argument("--rounds", type=int, default=5, help="alternated rounds of 10 shots of each scene")
     ap.add_argument("--out")
+    ap.add_argument("--sweep-rounds", type=int, default=3, help="alternated rounds of the tolerance and rate-limit sweep")
     a = ap.parse_args()
     sides = {"this build": a.build} | ({a.label: a.baseline} if a.baseline else {})
     times = {k: {s: [] for s in SCENES} for k in sides}
@@ -104,6 +144,14 @@ def main():
     total = {s: sum(c["wall_us"] for t, _, c in rows if t == s) for s in SCENES}
     lines += [f"| {s} | {k} | {c['steps']} | {c['rhs']} | {c['redone']} | {c['rejected']} | {c['limited']} | "
               f"{c['wall_us'] / 1e3:.3f} ({100 * c['wall_us'] / total[s]:.0f} %) |" for s, k, c in rows]
+    lines += ["", "What the cost follows: this build on the same shots with one number changed, the integrator's "
+              "tolerance (abs_tol = rel_tol) or the friction rate limit (docs/model.md#rate-limit; a change of the model, "
+              f"not only of its accuracy), in {a.sweep_rounds} rounds that alternate the variants:", "",
+              "| variant | break wall ms | steps | redone | right-hand sides | cut wall ms | steps | redone | "
+              "right-hand sides |", "|---|---|---|---|---|---|---|---|---|"]
+    for label, r in sweep(a.build, a.core, a.sweep_rounds):
+        lines.append(f"| {label} | " + " | ".join(f"{r[s][0]:.3f} | {r[s][1]} | {r[s][3]} | {r[s][4]}" for s in SCENES)
+                     + " |")
     publish(lines, a.out)
 
 
