@@ -6,8 +6,18 @@ void History::record(const std::string& label, const Scene& before, const std::s
   redo_.clear();
   if (!merge.empty() && merge == open_merge_ && !undo_.empty()) return;
   open_merge_ = merge;
-  undo_.push_back({label, before});
+  push({label, before, std::nullopt});
+}
+
+void History::push(HistoryStep step) {
+  undo_.push_back(std::move(step));
   if (undo_.size() > kLimit) undo_.erase(undo_.begin());
+}
+
+void History::record_load(const std::string& label, const Scene& before, SceneFile file) {
+  seal();
+  redo_.clear();
+  push({label, before, std::move(file)});
 }
 
 const std::string& History::undo_label() const {
@@ -20,20 +30,22 @@ const std::string& History::redo_label() const {
   return redo_.empty() ? none : redo_.back().label;
 }
 
-Scene History::undo(const Scene& current) {
-  Entry e = std::move(undo_.back());
-  undo_.pop_back();
-  redo_.push_back({e.label, current});
-  open_merge_.clear();
-  return std::move(e.scene);
+HistoryStep History::take(std::vector<HistoryStep>& from, std::vector<HistoryStep>& to, const Scene& current,
+                          const SceneFile& current_file) {
+  HistoryStep e = std::move(from.back());
+  from.pop_back();
+  to.push_back({e.label, current, e.file ? std::optional<SceneFile>(current_file) : std::nullopt});
+  return e;
 }
 
-Scene History::redo(const Scene& current) {
-  Entry e = std::move(redo_.back());
-  redo_.pop_back();
-  undo_.push_back({e.label, current});
+HistoryStep History::undo(const Scene& current, const SceneFile& current_file) {
   open_merge_.clear();
-  return std::move(e.scene);
+  return take(undo_, redo_, current, current_file);
+}
+
+HistoryStep History::redo(const Scene& current, const SceneFile& current_file) {
+  open_merge_.clear();
+  return take(redo_, undo_, current, current_file);
 }
 
 void History::clear() {

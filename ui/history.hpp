@@ -1,14 +1,29 @@
 // One undo stack for everything the user does to the table: ball moves, adds and removals, aim and cue changes, a
 // break set up, and shots. Each entry is the scene as it was before the action, with a label for the menu. A run of
 // edits of the same kind (dragging the aim, nudging the speed) merges into one entry, so that one undo takes back
-// the whole gesture. Tuned physics is not part of it (the tuning panel has its own reset).
+// the whole gesture. Tuned physics is not part of it (the tuning panel has its own reset), except across a file load:
+// undoing a load brings back the whole scene before it, its file and its tuned physics.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "shotlab/scene.hpp"
 
 namespace shotlab {
+
+// The file a scene came from: its path ("" for a scene made in the lab) and the scene as it was loaded.
+struct SceneFile {
+  std::string path;
+  Scene loaded;
+};
+
+// What undo or redo goes back to: the scene, and for a load's entry the file that goes with it.
+struct HistoryStep {
+  std::string label;
+  Scene scene;
+  std::optional<SceneFile> file;  // set when the step crosses a file load: physics, path and loaded go back too
+};
 
 class History {
  public:
@@ -17,6 +32,8 @@ class History {
   void record(const std::string& label, const Scene& before, const std::string& merge = "");
   // Ends the current gesture: the next record() opens a new entry even with the same merge key.
   void seal() { open_merge_.clear(); }
+  // Records the scene and file in use before another file was loaded over them.
+  void record_load(const std::string& label, const Scene& before, SceneFile file);
 
   bool can_undo() const { return !undo_.empty(); }
   bool can_redo() const { return !redo_.empty(); }
@@ -24,17 +41,17 @@ class History {
   const std::string& redo_label() const;
   size_t size() const { return undo_.size(); }
 
-  // The scene to go back to; `current` is kept for redo. Call only when can_undo() / can_redo().
-  Scene undo(const Scene& current);
-  Scene redo(const Scene& current);
+  // The step to go back to; `current` (and, when the step crosses a load, `current_file`) is kept for the way back.
+  // Call only when can_undo() / can_redo().
+  HistoryStep undo(const Scene& current, const SceneFile& current_file);
+  HistoryStep redo(const Scene& current, const SceneFile& current_file);
   void clear();
 
  private:
-  struct Entry {
-    std::string label;
-    Scene scene;
-  };
-  std::vector<Entry> undo_, redo_;
+  void push(HistoryStep step);
+  static HistoryStep take(std::vector<HistoryStep>& from, std::vector<HistoryStep>& to, const Scene& current,
+                          const SceneFile& current_file);
+  std::vector<HistoryStep> undo_, redo_;
   std::string open_merge_;
   static constexpr size_t kLimit = 200;  // entries kept; the oldest go first
 };

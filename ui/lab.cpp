@@ -42,19 +42,21 @@ void Lab::say(MessageKind kind, std::string text) {
   message_age = 0;
 }
 
-// A scene from a file (or made from a measured shot) becomes the lab's: a fresh start without undo, trails or target;
-// a measured shot's fit that runs is dropped.
+// A scene from a file (or made from a measured shot) becomes the lab's: a fresh start without trails or target, and
+// one undo entry that brings back the scene, file and tuned physics it replaced; a measured shot's fit is dropped.
 void Lab::adopt(Scene s, const std::string& path, const std::string& what) {
   validate(s);
+  if (!scene.balls.empty() || !scene_path.empty())
+    history.record_load("open " + std::filesystem::path(path).filename().string(), scene, {scene_path, loaded});
   loaded = s;
   set_scene(std::move(s));
-  history.clear();
   ghost.clear(), kept.clear(), compare.clear(), compare_label.clear();
   target.reset();
   measured.fit.cancel(), measured.shot.reset(), measured.last.reset();
   measured.applied = measured.fit.finished();
   std::string note = "loaded ";
   note.append(what).append(path);
+  if (history.can_undo()) note += " (Undo brings back the scene before)";
   say(MessageKind::Note, std::move(note));
   if (on_load) on_load(scene);
 }
@@ -241,16 +243,15 @@ void Lab::replay() {
 void Lab::undo() {
   if (in_hand) {  // putting the ball back where it was picked up
     in_hand = false;
-    if (history.can_undo()) scene = history.undo(scene);
+    if (history.can_undo()) take_step(history.undo(scene, {scene_path, loaded}));
     scene_changed();
     return;
   }
   if (!history.can_undo()) return say(MessageKind::Note, "nothing to undo");
   const std::string what = history.undo_label();
-  Scene previous = history.undo(scene);
-  previous.model = scene.model;  // undo restores positions and aim; tuned physics stays (Reset in Tuning)
-  if (shot) ghost = trails(shot->sim().time());
-  scene = std::move(previous);
+  HistoryStep previous = history.undo(scene, {scene_path, loaded});
+  if (shot && !previous.file) ghost = trails(shot->sim().time());
+  take_step(std::move(previous));
   shot.reset();
   playing = false;
   view_time = 0;
@@ -259,13 +260,25 @@ void Lab::undo() {
   scene_changed();
 }
 
+// Undo and redo restore positions and aim; tuned physics stays (Reset in Tuning) unless the step crosses a file load.
+void Lab::take_step(HistoryStep step) {
+  if (step.file) {
+    scene_path = std::move(step.file->path);
+    loaded = std::move(step.file->loaded);
+    ghost.clear();
+    scene = std::move(step.scene);
+    if (on_load) on_load(scene);  // the camera frames the table it goes back to
+    return;
+  }
+  step.scene.model = scene.model;
+  scene = std::move(step.scene);
+}
+
 void Lab::redo() {
   if (!history.can_redo()) return say(MessageKind::Note, "nothing to redo");
   if (history.redo_label() == "shot") return shoot();  // shooting again records the shot anew
   const std::string what = history.redo_label();
-  Scene next = history.redo(scene);
-  next.model = scene.model;
-  scene = std::move(next);
+  take_step(history.redo(scene, {scene_path, loaded}));
   shot.reset();
   playing = false;
   view_time = 0;

@@ -149,6 +149,7 @@ class Lab {
 
  private:
   void adopt(Scene s, const std::string& path, const std::string& what);  // lab.cpp: a loaded scene taken on
+  void take_step(HistoryStep step);  // the scene (and file) undo or redo goes back to
   bool editable(const char* what);
   bool fits(int i, const Vec3& p) const;
   void show(double t);

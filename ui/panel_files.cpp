@@ -75,6 +75,7 @@ void save_to(Lab& lab, const std::string& path) {
   try {
     save_scene(path, lab.scene);
     lab.scene_path = path;
+    lab.loaded = lab.scene;  // the file now holds these values: the list of changes starts again from them
     remember_file(lab.settings, path);
     lab.say(MessageKind::Note, "saved " + path);
   } catch (const std::exception& e) {

@@ -192,5 +192,33 @@ TEST_F(LabTest, SetUpBreakRacksAndGivesBallInHand) {
   EXPECT_EQ(lab.scene.balls.size(), 2u);  // back to the cut shot
 }
 
+// A preset picked over a tuned, edited scene loses nothing: one undo brings back that scene, its file and its tuned
+// physics; redo takes the preset again. The first load of a session has nothing to undo.
+TEST_F(LabTest, LoadingAnotherSceneUndoes) {
+  load("cut.json");
+  EXPECT_FALSE(lab.history.can_undo());
+  lab.nudge_aim(2.0);
+  lab.scene.model.materials.at(kBallBall).stiffness *= 0.5;
+  lab.physics_changed();
+  const double tuned = lab.scene.model.materials.at(kBallBall).stiffness;
+  load("break.json");
+  EXPECT_EQ(lab.scene.balls.size(), 16u);
+  EXPECT_TRUE(lab.physics_changes().empty());
+  lab.undo();
+  EXPECT_EQ(lab.scene.balls.size(), 2u);
+  EXPECT_EQ(lab.scene_path, test::preset("cut.json"));
+  EXPECT_NEAR(lab.scene.cue->aim * 180 / M_PI, -73.0, 1e-9);
+  EXPECT_EQ(lab.scene.model.materials.at(kBallBall).stiffness, tuned);
+  EXPECT_EQ(lab.physics_changes().size(), 1u);  // still a change from the cut's file
+  lab.undo();
+  EXPECT_NEAR(lab.scene.cue->aim * 180 / M_PI, -75.0, 1e-9);
+  EXPECT_EQ(lab.scene.model.materials.at(kBallBall).stiffness, tuned);  // a plain undo keeps tuned physics
+  lab.redo();
+  lab.redo();
+  EXPECT_EQ(lab.scene.balls.size(), 16u);
+  EXPECT_EQ(lab.scene_path, test::preset("break.json"));
+  EXPECT_TRUE(lab.physics_changes().empty());
+}
+
 }  // namespace
 }  // namespace shotlab

@@ -25,11 +25,11 @@ TEST(History, UndoRedoWalkTheEditsInOrder) {
   h.record("move 1", named("a"));
   h.record("remove 2", named("b"));
   EXPECT_EQ(h.undo_label(), "remove 2");
-  EXPECT_EQ(h.undo(named("c")).name, "b");
-  EXPECT_EQ(h.undo(named("b")).name, "a");
+  EXPECT_EQ(h.undo(named("c"), {}).scene.name, "b");
+  EXPECT_EQ(h.undo(named("b"), {}).scene.name, "a");
   EXPECT_FALSE(h.can_undo());
-  EXPECT_EQ(h.redo(named("a")).name, "b");
-  EXPECT_EQ(h.redo(named("b")).name, "c");
+  EXPECT_EQ(h.redo(named("a"), {}).scene.name, "b");
+  EXPECT_EQ(h.redo(named("b"), {}).scene.name, "c");
   EXPECT_FALSE(h.can_redo());
 }
 
@@ -42,12 +42,30 @@ TEST(History, AGestureIsOneEntryAndANewEditClearsRedo) {
   h.seal();
   h.record("aim", named("second drag"), "aim");
   EXPECT_EQ(h.size(), 2u);
-  h.undo(named("now"));
+  h.undo(named("now"), {});
   EXPECT_TRUE(h.can_redo());
   h.record("move cue", named("x"));
   EXPECT_FALSE(h.can_redo());
-  EXPECT_EQ(h.undo(named("y")).name, "x");
-  EXPECT_EQ(h.undo(named("x")).name, "before drag");
+  EXPECT_EQ(h.undo(named("y"), {}).scene.name, "x");
+  EXPECT_EQ(h.undo(named("x"), {}).scene.name, "before drag");
+}
+
+// A load's entry carries the file it replaced, and its redo entry the file that was current at the undo.
+TEST(History, ALoadStepCarriesItsFileBothWays) {
+  History h;
+  h.record("move 1", named("a"));
+  h.record_load("open break.json", named("b"), {"cut.json", named("cut as loaded")});
+  HistoryStep back = h.undo(named("break"), {"break.json", named("break as loaded")});
+  EXPECT_EQ(back.scene.name, "b");
+  ASSERT_TRUE(back.file);
+  EXPECT_EQ(back.file->path, "cut.json");
+  EXPECT_EQ(back.file->loaded.name, "cut as loaded");
+  EXPECT_FALSE(h.undo(named("b"), {"cut.json", named("cut as loaded")}).file);  // a plain edit's step has none
+  EXPECT_FALSE(h.redo(named("a"), {}).file);
+  HistoryStep again = h.redo(named("b"), {"cut.json", named("cut as loaded")});
+  EXPECT_EQ(again.scene.name, "break");
+  ASSERT_TRUE(again.file);
+  EXPECT_EQ(again.file->path, "break.json");
 }
 
 // Issue 28: at 1280x720, 1920x1080 and 1024x600 the panels stay at the window's edges and the 3D view keeps the
