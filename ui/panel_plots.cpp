@@ -25,18 +25,27 @@ double shot_span(const Lab& lab) {
   return lab.shot->finished() ? lab.shot->sim().time() : std::max(lab.shot->sim().time(), 1e-3);
 }
 
+// The ball's speed and the speed its spin would roll it at (R times spin about the horizontal axis across the
+// travel), both along its direction of travel: the second is negative with backspin, and the lines meet where the
+// ball rolls. At rest the last direction of travel is kept (the spin's own direction before the ball ever moved).
 void motion_plot(Lab& lab) {
   const int i = lab.selected;
   const double r = lab.scene.balls[i].spec.radius;
-  PlotSeries v{"speed v", kBlue, {}, {}}, w{"R x spin (surface)", kYellow, {}, {}};
+  PlotSeries v{"speed v", kBlue, {}, {}}, w{"R x spin along v (< 0: backspin)", kYellow, {}, {}};
+  Vec3 along{0.0};
   for (const Frame& f : lab.shot->frames()) {
     if (f.time > lab.view_time) break;
-    v.time.push_back(f.time), v.value.push_back(glm::length(velocity(f.state.x, i)));
-    w.time.push_back(f.time), w.value.push_back(r * glm::length(spin(f.state.x, i)));
+    const Vec3 vel = velocity(f.state.x, i), rolls_at = r * glm::cross(spin(f.state.x, i), Vec3{0, 1, 0});
+    const Vec3 flat{vel.x, 0, vel.z};
+    if (glm::length(flat) > 1e-9) along = glm::normalize(flat);
+    else if (along == Vec3{0.0} && glm::length(rolls_at) > 1e-9) along = glm::normalize(rolls_at);
+    v.time.push_back(f.time), v.value.push_back(glm::length(vel));
+    w.time.push_back(f.time), w.value.push_back(glm::dot(rolls_at, along));
   }
   PlotSpec spec{"ball " + lab.scene.balls[i].spec.id + ": speed and spin", "m/s", lab.view_time, 0, shot_span(lab)};
   seek_to(lab, lab_plot(lab, "motion", spec, {v, w}, em(150)));
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("a ball rolls without slipping where the two lines meet");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("the ball rolls without slipping where the two lines meet; below zero the spin is backspin");
 }
 
 void energy_plot(Lab& lab) {
@@ -90,6 +99,7 @@ void collision_plot(Lab& lab) {
   const double end = c.end >= 0 ? c.end : log->until;
   PlotSeries f{c.label(), kRed, c.time, c.force};
   PlotSpec spec{"normal force, " + c.label(), "N", lab.view_time, c.begin, std::max(end, c.begin + 1e-6)};
+  spec.origin = c.begin, spec.origin_name = "contact start";
   seek_to(lab, lab_plot(lab, "collision", spec, {f}, em(150)));
   ImGui::Text("peak %.0f N, lasted %.3f ms, deepest %.1f um", c.peak_force(), (end - c.begin) * 1e3, c.max_depth() * 1e6);
   if (ImGui::SmallButton("go to its start")) lab.seek(c.begin);

@@ -41,13 +41,14 @@ std::string table_csv(const Lab& lab) {
 void ball_table(Lab& lab) {
   const Frame& f = lab.frame();
   const Model& m = shown_model(lab);
-  const float rows = std::min(f.state.ball_count(), 8) + 1.5f;
+  const float rows = std::min(f.state.ball_count(), 8) + 2.5f;  // the header and the horizontal scroll bar
   if (!ImGui::BeginTable("balls", 6, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX |
                                          ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit,
                          ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * rows)))
     return;
   ImGui::TableSetupScrollFreeze(0, 1);
-  for (const char* h : {"ball", "x, z (m)", "v (m/s)", "w (rad/s)", "KE (J)", "state"}) ImGui::TableSetupColumn(h);
+  // The state next to the ball's name: with many balls in a narrow inspector the later columns scroll out of view.
+  for (const char* h : {"ball", "state", "v (m/s)", "w (rad/s)", "KE (J)", "x, z (m)"}) ImGui::TableSetupColumn(h);
   ImGui::TableHeadersRow();
   for (int i = 0; i < f.state.ball_count(); ++i) {
     const Vec3 p = position(f.state.x, i);
@@ -56,19 +57,21 @@ void ball_table(Lab& lab) {
     if (ImGui::Selectable(lab.scene.balls[i].spec.id.c_str(), lab.selected == i, ImGuiSelectableFlags_SpanAllColumns))
       lab.selected = i;
     ImGui::TableNextColumn();
-    ImGui::Text("%.3f, %.3f", p.x, p.z);
+    const Motion mo = i < static_cast<int>(f.motion.size()) ? f.motion[i] : Motion::Stationary;
+    ImGui::PushStyleColor(ImGuiCol_Text, motion_color(mo));
+    ImGui::TextUnformatted(f.state.in_play[i] ? motion_name(mo) : "pocketed");
+    ImGui::PopStyleColor();
     ImGui::TableNextColumn();
-    ImGui::Text("%.3f", glm::length(velocity(f.state.x, i)));
+    const double v = glm::length(velocity(f.state.x, i));  // under the rest speed the engine counts it stopped
+    if (v > 0 && v < m.options.rest_speed) ImGui::Text("< %.3f", m.options.rest_speed);
+    else ImGui::Text("%.3f", v);
     ImGui::TableNextColumn();
     ImGui::Text("%.1f", glm::length(spin(f.state.x, i)));
     ImGui::TableNextColumn();
     const BallMotion b = ball_motion(m, f.state, i);
     ImGui::Text("%.4f", b.translation + b.rotation);
     ImGui::TableNextColumn();
-    const Motion mo = i < static_cast<int>(f.motion.size()) ? f.motion[i] : Motion::Stationary;
-    ImGui::PushStyleColor(ImGuiCol_Text, motion_color(mo));
-    ImGui::TextUnformatted(f.state.in_play[i] ? motion_name(mo) : "pocketed");
-    ImGui::PopStyleColor();
+    ImGui::Text("%.3f, %.3f", p.x, p.z);
   }
   ImGui::EndTable();
   if (ImGui::SmallButton("Export table (CSV)")) try {
@@ -147,6 +150,20 @@ void centre_of_mass(const Lab& lab) {
   ImGui::Checkbox("show", &lab.settings.view.centre_of_mass);
 }
 
+// A ball's motion regime (sliding, rolling, spinning, stopped) that the same ball leaves within kMomentary, as a
+// ball at rest does when a collision starts to push it: a regime of the model's bookkeeping, not one a class sees.
+constexpr double kMomentary = 1e-4;  // s
+bool regime(const Event& e) {
+  return e.bodies.size() == 1 &&
+         (e.kind == "sliding" || e.kind == "rolling" || e.kind == "spinning" || e.kind == "stopped");
+}
+bool momentary(const std::vector<Event>& events, size_t k) {
+  if (!regime(events[k])) return false;
+  for (size_t j = k + 1; j < events.size() && events[j].time - events[k].time < kMomentary; ++j)
+    if (regime(events[j]) && events[j].bodies == events[k].bodies) return true;
+  return false;
+}
+
 void events_list(Lab& lab) {
   static bool bed = false;
   ImGui::Checkbox("with the bed's contacts", &bed);
@@ -157,6 +174,7 @@ void events_list(Lab& lab) {
   for (size_t k = 0; k < events.size(); ++k) {
     const Event& e = events[k];
     if (!bed && e.bodies.size() == 2 && e.bodies[1] == "bed") continue;
+    if (momentary(events, k)) continue;
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::PushID(static_cast<int>(k));

@@ -100,15 +100,18 @@ PlotAction plot(const char* id, const PlotSpec& spec, const std::vector<PlotSeri
     d->AddText({a.x - em(4) - ImGui::CalcTextSize(s.c_str()).x, py(y) - line / 2}, text, s.c_str());
   }
   const TimeUnit unit = time_unit(t1 - t0);
-  const Ticks xt = nice_ticks(t0 * unit.per_second, t1 * unit.per_second, std::max(2, static_cast<int>((b.x - a.x) / em(60))));
+  const double from = spec.origin;
+  const Ticks xt = nice_ticks((t0 - from) * unit.per_second, (t1 - from) * unit.per_second,
+                              std::max(2, static_cast<int>((b.x - a.x) / em(60))));
   for (double x : xt.values) {
-    const float X = px(x / unit.per_second);
+    const float X = px(from + x / unit.per_second);
     if (X < a.x - 0.5f || X > b.x + 0.5f) continue;
     d->AddLine({X, a.y}, {X, b.y}, grid);
     const std::string s = format_tick(x, xt);
     d->AddText({X - ImGui::CalcTextSize(s.c_str()).x / 2, b.y + 1}, text, s.c_str());
   }
-  const std::string x_label = std::string("time (") + unit.name + ")";
+  const std::string x_label =
+      (spec.origin_name.empty() ? "time" : "time since " + spec.origin_name) + " (" + unit.name + ")";
   d->AddText({(a.x + b.x - ImGui::CalcTextSize(x_label.c_str()).x) / 2, b.y + line}, text, x_label.c_str());
   d->PushClipRect(a, b, true);
   for (const PlotSeries& s : series) {
@@ -124,6 +127,11 @@ PlotAction plot(const char* id, const PlotSpec& spec, const std::vector<PlotSeri
     const double t = t0 + (m.x - a.x) / (b.x - a.x) * (t1 - t0);
     d->AddLine({m.x, a.y}, {m.x, b.y}, IM_COL32(255, 255, 120, 120));
     std::string tip = "t = " + format_time(t, t1 - t0 < 0.05);
+    if (!spec.origin_name.empty()) {
+      char since[64];
+      std::snprintf(since, sizeof since, " (%.4g %s since ", (t - from) * unit.per_second, unit.name);
+      tip += since + spec.origin_name + ")";
+    }
     for (const PlotSeries& s : series)
       if (const auto y = value_at(s, t)) tip += "\n" + s.name + ": " + with_unit(*y, spec.unit);
     ImGui::SetTooltip("%s\n(click: go to this time; right-click: export)", tip.c_str());
