@@ -1,5 +1,7 @@
 #include "shotlab/scene.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <set>
 #include <stdexcept>
 
@@ -11,8 +13,28 @@ const BallKind* find_ball_kind(const std::string& name) {
   return nullptr;
 }
 
+namespace {
+
+void fail(const std::string& what) { throw std::invalid_argument(what); }
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", v);
+  return text;
+}
+
+// A ball starts over the bed between the cushion noses (or above it): off it, it would start inside a cushion or in
+// the air beside the table.
+void check_over_bed(const TableSpec& t, const Vec3& p, const std::string& where) {
+  const double half_length = t.length / 2, half_width = t.width / 2;
+  if (std::abs(p.x) <= half_length && std::abs(p.z) <= half_width) return;
+  fail(where + ".position: (" + number(p.x) + ", " + number(p.z) + ") m is off the table: x and z must be within " +
+       number(half_length) + " and " + number(half_width) + " m of its centre (the cushion noses)");
+}
+
+}  // namespace
+
 void validate(const Scene& s) {
-  auto fail = [](const std::string& what) { throw std::invalid_argument(what); };
   std::set<std::string> ids;
   for (size_t i = 0; i < s.balls.size(); ++i) {
     const InitialBall& b = s.balls[i];
@@ -24,6 +46,14 @@ void validate(const Scene& s) {
       if (!is_finite(v)) fail(where + ": non-finite number");
     if (s.table && b.position.y < 0)  // inside or under the slate: the bed would fling it out with any energy
       fail(where + ".position: below the table's bed (y = " + std::to_string(b.position.y) + " m; the bed is y = 0)");
+    if (s.table) check_over_bed(*s.table, b.position, where);
+    if (glm::length(b.velocity) > kMaxStartSpeed)
+      fail(where + ".velocity: " + number(glm::length(b.velocity)) + " m/s is faster than a ball starts (at most " +
+           number(kMaxStartSpeed) + " m/s)");
+    if (b.spec.radius * glm::length(b.angular_velocity) > kMaxStartSpeed)
+      fail(where + ".angular_velocity: a surface speed R|w| of " +
+           number(b.spec.radius * glm::length(b.angular_velocity)) + " m/s is beyond a ball's (at most " +
+           number(kMaxStartSpeed) + " m/s)");
   }
   if (!s.allow_overlap)
     for (size_t i = 0; i < s.balls.size(); ++i)
@@ -46,6 +76,9 @@ void validate(const Scene& s) {
     if (s.model.rods[r].ball < 0 || s.model.rods[r].ball >= static_cast<int>(s.balls.size()))
       fail("rods[" + std::to_string(r) + "].ball: no such ball");
   if (s.cue && !ids.count(s.cue->ball)) fail("cue.ball: no ball with id '" + s.cue->ball + "'");
+  if (s.cue && s.cue->speed > kMaxStartSpeed)
+    fail("cue.speed: " + number(s.cue->speed) + " m/s is faster than a cue strikes (at most " +
+         number(kMaxStartSpeed) + " m/s; a hard break is 10-14 m/s)");
   if (!(s.duration > 0) || !std::isfinite(s.duration)) fail("duration: must be a positive number of seconds");
 }
 

@@ -156,6 +156,22 @@ TEST(Hardening, ABallBelowTheTableIsRefused) {
 }
 
 // A stop with no contact used to say "closest pair: none (gap inf m)" and name no ball.
+// A user trial loaded a cue ball at x = 5 m (reported pocketed 0.25 s later) and a cue speed of 1e6 m/s (balls 10 km
+// away at the 60 s limit) without a word: both are refused, naming the field and the bound.
+TEST(Hardening, BallsOffTheTableAndAbsurdSpeedsAreRefused) {
+  const std::string cut = preset("cut.json");
+  std::string err = load_error(cut, {"balls[0].position=[5,0.028575,0]"});
+  EXPECT_NE(err.find("balls[0].position: (5, 0) m is off the table"), std::string::npos) << err;
+  EXPECT_NE(err.find("1.27 and 0.635 m"), std::string::npos) << err;
+  err = load_error(cut, {"cue.speed=1e6"});
+  EXPECT_NE(err.find("cue.speed: 1e+06 m/s is faster than a cue strikes (at most 30 m/s"), std::string::npos) << err;
+  err = load_error(cut, {"balls[1].velocity=[0,0,100]"});
+  EXPECT_NE(err.find("balls[1].velocity: 100 m/s"), std::string::npos) << err;
+  err = load_error(cut, {"balls[1].angular_velocity=[0,5000,0]"});
+  EXPECT_NE(err.find("balls[1].angular_velocity"), std::string::npos) << err;
+  EXPECT_EQ(load_error(cut, {"cue.speed=14", "balls[1].position=[1.27,0.028575,-0.635]"}), "");  // at the corner: fine
+}
+
 TEST(Hardening, AStopWithoutContactsNamesTheBalls) {
   nlohmann::json doc = {{"balls", {{{"id", "lone"}, {"position", {0, 1, 0}}}}},
                         {"integrator", {{"method", "euler"}, {"fixed_step", 1e-6}, {"max_steps_per_call", 5}}}};

@@ -34,6 +34,9 @@ struct InitialBall {
 // s: the longest run a scene or a command may ask for (an hour; a shot rests within a minute, a Newton's cradle
 // swings for ever, so the bound is what stops a typo from running for days).
 inline constexpr double kMaxDuration = 3600.0;
+// m/s: the fastest a ball (or its surface, R |w|) or a cue may start. A record break is about 14 m/s; beyond this a
+// scene is a typo (1e6 m/s), not a shot.
+inline constexpr double kMaxStartSpeed = 30.0;
 
 // A rack of object balls (rack.hpp builds it): a triangle, or snooker's reds and colours.
 enum class RackType { Triangle, Snooker };
@@ -69,8 +72,9 @@ struct Scene {
   std::optional<RackOrigin> rack;
 };
 
-// Checks what the types cannot (overlaps, positive sizes, rods and cue naming real balls); throws
-// std::invalid_argument with a message naming the ball or field.
+// Checks what the types cannot (overlaps, positive sizes, balls over the table's bed, start speeds up to
+// kMaxStartSpeed, rods and cue naming real balls); throws std::invalid_argument with a message naming the ball or
+// field.
 void validate(const Scene& scene);
 
 // The model and state ready to simulate: table colliders added, balls resting on the bed lowered to their static
