@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "shotlab/rack.hpp"
+#include "shotlab/simulation.hpp"
 
 namespace shotlab {
 
@@ -74,6 +75,54 @@ std::vector<PocketAim> pocket_aims(const Scene& scene, const std::vector<Pocket>
   }
   std::sort(out.begin(), out.end(), [](const PocketAim& a, const PocketAim& b) { return a.cut_deg < b.cut_deg; });
   return out;
+}
+
+namespace {
+constexpr double kDropCheckSeconds = 15.0;  // s of a shot simulated at most to see whether the ball drops
+
+bool drops_in(const Scene& scene, const std::string& object, const std::string& pocket) {
+  Prepared p = prepare(scene);
+  Simulation sim(std::move(p.model), std::move(p.state));
+  size_t seen = 0;
+  while (sim.time() < kDropCheckSeconds && sim.advance(0.25) == Status::Ok) {
+    for (; seen < sim.events().size(); ++seen) {
+      const Event& e = sim.events()[seen];
+      if ((e.kind == "pocketed" || e.kind == "off_table") && !e.bodies.empty() && e.bodies[0] == object)
+        return e.kind == "pocketed" && e.bodies.size() > 1 && e.bodies[1] == pocket;
+    }
+    if (sim.at_rest()) break;
+  }
+  return false;
+}
+}  // namespace
+
+void check_drops(const Scene& scene, int object, std::vector<PocketAim>& aims) {
+  if (!scene.cue || object < 0 || object >= static_cast<int>(scene.balls.size())) return;
+  for (PocketAim& a : aims) {
+    Scene s = scene;
+    s.cue->aim = a.aim;
+    try {
+      a.drops = drops_in(s, scene.balls[object].spec.id, a.pocket);
+    } catch (const std::exception&) {
+      a.drops = false;  // a scene the engine refuses drops nothing
+    }
+  }
+  std::stable_partition(aims.begin(), aims.end(), [](const PocketAim& a) { return a.drops; });
+}
+
+int pocket_object(const Scene& scene) {
+  const auto line = aim_line(scene);
+  if (!line) return -1;
+  if (line->hit >= 0) return line->hit;
+  const int c = cue_index(scene);
+  int best = -1;
+  double best_turn = INFINITY;
+  for (int j = 0; j < static_cast<int>(scene.balls.size()); ++j) {
+    if (j == c) continue;
+    const double turn = std::abs(std::remainder(heading(line->from, scene.balls[j].position) - scene.cue->aim, 2 * M_PI));
+    if (turn < best_turn) best_turn = turn, best = j;
+  }
+  return best;
 }
 
 Vec3 Zone::clamp(const Vec3& p) const { return {std::clamp(p.x, lo_x, hi_x), p.y, std::clamp(p.z, lo_z, hi_z)}; }

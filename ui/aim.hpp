@@ -28,8 +28,15 @@ struct PocketAim {
   std::string pocket;
   double aim;      // rad
   double cut_deg;
+  bool drops = false;  // set by check_drops()
 };
 std::vector<PocketAim> pocket_aims(const Scene& scene, const std::vector<Pocket>& pockets, int cue_ball, int object);
+// Simulates the scene's shot at each aim (its speed, spin and the other balls as they are) and sets `drops` where ball
+// `object` falls into that aim's pocket; the aims that drop come first, each part easiest cut first.
+void check_drops(const Scene& scene, int object, std::vector<PocketAim>& aims);
+// The ball P aims for: the one the aim line meets, else the object ball whose centre is nearest the aim in heading
+// (-1 when there is no cue strike or no other ball).
+int pocket_object(const Scene& scene);
 
 // Where the cue ball may go with ball in hand: the whole bed inside the cushions, or for a break the part behind the
 // head string (the quarter of a pool table's length nearest the head rail).

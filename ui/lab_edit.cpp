@@ -51,12 +51,18 @@ void Lab::aim_at_ball(int i) {
   aim_at(scene.balls[i].position);
 }
 
+// Cycles through the pockets the aimed-at ball (or the one nearest the aim) can be cut into: those the shot drops it
+// in at the current speed and spin (each checked by simulating it), else all of them; and says which it is.
 void Lab::aim_for_pocket(int step) {
-  const auto line = aim_line(scene);
-  if (!line || line->hit < 0) return say(MessageKind::Refused, "aim at an object ball first: its pockets are offered");
-  const auto aims = pocket_aims(scene, table_model.pockets, scene_ball(scene, scene.cue->ball), line->hit);
+  if (!scene.cue) return say(MessageKind::Refused, "tick the cue strike first: the pockets are aimed with it");
+  const int object = pocket_object(scene);
+  if (object < 0) return say(MessageKind::Refused, "no object ball to aim at a pocket");
+  auto aims = pocket_aims(scene, table_model.pockets, scene_ball(scene, scene.cue->ball), object);
   if (aims.empty()) return say(MessageKind::Refused, "no pocket can be reached from here with a cut under 85 degrees");
-  // The pocket after the one aimed at now (the closest heading), in order of the cut they take.
+  check_drops(scene, object, aims);
+  if (aims.front().drops)  // only those that drop are offered, when any does
+    aims.erase(std::find_if(aims.begin(), aims.end(), [](const PocketAim& a) { return !a.drops; }), aims.end());
+  // The pocket after the one aimed at now (the closest heading), easiest cut first.
   size_t now = 0;
   for (size_t k = 1; k < aims.size(); ++k)
     if (std::abs(std::remainder(aims[k].aim - scene.cue->aim, 2 * M_PI)) <
@@ -67,8 +73,13 @@ void Lab::aim_for_pocket(int step) {
   CueStrike cue = *scene.cue;
   cue.aim = aims[next].aim;
   set_cue(cue, "aim");
-  say(MessageKind::Note, "aimed " + scene.balls[line->hit].spec.id + " at " + aims[next].pocket + " (cut " +
-                             deg(aims[next].cut_deg * M_PI / 180) + " deg)");
+  char speed[32];
+  std::snprintf(speed, sizeof speed, "%.2f m/s", scene.cue->speed);
+  say(MessageKind::Note, "aimed " + scene.balls[object].spec.id + " at " + aims[next].pocket + " (cut " +
+                             deg(aims[next].cut_deg * M_PI / 180) + " deg; " +
+                             (aims[next].drops ? std::string("drops at ") + speed + ")"
+                                               : std::string("does not drop at ") + speed +
+                                                     ": more speed or another pocket)"));
 }
 
 CueStrike turned(const CueStrike& cue, double degrees) {

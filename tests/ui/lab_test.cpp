@@ -118,6 +118,32 @@ TEST_F(LabTest, PocketAimsFindThePresetsCut) {
   EXPECT_NEAR(line->cut_deg, 30.0, 0.5);
 }
 
+// P offers only the pockets the shot really drops the ball in (simulated at the cue's speed and spin) when any does:
+// the cut preset's 30 degree cut drops at its 2 m/s, its 83 degree one does not; at 0.3 m/s none drops and P says so. P works with the aim line missing
+// the only object ball (a user trial was refused after dragging the aim off it).
+TEST_F(LabTest, PocketAimsSayWhetherTheBallDrops) {
+  load("cut.json");
+  auto aims = pocket_aims(lab.scene, lab.table_model.pockets, 0, 1);
+  check_drops(lab.scene, 1, aims);
+  ASSERT_FALSE(aims.empty());
+  EXPECT_TRUE(aims.front().drops);
+  EXPECT_NEAR(aims.front().cut_deg, 30.0, 1.0);
+  for (const PocketAim& a : aims)
+    if (a.cut_deg > 75) EXPECT_FALSE(a.drops) << a.pocket << " at " << a.cut_deg << " deg";
+  lab.nudge_aim(40.0);
+  ASSERT_LT(aim_line(lab.scene)->hit, 0);
+  lab.aim_for_pocket(1);
+  EXPECT_NE(lab.message.find("drops at 2.00 m/s"), std::string::npos) << lab.message;
+  EXPECT_NEAR(lab.scene.cue->aim * 180 / M_PI, -75.0, 0.5);
+  lab.aim_for_pocket(1);  // the 83 degree cut into the side pocket does not drop: P stays on the one that does
+  EXPECT_NEAR(lab.scene.cue->aim * 180 / M_PI, -75.0, 0.5);
+  CueStrike slow = *lab.scene.cue;
+  slow.speed = 0.3;
+  lab.set_cue(slow, "speed");
+  lab.aim_for_pocket(1);
+  EXPECT_NE(lab.message.find("does not drop at 0.30 m/s"), std::string::npos) << lab.message;
+}
+
 // Issue 28, item 6: a click on the object ball aims at it and moves nothing.
 TEST_F(LabTest, AimingAtABallDoesNotMoveIt) {
   load("cut.json");
