@@ -1,6 +1,7 @@
 #include "ui/files.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 
 namespace shotlab {
@@ -43,6 +44,16 @@ bool inside(const std::string& path, const std::string& dir) {
   if (d.filename().empty()) d = d.parent_path();  // "presets/" ends in an empty element
   auto [a, b] = std::mismatch(d.begin(), d.end(), p.begin(), p.end());
   return a == d.end();
+}
+
+std::string user_folder(const std::vector<std::string>& recent, const std::string& presets_dir) {
+  std::error_code ec;
+  for (const std::string& r : recent) {
+    const fs::path folder = fs::absolute(r, ec).parent_path();
+    if (!ec && !inside(r, presets_dir) && fs::is_directory(folder, ec)) return folder.string();
+  }
+  if (const char* home = std::getenv("HOME"); home && *home && fs::is_directory(home, ec)) return home;
+  return fs::current_path(ec).string();
 }
 
 }  // namespace shotlab

@@ -19,6 +19,10 @@ struct DirEntry {
 // folder cannot be read.
 std::vector<DirEntry> list_scene_dir(const std::string& dir);
 
+// The folder a file dialog starts in: the folder of the newest of `recent` outside `presets_dir` that still exists,
+// else the home folder, else the working folder.
+std::string user_folder(const std::vector<std::string>& recent, const std::string& presets_dir);
+
 // Whether `path` lies inside folder `dir` (after resolving both): shipped presets are not overwritten by Save.
 bool inside(const std::string& path, const std::string& dir);
 

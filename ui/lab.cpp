@@ -39,7 +39,7 @@ int scene_ball(const Scene& s, const std::string& id) {
 void Lab::say(MessageKind kind, std::string text) {
   message_kind = kind;
   message = std::move(text);
-  message_age = 0;
+  message_since = std::chrono::steady_clock::now();
 }
 
 // A scene from a file (or made from a measured shot) becomes the lab's: a fresh start without trails or target, and
@@ -265,6 +265,7 @@ void Lab::take_step(HistoryStep step) {
   if (step.file) {
     scene_path = std::move(step.file->path);
     loaded = std::move(step.file->loaded);
+    if (!scene_path.empty()) remember_file(settings, scene_path);  // the next start opens the scene shown
     ghost.clear();
     scene = std::move(step.scene);
     if (on_load) on_load(scene);  // the camera frames the table it goes back to
@@ -348,8 +349,8 @@ void Lab::run_on() {
 }
 
 void Lab::update(double real_dt) {
-  message_age += real_dt;
-  if (message_kind == MessageKind::Note && message_age > kNoteSeconds) say(MessageKind::None, "");
+  const std::chrono::duration<double> age = std::chrono::steady_clock::now() - message_since;
+  if (message_kind == MessageKind::Note && age.count() > kNoteSeconds) say(MessageKind::None, "");
   if (!shot) return;
   if (!playing) {
     show(std::min(view_time, shot->sim().time()));  // scrubbing moves view_time within what is recorded

@@ -74,7 +74,8 @@ class Lab {
   int selected = 0;             // ball index
   std::string message;
   MessageKind message_kind = MessageKind::None;
-  double message_age = 0;       // s of real time since the message was set: a note goes after kNoteSeconds
+  std::chrono::steady_clock::time_point message_since;  // when the message was set: a note goes after kNoteSeconds
+                                                        // of wall time (idle frames come every half second)
   static constexpr double kNoteSeconds = 6;
   std::string screenshot_request;  // PNG path: written after the next frame is drawn
   std::optional<Rect> screenshot_crop;  // only this part of the window (a plot), else all of it

@@ -45,18 +45,33 @@ const std::vector<PresetEntry>& presets(const std::string& data_root) {
   return list;
 }
 
-// A folder listing with .json scenes and .csv measured shots: click a folder to enter it, a file to open it.
-void browser_popup(Lab& lab) {
-  static std::string dir = fs::current_path().string();
-  ImGui::SetNextWindowSize(ImVec2(em(460), em(380)), ImGuiCond_Appearing);
+// A folder listing with .json scenes and .csv measured shots: click a folder to enter it, a file to open it, or type
+// a path. It starts in the folder of the scene shown (or the user's, for a preset), and each folder opens at its top.
+void browser_popup(Lab& lab, std::string& dir) {
+  ImGui::SetNextWindowSize(ImVec2(em(460), em(400)), ImGuiCond_Appearing);
   if (!ImGui::BeginPopupModal("Open scene file", nullptr)) return;
+  static std::string typed;
+  if (ImGui::IsWindowAppearing()) typed.clear(), ImGui::SetKeyboardFocusHere();  // a path can be typed at once
+  ImGui::SetNextItemWidth(-em(150));
+  const bool enter = ImGui::InputTextWithHint("##path", "type a path, or pick below", &typed,
+                                              ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+  mark("open path");
+  ImGui::SameLine();
+  if ((ImGui::Button("Open") || enter) && !typed.empty()) {
+    std::error_code ec;
+    if (fs::is_directory(typed, ec)) dir = typed, typed.clear();
+    else if (lab.load(typed)) typed.clear(), ImGui::CloseCurrentPopup();  // a bad file: its message, popup stays
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
+  if (lab.message_kind == MessageKind::LoadError) ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "%s", lab.message.c_str());
   ImGui::TextWrapped("%s", dir.c_str());
   if (ImGui::Button("Up")) dir = fs::path(dir).parent_path().string();
   ImGui::SameLine();
   if (ImGui::Button("Presets")) dir = lab.data_root + "/presets";
   ImGui::SameLine();
-  if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
-  ImGui::BeginChild("entries", ImVec2(0, 0), true);
+  if (ImGui::Button("Home")) dir = user_folder({}, "");
+  ImGui::BeginChild(("entries " + dir).c_str(), ImVec2(0, 0), true);  // one child a folder: each keeps its own scroll
   for (const DirEntry& e : list_scene_dir(dir)) {
     const std::string label = e.folder ? "[" + e.name + "]" : e.name;
     const bool picked = ImGui::Selectable(label.c_str());
@@ -64,7 +79,7 @@ void browser_popup(Lab& lab) {
     if (picked) {
       const std::string path = (fs::path(dir) / e.name).string();
       if (e.folder) dir = path;
-      else if (lab.load(path), true) ImGui::CloseCurrentPopup();
+      else if (lab.load(path)) ImGui::CloseCurrentPopup();
     }
   }
   ImGui::EndChild();
@@ -101,7 +116,7 @@ void save_as_popup(Lab& lab, std::string& path) {
   }
   ImGui::EndDisabled();
   ImGui::SameLine();
-  if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+  if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
   ImGui::EndPopup();
 }
 
@@ -132,15 +147,25 @@ void preset_combo(Lab& lab) {
 
 void scene_section(Lab& lab) {
   preset_combo(lab);
-  if (ImGui::Button("Open...")) ImGui::OpenPopup("Open scene file");
+  static std::string browse_dir;
+  const std::string presets_dir = lab.data_root + "/presets";
+  const bool shipped = lab.scene_path.empty() || inside(lab.scene_path, presets_dir);
+  const std::string folder =
+      shipped ? user_folder(lab.settings.recent, presets_dir) : fs::path(lab.scene_path).parent_path().string();
+  if (ImGui::Button("Open...")) {
+    browse_dir = folder;
+    if (lab.message_kind == MessageKind::LoadError) lab.say(MessageKind::None, "");  // the popup shows the next one
+    ImGui::OpenPopup("Open scene file");
+  }
   mark("Open...");
-  browser_popup(lab);
+  browser_popup(lab, browse_dir);
   ImGui::SameLine();
   static std::string save_path;
-  const bool shipped = lab.scene_path.empty() || inside(lab.scene_path, lab.data_root + "/presets");
+  const std::string stem = lab.scene_path.empty() ? "scene" : fs::path(lab.scene_path).stem().string();
+  const std::string mine = (fs::path(folder) / (stem + "-mine.json")).string();
   if (ImGui::Button("Save")) {
     if (shipped) {
-      save_path = (fs::current_path() / (fs::path(lab.scene_path).stem().string() + "-mine.json")).string();
+      save_path = mine;
       ImGui::OpenPopup("Save scene as");
     } else {
       save_to(lab, lab.scene_path);
@@ -151,9 +176,10 @@ void scene_section(Lab& lab) {
                       lab.scene_path.c_str());
   ImGui::SameLine();
   if (ImGui::Button("Save as...")) {
-    save_path = lab.scene_path.empty() || shipped ? (fs::current_path() / "scene.json").string() : lab.scene_path;
+    save_path = shipped ? mine : lab.scene_path;
     ImGui::OpenPopup("Save scene as");
   }
+  mark("Save as...");
   save_as_popup(lab, save_path);
   same_line_if_fits("Set up break");
   if (ImGui::Button("Set up break")) lab.setup_break();

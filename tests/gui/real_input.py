@@ -501,6 +501,10 @@ def measured(binary, root, display, work):
     s = app.state()
     app.click_widget(s, "Open...")
     time.sleep(0.5)
+    app.click_widget(app.state(), "open path")  # the browser starts in the user's folder: type where the file is
+    app.type(work)
+    app.key("Return")
+    time.sleep(0.5)
     app.click_widget(app.state(), "browse tracked.csv")
     s = app.wait(lambda s: s["measured"] is not None, 30, "the measured shot is loaded")
     check(s["measured"]["cue_ball"] == "white" and len(s["balls"]) == 3,
@@ -539,14 +543,35 @@ def layout(binary, root, display, work):
 
 
 def bad_scene(binary, root, display, work):
-    """A broken --scene: the error on stderr and in the banner, a preset opens instead, and the settings still name the
+    """A broken file typed into Open is named and the scene kept; a scene opened over an aimed one undoes back to it;
+    a broken --scene: the error on stderr and in the banner, a preset opens instead, and the settings still name the
     user's last good scene after the window closes."""
     config = os.path.join(work, "config")
-    app = App(binary, display, work, os.path.join(root, "presets", "cut.json"), config=config)
-    app.close()
     bad = os.path.join(work, "broken.json")
     with open(bad, "w") as f:
         f.write('{"balls": [{"id": "a", "mass": -1}]}')
+    app = App(binary, display, work, os.path.join(root, "presets", "cut.json"), config=config)
+    app.key("Right", 3)
+    aimed = app.state()["cue"]["aim_deg"]
+    for path, what in ((bad, "a broken file"), (os.path.join(root, "presets", "break.json"), "the break preset")):
+        app.click_widget(app.state(), "Open...")
+        time.sleep(0.4)
+        app.click_widget(app.state(), "open path")
+        app.type(path)
+        app.key("Return")
+        time.sleep(0.4)
+        s = app.state()
+        if what == "a broken file":
+            check(len(s["balls"]) == 2 and "broken.json" in s["message"], "a typed broken file is named, the scene kept")
+            app.key("Escape")
+    check(len(s["balls"]) == 16, "a typed path opens the break over the aimed cut shot")
+    app.key("u")
+    s = app.state()
+    check(len(s["balls"]) == 2 and abs(s["cue"]["aim_deg"] - aimed) < 1e-9 and s["scene_path"].endswith("cut.json"),
+          "one U brings back the cut shot as it was aimed")
+    check("undone" in s["message"], f"the banner says so ({s['message']})")
+    app.wait(lambda s: s["message"] == "", 10, "the note goes by itself after 6 s without input")
+    app.close()
     app = App(binary, display, work, bad, config=config)
     s = app.state()
     check(s["message_kind"] == "load_error" and "broken.json" in s["message"], "the banner names the broken file")
