@@ -8,6 +8,9 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <imgui_internal.h>
+#include <utility>
 
 // Screen points as a Boost.Geometry line, for its Douglas-Peucker simplification (simplified_polyline).
 BOOST_GEOMETRY_REGISTER_POINT_2D(ImVec2, float, boost::geometry::cs::cartesian, x, y)
@@ -20,6 +23,7 @@ constexpr float kBaseFont = 15;      // px: the font size the unscaled sizes are
 constexpr float kMinControl = 130;   // px (unscaled): narrower, a slider is hard to use
 std::map<std::string, Rect> current_marks, last_marks;
 std::map<std::string, double> current_readouts, last_readouts;
+std::string slider_note;  // take_slider_note()
 }  // namespace
 
 float em(float pixels) { return pixels * ImGui::GetFontSize() / kBaseFont; }
@@ -47,10 +51,35 @@ void Fields::label(const char* text) const {
 }
 
 bool slider(const char* id, double& v, double lo, double hi, const char* format, bool log) {
+  // A typed value (ctrl+click, or a double click) goes into `typed` and reaches v only when the entry ends, so that
+  // the keystrokes on the way ("1", "1e", "1e3") do not re-run the shot; out of range, it is clamped with a note.
+  static ImGuiID typing = 0;
+  static double typed = 0;
+  const ImGuiID gid = ImGui::GetID(id);
+  const bool was_typing = typing == gid && ImGui::TempInputIsActive(gid);
+  if (!was_typing && typing == gid) typing = 0;
   ImGui::SetNextItemWidth(-FLT_MIN);
-  return ImGui::SliderScalar(id, ImGuiDataType_Double, &v, &lo, &hi, format,
-                             ImGuiSliderFlags_AlwaysClamp | (log ? ImGuiSliderFlags_Logarithmic : 0));
+  const bool changed = ImGui::SliderScalar(id, ImGuiDataType_Double, was_typing ? &typed : &v, &lo, &hi, format,
+                                           log ? ImGuiSliderFlags_Logarithmic : 0);
+  const bool typing_now = ImGui::TempInputIsActive(gid);
+  if (typing_now && !was_typing) typing = gid, typed = v;
+  if (typing_now || !was_typing) return typing_now ? false : changed;
+  typing = 0;  // the entry ended (Return, a click elsewhere; Escape restored the old text)
+  if (typed == v) return false;
+  const double kept = std::isfinite(typed) ? std::clamp(typed, lo, hi) : v;
+  if (kept != typed) {
+    const char* name = id + std::strspn(id, "#");
+    char text[200];
+    std::snprintf(text, sizeof text, "%s: %g is outside this slider's range, %g to %g; set to %g", name, typed, lo,
+                  hi, kept);
+    slider_note = text;
+  }
+  const bool edited = kept != v;
+  v = kept;
+  return edited;
 }
+
+std::string take_slider_note() { return std::exchange(slider_note, std::string()); }
 
 bool tip_widget(CueStrike& cue, float size) {
   const float r = size / 2 - 6;

@@ -25,9 +25,11 @@ class Fields {
   bool above_ = false;
 };
 
-// A slider over a double, clamped to its range (typed values too: no out-of-range value reaches the engine);
-// logarithmic where the range spans decades. Fills the row.
+// A slider over a double, clamped to its range; logarithmic where the range spans decades. Fills the row. A typed
+// value (ctrl+click) takes effect when its entry ends; one out of range is clamped and leaves a note (take_slider_note).
 bool slider(const char* id, double& v, double lo, double hi, const char* format, bool log = false);
+// What the last slider entry that had to be clamped says ("stiffness: 1e+30 is outside ..."), once; else empty.
+std::string take_slider_note();
 
 // A drawn ball face: click or drag to put the cue tip (right is the shooter's right, up is follow); the dashed
 // ring is the miscue limit. Returns true while it changes the offsets.

@@ -420,6 +420,26 @@ def developer(binary, root, display, work):
     check(abs(s["physics"]["materials"]["ball_ball"]["stiffness"] - 4e9) < 1, "the stiffness typed is set")
     check(after < before, f"stiffer, shorter contact ({before * 1e3:.3f} -> {after * 1e3:.3f} ms)")
     check(any("stiffness" in c for c in s["physics"]["changes"]), "the change is listed")
+    stiff = lambda s: s["physics"]["materials"]["ball_ball"]["stiffness"]
+    # A value being typed is applied on Return, not keystroke by keystroke; Escape keeps the old one.
+    app.click_widget(s, "stiffness ball_ball", mods=("ctrl",))
+    app.key("ctrl+a")
+    app.type("2e9")
+    time.sleep(0.5)
+    check(abs(stiff(app.state()) - 4e9) < 1, "a value being typed is not applied yet")
+    app.key("Escape")
+    time.sleep(0.5)
+    s = app.state()
+    check(abs(stiff(s) - 4e9) < 1, "Escape leaves the stiffness as it was")
+    # Out of the slider's range: clamped to its top, and the note says so.
+    app.click_widget(s, "stiffness ball_ball", mods=("ctrl",))
+    app.key("ctrl+a")
+    app.type("1e30")
+    app.key("Return")
+    s = app.wait(lambda s: abs(stiff(s) - 4e9) > 1, 30, "the typed stiffness is taken")
+    check(stiff(s) == 1e12, f"1e30 typed sets the slider's top, 1e12 ({stiff(s):g})")
+    check(s["message_kind"] == "refused" and "stiffness" in s["message"] and "1e+30" in s["message"],
+          f"the note names the field and the value ({s['message']!r})")
     app.click_widget(s, "Reset physics")
     s = app.wait(lambda s: s["readouts"].get("contact_time ball_ball") == before, 30, "the readout comes back")
     check(s["physics"]["materials"]["ball_ball"]["stiffness"] == stiffness and not s["physics"]["changes"],
