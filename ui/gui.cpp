@@ -7,6 +7,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <filesystem>
@@ -34,7 +35,12 @@ extern "C" void on_signal(int) { interrupted = true; }
 extern "C" void on_dump_signal(int) { dump_requested = true; }
 
 constexpr float kBaseFontPx = 15;          // the UI font at scale 1
-constexpr float kPresentationScale = 1.7f;  // presentation mode's fonts and widgets, times the UI scale
+// Presentation mode's fonts and widgets, times the UI scale: 1.7 on a 1920 x 1080 window, less on a smaller one in
+// proportion (projected full screen, its pixels are larger), down to 1.25: text keeps its size on the wall and the
+// panels their room.
+float presentation_scale(int w, int h) {
+  return std::clamp(1.7f * std::min(static_cast<float>(w) / 1920, static_cast<float>(h) / 1080), 1.25f, 1.7f);
+}
 
 struct Window {
   GLFWwindow* handle;
@@ -246,7 +252,7 @@ int run_gui(const GuiOptions& options) {
 
         int w, h;
         glfwGetFramebufferSize(window.handle, &w, &h);
-        fonts.apply(settings.ui_scale * (settings.presentation ? kPresentationScale : 1.0f));
+        fonts.apply(settings.ui_scale * (settings.presentation ? presentation_scale(w, h) : 1.0f));
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         if (script) {  // scripted runs are hermetic: the pointer, wherever it is, plays no part
@@ -258,6 +264,7 @@ int run_gui(const GuiOptions& options) {
         }
         ImGui::NewFrame();
         new_marks_frame();
+        readout("font size", ImGui::GetFontSize());
         const Layout layout = frame_layout(settings, w, h);
         fit_camera(settings.camera, lab.scene, layout.view);
         follow_cue_ball(settings.camera, lab);

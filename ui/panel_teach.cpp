@@ -129,7 +129,7 @@ void momentum_bars(const Lab& lab) {
   }
   bars.push_back({"total", glm::length(total), IM_COL32(255, 255, 255, 255)});
   scale = std::max(scale, glm::length(total));
-  ImGui::Text("Momentum (kg m/s), total (%.3f, %.3f) along x, z", total.x, total.z);
+  ImGui::TextWrapped("Momentum (kg m/s), total (%.3f, %.3f) along x, z", total.x, total.z);
   bar_chart("momentum", bars, scale, "kg m/s");
 }
 
@@ -145,8 +145,8 @@ void centre_of_mass(const Lab& lab) {
       v += ball_motion(m, f.state, i).momentum;
     }
   if (mass <= 0) return;
-  ImGui::Text("centre of mass (%.3f, %.3f) m, moving %.3f m/s", p.x / mass, p.z / mass, glm::length(v) / mass);
-  ImGui::SameLine();
+  ImGui::TextWrapped("centre of mass (%.3f, %.3f) m, moving %.3f m/s", p.x / mass, p.z / mass, glm::length(v) / mass);
+  same_line_if_checkbox_fits("show");
   ImGui::Checkbox("show", &lab.settings.view.centre_of_mass);
 }
 
@@ -201,9 +201,9 @@ void teach_panel(Lab& lab) {
   energy_bars(lab);
   momentum_bars(lab);
   centre_of_mass(lab);
-  ImGui::Checkbox("velocity", &lab.settings.view.velocity), ImGui::SameLine();
-  ImGui::Checkbox("spin", &lab.settings.view.spin), ImGui::SameLine();
-  ImGui::Checkbox("forces", &lab.settings.view.forces), ImGui::SameLine();
+  ImGui::Checkbox("velocity", &lab.settings.view.velocity), same_line_if_checkbox_fits("spin");
+  ImGui::Checkbox("spin", &lab.settings.view.spin), same_line_if_checkbox_fits("forces");
+  ImGui::Checkbox("forces", &lab.settings.view.forces), same_line_if_checkbox_fits("labels");
   ImGui::Checkbox("labels", &lab.settings.view.labels);
   if (!lab.shot || lab.scene.balls.empty()) {
     ImGui::TextDisabled("Plots and events appear once a shot runs.");

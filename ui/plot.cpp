@@ -50,8 +50,15 @@ std::string with_unit(double v, const std::string& unit) {
 float header(ImDrawList* d, ImVec2 o, float width, const PlotSpec& spec, const std::vector<PlotSeries>& series) {
   const float line = ImGui::GetTextLineHeight();
   const std::string title = spec.title + " (" + spec.unit + ")";
-  d->AddText(o, ImGui::GetColorU32(ImGuiCol_Text), title.c_str());
-  float x = o.x + ImGui::CalcTextSize(title.c_str()).x + em(16), y = o.y;
+  const float title_w = ImGui::CalcTextSize(title.c_str()).x;
+  float x = o.x + title_w + em(16), y = o.y;
+  if (title_w > width) {  // wrapped in a narrow panel; the legend starts below it
+    d->AddText(ImGui::GetFont(), ImGui::GetFontSize(), o, ImGui::GetColorU32(ImGuiCol_Text), title.c_str(), nullptr,
+               width);
+    x = o.x + em(8), y = o.y + ImGui::CalcTextSize(title.c_str(), nullptr, false, width).y;
+  } else {
+    d->AddText(o, ImGui::GetColorU32(ImGuiCol_Text), title.c_str());
+  }
   for (const PlotSeries& s : series) {
     const float w = ImGui::CalcTextSize(s.name.c_str()).x + em(16);
     if (x + w > o.x + width) x = o.x + em(8), y += line;
@@ -110,9 +117,12 @@ PlotAction plot(const char* id, const PlotSpec& spec, const std::vector<PlotSeri
     const std::string s = format_tick(x, xt);
     d->AddText({X - ImGui::CalcTextSize(s.c_str()).x / 2, b.y + 1}, text, s.c_str());
   }
-  const std::string x_label =
+  // Under the axis, centred; in a narrow panel the origin's label drops "time", then starts at the plot's left edge.
+  std::string x_label =
       (spec.origin_name.empty() ? "time" : "time since " + spec.origin_name) + " (" + unit.name + ")";
-  d->AddText({(a.x + b.x - ImGui::CalcTextSize(x_label.c_str()).x) / 2, b.y + line}, text, x_label.c_str());
+  if (!spec.origin_name.empty() && ImGui::CalcTextSize(x_label.c_str()).x > width) x_label = x_label.substr(5);
+  d->AddText({std::max(o.x, (a.x + b.x - ImGui::CalcTextSize(x_label.c_str()).x) / 2), b.y + line}, text,
+             x_label.c_str());
   d->PushClipRect(a, b, true);
   for (const PlotSeries& s : series) {
     std::vector<ImVec2> pts;

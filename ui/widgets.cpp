@@ -142,19 +142,35 @@ void same_line_if_fits(const char* next) {
   if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
 }
 
+void same_line_if_checkbox_fits(const char* next) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float width = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(next, nullptr, true).x;
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
+}
+
 void bar_chart(const char* id, const std::vector<Bar>& bars, double scale, const char* unit) {
   if (bars.empty() || !(scale > 0)) return;
   const bool signed_values = std::any_of(bars.begin(), bars.end(), [](const Bar& b) { return b.value < 0; });
   float label_w = 0;
   for (const Bar& b : bars) label_w = std::max(label_w, ImGui::CalcTextSize(b.label.c_str()).x);
   label_w += em(8);
+  // The values' column as wide as its widest text, so that the bars give way to it in a narrow panel.
+  std::vector<std::string> values;
+  float value_w = 0;
+  for (const Bar& b : bars) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.3g %s", b.value, unit);
+    values.emplace_back(text);
+    value_w = std::max(value_w, ImGui::CalcTextSize(text).x);
+  }
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float width = ImGui::GetContentRegionAvail().x;
   const ImVec2 o = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(id, ImVec2(std::max(width, 1.0f), line * bars.size() + 2));
   ImDrawList* d = ImGui::GetWindowDrawList();
   d->PushClipRect(o, ImVec2(o.x + width, o.y + line * bars.size() + 2), true);
-  const float x0 = o.x + label_w, span = std::max(width - label_w - em(70), 10.0f);
+  const float x0 = o.x + label_w, span = std::max(width - label_w - value_w - em(8), 10.0f);
   const float zero = signed_values ? x0 + span / 2 : x0;
   const float unit_px = static_cast<float>((signed_values ? span / 2 : span) / scale);
   for (size_t k = 0; k < bars.size(); ++k) {
@@ -163,12 +179,11 @@ void bar_chart(const char* id, const std::vector<Bar>& bars, double scale, const
     d->AddText({o.x, y}, ImGui::GetColorU32(ImGuiCol_Text), b.label.c_str());
     const float len = std::clamp(static_cast<float>(b.value) * unit_px, -span, span);
     d->AddRectFilled({std::min(zero, zero + len), y + 2}, {std::max(zero, zero + len), y + line - 3}, b.colour);
-    char text[48];
-    std::snprintf(text, sizeof text, "%.3g %s", b.value, unit);
-    d->AddText({x0 + span + em(6), y}, ImGui::GetColorU32(ImGuiCol_Text), text);
+    d->AddText({x0 + span + em(6), y}, ImGui::GetColorU32(ImGuiCol_Text), values[k].c_str());
   }
   d->AddLine({zero, o.y}, {zero, o.y + line * bars.size()}, IM_COL32(160, 160, 160, 255));
   d->PopClipRect();
+  mark_rect(std::string("bars ") + id, Rect{o.x, o.y, label_w + span + em(6) + value_w, line * bars.size()});
 }
 
 void mark(const std::string& name) {

@@ -50,6 +50,7 @@ bool end_side_panel(const std::string& name);
 
 // Before a button labelled `next`: on the same line when it fits in what is left of the row, else on the next.
 void same_line_if_fits(const char* next);
+void same_line_if_checkbox_fits(const char* next);  // the same before a checkbox labelled `next`
 
 // Horizontal bars from a zero line, scaled so that `scale` (> 0) spans the half width (signed values) or the full
 // width (all values >= 0); each bar labelled with its value and unit.

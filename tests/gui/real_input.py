@@ -399,6 +399,15 @@ def teacher(binary, root, display, work):
     app.click_widget(s, "tab Teaching")
     time.sleep(0.6)
     check(app.state()["tab"] == "teaching", "and Teaching can still be chosen")
+    # Presentation mode on a 1280 x 720 projector: larger text, and the energy bars' values still inside the panel.
+    normal = app.state()["readouts"]["font size"]
+    app.key("F5")
+    s = app.wait(lambda s: s["readouts"]["font size"] > normal, 10, "F5 turns presentation mode on")
+    bars, panel = app.widget(s, "bars energy"), app.widget(s, "panel Inspector")
+    check(s["readouts"]["font size"] >= 1.2 * normal, f"its text is larger ({normal:.1f} -> {s['readouts']['font size']:.1f} px)")
+    check(bars["x"] + bars["w"] <= panel["x"] + panel["w"],
+          f"the energy values end inside the inspector ({bars['x'] + bars['w']:.0f} <= {panel['x'] + panel['w']:.0f} px)")
+    app.key("F5")
     app.close()
 
 
