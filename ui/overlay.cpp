@@ -1,8 +1,12 @@
 // The 2D overlay over the 3D view (ImGui's background draw list): trails, predicted paths, the aim line with its
 // ghost ball and cut angle, kept shots and the A trails of the A/B comparison, the position target, ball labels, the
 // centre of mass, the ball-in-hand zone, and velocity, spin and contact-force vectors.
+#include <imgui_internal.h>  // ImRect
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "ui/aim.hpp"
@@ -27,6 +31,62 @@ ImU32 motion_color(Motion m, float alpha) {
 namespace {
 
 ImVec2 v2(const glm::dvec2& p) { return {static_cast<float>(p.x), static_cast<float>(p.y)}; }
+
+// The view's text labels (ball names, contact forces, the cut angle, the centre of mass, the target's miss), placed
+// once all are known so that none covers another: in order of priority (ball names first), each takes the first free
+// spot of its wanted one and the spots around its anchor, or the least covered when none is free. Each has a dark
+// backing so that it reads over trails and cloth.
+class Labels {
+ public:
+  void add(int priority, ImVec2 anchor, ImVec2 wanted, std::string text, ImU32 colour) {
+    items_.push_back({priority, anchor, wanted, std::move(text), colour});
+  }
+  void draw(ImDrawList* d) {
+    std::stable_sort(items_.begin(), items_.end(), [](const Item& a, const Item& b) { return a.priority < b.priority; });
+    std::vector<ImRect> taken;
+    for (const Item& it : items_) {
+      const ImVec2 size = ImGui::CalcTextSize(it.text.c_str());
+      const float gap = em(5), x = it.anchor.x, y = it.anchor.y;
+      const ImVec2 spots[] = {it.wanted,
+                              {x + gap, y - size.y / 2},           // right
+                              {x - size.x - gap, y - size.y / 2},  // left
+                              {x - size.x / 2, y + gap},           // below
+                              {x - size.x / 2, y - size.y - gap},  // above
+                              {it.wanted.x, it.wanted.y + size.y + 2},
+                              {it.wanted.x, it.wanted.y - size.y - 2},
+                              {it.wanted.x, it.wanted.y + 2 * (size.y + 2)}};
+      ImRect best;
+      float least = INFINITY;
+      for (const ImVec2& s : spots) {
+        const ImRect r(s.x - 3, s.y - 1, s.x + size.x + 3, s.y + size.y + 1);
+        float covered = 0;
+        for (const ImRect& t : taken) covered += overlap(r, t);
+        if (covered < least) least = covered, best = r;
+        if (covered == 0) break;
+      }
+      taken.push_back(best);
+      mark_rect("label " + std::to_string(taken.size()) + " " + it.text,
+                Rect{best.Min.x, best.Min.y, best.Max.x - best.Min.x, best.Max.y - best.Min.y});
+      d->AddRectFilled(best.Min, best.Max, IM_COL32(0, 0, 0, 170), 3);
+      d->AddText({best.Min.x + 3, best.Min.y + 1}, it.colour, it.text.c_str());
+    }
+  }
+
+ private:
+  struct Item {
+    int priority;
+    ImVec2 anchor, wanted;  // the point labelled; where the label's top-left corner would go
+    std::string text;
+    ImU32 colour;
+  };
+  static float overlap(const ImRect& a, const ImRect& b) {
+    const float w = std::min(a.Max.x, b.Max.x) - std::max(a.Min.x, b.Min.x);
+    const float h = std::min(a.Max.y, b.Max.y) - std::max(a.Min.y, b.Min.y);
+    return w > 0 && h > 0 ? w * h : 0;
+  }
+  std::vector<Item> items_;
+};
+enum LabelPriority { kBallName, kForce, kCut, kCentre, kMiss };
 
 void line(ImDrawList* d, const Viewport& vp, const Vec3& a, const Vec3& b, ImU32 color, float width) {
   const auto pa = vp.project(a), pb = vp.project(b);
@@ -99,7 +159,7 @@ void paths(ImDrawList* d, const Viewport& vp, const Trails& trails, float alpha,
   }
 }
 
-void aim(ImDrawList* d, const Viewport& vp, const Lab& lab) {
+void aim(ImDrawList* d, const Viewport& vp, const Lab& lab, Labels& labels) {
   const auto a = aim_line(lab.scene);
   if (!a) return;
   const CueStrike& cue = *lab.scene.cue;
@@ -117,7 +177,8 @@ void aim(ImDrawList* d, const Viewport& vp, const Lab& lab) {
   line(d, vp, q, q + a->object_dir * 0.4, IM_COL32(255, 230, 120, 220), 1.5f);
   char text[32];
   std::snprintf(text, sizeof text, "cut %.2f deg", a->cut_deg);
-  d->AddText(ImVec2(static_cast<float>(g->x) + 14, static_cast<float>(g->y) - em(20)), IM_COL32(255, 255, 255, 255), text);
+  labels.add(kCut, v2(*g), ImVec2(static_cast<float>(g->x) + 14, static_cast<float>(g->y) - em(20)), text,
+             IM_COL32(255, 255, 255, 255));
 }
 
 // A contact worth drawing: not a ball simply resting on the bed (its force within 20 % of its weight), which would
@@ -131,7 +192,7 @@ bool notable(const Model& model, const Contact& c) {
 
 // Velocity (white, 0.15 m per m/s), spin (yellow, 2 mm per rad/s, right-hand rule), contact forces (red, length
 // growing with log(1 + F / 1 N) so that a 2 N resting contact and a 2 kN collision both show).
-void vectors(ImDrawList* d, const Viewport& vp, const Lab& lab) {
+void vectors(ImDrawList* d, const Viewport& vp, const Lab& lab, Labels& labels) {
   const Frame& f = lab.frame();
   const ViewFlags& v = lab.settings.view;
   for (int i = 0; i < f.state.ball_count(); ++i) {
@@ -151,11 +212,12 @@ void vectors(ImDrawList* d, const Viewport& vp, const Lab& lab) {
     d->AddCircleFilled(v2(*s), 3.5f, IM_COL32(255, 60, 60, 255));
     char text[32];
     std::snprintf(text, sizeof text, "%.0f N", c.force.normal);
-    d->AddText(ImVec2(static_cast<float>(s->x) + 6, static_cast<float>(s->y) + 4), IM_COL32(255, 120, 120, 255), text);
+    labels.add(kForce, v2(*s), ImVec2(static_cast<float>(s->x) + 6, static_cast<float>(s->y) + 4), text,
+               IM_COL32(255, 120, 120, 255));
   }
 }
 
-void labels_and_centre(ImDrawList* d, const Viewport& vp, const Lab& lab) {
+void labels_and_centre(ImDrawList* d, const Viewport& vp, const Lab& lab, Labels& labels) {
   const Frame& f = lab.frame();
   const ViewFlags& v = lab.settings.view;
   Vec3 sum{0.0};
@@ -168,9 +230,8 @@ void labels_and_centre(ImDrawList* d, const Viewport& vp, const Lab& lab) {
     if (!v.labels) continue;
     if (const auto s = vp.project(p + Vec3{0, b.radius * 1.3, 0})) {
       const ImVec2 size = ImGui::CalcTextSize(b.id.c_str());
-      const ImVec2 at(static_cast<float>(s->x) - size.x / 2, static_cast<float>(s->y) - size.y);
-      d->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + size.x + 3, at.y + size.y + 1), IM_COL32(0, 0, 0, 170), 3);
-      d->AddText(at, IM_COL32(255, 255, 255, 255), b.id.c_str());
+      labels.add(kBallName, v2(*s), ImVec2(static_cast<float>(s->x) - size.x / 2, static_cast<float>(s->y) - size.y),
+                 b.id, IM_COL32(255, 255, 255, 255));
     }
   }
   if (!v.centre_of_mass || mass <= 0) return;
@@ -179,7 +240,7 @@ void labels_and_centre(ImDrawList* d, const Viewport& vp, const Lab& lab) {
     d->AddCircle(v2(*s), r, IM_COL32(255, 255, 255, 255), 24, 2.0f);
     d->AddLine(ImVec2(v2(*s).x - r, v2(*s).y), ImVec2(v2(*s).x + r, v2(*s).y), IM_COL32(255, 255, 255, 255), 2.0f);
     d->AddLine(ImVec2(v2(*s).x, v2(*s).y - r), ImVec2(v2(*s).x, v2(*s).y + r), IM_COL32(255, 255, 255, 255), 2.0f);
-    d->AddText(ImVec2(v2(*s).x + r + 3, v2(*s).y - r), IM_COL32(255, 255, 255, 255), "centre of mass");
+    labels.add(kCentre, v2(*s), ImVec2(v2(*s).x + r + 3, v2(*s).y - r), "centre of mass", IM_COL32(255, 255, 255, 255));
   }
 }
 
@@ -213,7 +274,7 @@ void measured_tracks(ImDrawList* d, const Viewport& vp, const Lab& lab) {
   }
 }
 
-void target(ImDrawList* d, const Viewport& vp, const Lab& lab) {
+void target(ImDrawList* d, const Viewport& vp, const Lab& lab, Labels& labels) {
   if (!lab.target) return;
   const Vec3 t = *lab.target + Vec3{0, 0.001, 0};
   const ImU32 c = IM_COL32(255, 90, 200, 255);
@@ -229,7 +290,8 @@ void target(ImDrawList* d, const Viewport& vp, const Lab& lab) {
   if (const auto miss = lab.target_miss(); miss && vp.project(t)) {
     char text[48];
     std::snprintf(text, sizeof text, "%s %.1f cm", lab.shot ? "missed by" : "predicted miss", *miss * 100);
-    d->AddText(ImVec2(v2(*vp.project(t)).x + em(12), v2(*vp.project(t)).y), c, text);
+    const ImVec2 at = v2(*vp.project(t));
+    labels.add(kMiss, at, ImVec2(at.x + em(12), at.y), text, c);
   }
 }
 
@@ -260,6 +322,7 @@ namespace {
 
 void draw_all(const Lab& lab, const Viewport& vp, ImDrawList* d) {
   const ViewFlags& v = lab.settings.view;
+  Labels labels;
   if (v.ghost) paths(d, vp, lab.ghost, 0.35f, 1.5f, false);
   for (const KeptShot& k : lab.kept)
     if (k.visible) paths(d, vp, k.trails, 0.8f, 2.0f, false, kept_colour(k.colour));
@@ -277,7 +340,7 @@ void draw_all(const Lab& lab, const Viewport& vp, ImDrawList* d) {
         readout("predicted paths complete", p->complete);
         readout("predicted aims behind", static_cast<double>(lab.prediction_request() - p->generation));
       }
-    if (v.aim && lab.scene.cue) aim(d, vp, lab);
+    if (v.aim && lab.scene.cue) aim(d, vp, lab, labels);
   }
   const Frame& f = lab.frame();
   for (const Rod& rod : lab.scene.model.rods)
@@ -289,12 +352,13 @@ void draw_all(const Lab& lab, const Viewport& vp, ImDrawList* d) {
       d->AddCircle(v2(*s), static_cast<float>(vp.screen_radius(p, lab.scene.balls[lab.selected].spec.radius)) + 4,
                    IM_COL32(120, 255, 120, 200), 32, 2.0f);
   }
-  target(d, vp, lab);
+  target(d, vp, lab, labels);
   margin_scatter(d, vp, lab);
   measured_tracks(d, vp, lab);
   hand_zone_outline(d, vp, lab);
-  labels_and_centre(d, vp, lab);
-  vectors(d, vp, lab);
+  labels_and_centre(d, vp, lab, labels);
+  vectors(d, vp, lab, labels);
+  labels.draw(d);
 }
 
 }  // namespace

@@ -384,6 +384,15 @@ def teacher(binary, root, display, work):
     mx, my = (b1[0] + b2[0]) / 2, (b1[1] + b2[1]) / 2
     img = app.grab()
     check(img.count(mx - 40, my - 40, mx + 40, my + 40, is_force_red) > 15, "the contact force is drawn at the impact")
+    app.key("l")  # ball names too: with the force labels at the contact, none may cover another
+    time.sleep(0.5)
+    s = app.state()
+    labels = [r for k, r in s["widgets"].items() if k.startswith("label ")]
+    def apart(a, b):
+        return a["x"] + a["w"] <= b["x"] or b["x"] + b["w"] <= a["x"] or a["y"] + a["h"] <= b["y"] or b["y"] + b["h"] <= a["y"]
+    check(len(labels) >= 6 and all(apart(a, b) for i, a in enumerate(labels) for b in labels[i + 1:]),
+          f"{len(labels)} labels at the impact (ball names, forces), none over another")
+    app.key("l")
 
     for tab in ("Tuning", "Teaching", "Tuning", "Teaching"):
         app.click_widget(s, "tab " + tab)
