@@ -79,9 +79,9 @@ void estimate_readout(Lab& lab, MarginView& v) {
   mark("margin success");
   if (!r.nominal_success) ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "the intended stroke itself misses");
   if (!ImGui::BeginTable("margin sources", 3, ImGuiTableFlags_SizingStretchProp)) return;
-  ImGui::TableSetupColumn("error");
-  ImGui::TableSetupColumn("alone");
-  ImGui::TableSetupColumn("holds within");
+  ImGui::TableSetupColumn("error", ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn("alone", ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn("holds within", ImGuiTableColumnFlags_WidthStretch);  // wraps in a narrow panel
   ImGui::TableHeadersRow();
   static const char* names[] = {"aim (deg)", "speed (%)", "side (mm)", "height (mm)", "elevation (deg)"};
   for (int k = 0; k < kNoiseSources; ++k) {
@@ -90,7 +90,7 @@ void estimate_readout(Lab& lab, MarginView& v) {
     ImGui::TableNextColumn(), ImGui::TextColored(verdict_colour(r.alone[k]), "%.0f %%", 100 * r.alone[k]);
     ImGui::TableNextColumn();
     const Tolerance& t = r.tolerance[k];
-    ImGui::Text("%s%.3g .. %s%.3g", t.bounded_lo ? "" : "<", t.lo, t.bounded_hi ? "" : ">", t.hi);
+    ImGui::TextWrapped("%s%.3g .. %s%.3g", t.bounded_lo ? "" : "<", t.lo, t.bounded_hi ? "" : ">", t.hi);
   }
   ImGui::EndTable();
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "ui/panels.hpp"
+#include "ui/pictures.hpp"
 #include "ui/widgets.hpp"
 
 namespace shotlab {
@@ -67,7 +68,8 @@ void view_section(Lab& lab, Camera& camera) {
   ImGui::BeginDisabled(!lab.shot);
   if (ImGui::Button("Strobe picture")) lab.strobe_request = export_path(lab, "strobe", "png");
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip("the shot as a multiple exposure: the balls every tenth of the time shown, as a PNG");
+    ImGui::SetTooltip("the shot as a multiple exposure, as a PNG: the balls at %d moments from its start to its end, "
+                      "the earliest faintest", kStrobeExposures);
   ImGui::SameLine();
   if (ImGui::Button("Export CSV")) try {
       const std::string path = export_path(lab, "trajectory", "csv");

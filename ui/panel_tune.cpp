@@ -219,7 +219,7 @@ void diagnostics(const Lab& lab) {
   size_t largest = 0;
   const std::vector<std::vector<int>> islands = sim.island_balls();
   for (const auto& balls : islands) largest = std::max(largest, balls.size());
-  ImGui::Text("islands: %zu (largest %zu balls)", islands.size(), largest);
+  ImGui::Text("islands: %zu (the largest holds %zu ball%s)", islands.size(), largest, largest == 1 ? "" : "s");
   if (sim.status() == Status::StepLimit)
     ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "STEP LIMIT HIT: raise max steps or loosen the model");
   else if (sim.status() != Status::Ok)
@@ -230,7 +230,7 @@ void step_plot(Lab& lab) {
   if (!lab.shot || lab.shot->step_sizes().empty()) return;
   PlotSeries h{"accepted steps", IM_COL32(120, 200, 255, 255), {}, {}};
   for (const Sample& x : lab.shot->step_sizes()) h.time.push_back(x.time), h.value.push_back(std::log10(x.value));
-  PlotSpec spec{"step size, log10", "log10 s", lab.view_time, 0, std::max(lab.shot->sim().time(), 1e-6), false};
+  PlotSpec spec{"step size", "log10 s", lab.view_time, 0, std::max(lab.shot->sim().time(), 1e-6), false};
   if (const auto t = lab_plot(lab, "steps", spec, {h}, em(110))) lab.seek(*t);
 }
 
