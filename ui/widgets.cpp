@@ -56,16 +56,19 @@ bool slider(const char* id, double& v, double lo, double hi, const char* format,
   static ImGuiID typing = 0;
   static double typed = 0;
   const ImGuiID gid = ImGui::GetID(id);
-  const bool was_typing = typing == gid && ImGui::TempInputIsActive(gid);
-  if (!was_typing && typing == gid) typing = 0;
+  // Tab ends the entry before this slider is drawn again: what was typed still counts.
+  const bool ended_before = typing == gid && !ImGui::TempInputIsActive(gid);
+  if (ended_before) typing = 0;
+  const bool was_typing = typing == gid;
   ImGui::SetNextItemWidth(-FLT_MIN);
   const bool changed = ImGui::SliderScalar(id, ImGuiDataType_Double, was_typing ? &typed : &v, &lo, &hi, format,
                                            log ? ImGuiSliderFlags_Logarithmic : 0);
   const bool typing_now = ImGui::TempInputIsActive(gid);
   if (typing_now && !was_typing) typing = gid, typed = v;
-  if (typing_now || !was_typing) return typing_now ? false : changed;
-  typing = 0;  // the entry ended (Return, a click elsewhere; Escape restored the old text)
-  if (typed == v) return false;
+  if (typing_now) return false;
+  if (!was_typing && !ended_before) return changed;
+  typing = 0;  // the entry ended: Return, a click elsewhere or Tab apply it; Escape keeps v as it was (unrounded)
+  if (typed == v || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) return false;
   const double kept = std::isfinite(typed) ? std::clamp(typed, lo, hi) : v;
   if (kept != typed) {
     const char* name = id + std::strspn(id, "#");

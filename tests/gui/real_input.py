@@ -449,12 +449,19 @@ def developer(binary, root, display, work):
     time.sleep(0.5)
     s = app.state()
     check(abs(stiff(s) - 4e9) < 1, "Escape leaves the stiffness as it was")
+    # Tab moves on and keeps what was typed.
+    app.click_widget(s, "stiffness ball_ball", mods=("ctrl",))
+    app.key("ctrl+a")
+    app.type("3e9")
+    app.key("Tab")
+    s = app.wait(lambda s: abs(stiff(s) - 3e9) < 1, 10, "Tab applies the typed stiffness")
+    app.key("Escape")
     # Out of the slider's range: clamped to its top, and the note says so.
     app.click_widget(s, "stiffness ball_ball", mods=("ctrl",))
     app.key("ctrl+a")
     app.type("1e30")
     app.key("Return")
-    s = app.wait(lambda s: abs(stiff(s) - 4e9) > 1, 30, "the typed stiffness is taken")
+    s = app.wait(lambda s: abs(stiff(s) - 3e9) > 1, 30, "the typed stiffness is taken")
     check(stiff(s) == 1e12, f"1e30 typed sets the slider's top, 1e12 ({stiff(s):g})")
     check(s["message_kind"] == "refused" and "stiffness" in s["message"] and "1e+30" in s["message"],
           f"the note names the field and the value ({s['message']!r})")
