@@ -138,18 +138,21 @@ bool end_side_panel(const std::string& name) {
   return !ImGui::IsWindowCollapsed();
 }
 
-void same_line_if_fits(const char* next) {
-  const ImGuiStyle& style = ImGui::GetStyle();
-  const float width = ImGui::CalcTextSize(next, nullptr, true).x + style.FramePadding.x * 2;
+namespace {
+// On the same line as the last item when `width` px more fit in what is left of the row.
+void same_line_if_room(float width) {
   const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
-  if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
+  if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width <= right) ImGui::SameLine();
+}
+}  // namespace
+
+void same_line_if_fits(const char* next) {
+  same_line_if_room(ImGui::CalcTextSize(next, nullptr, true).x + ImGui::GetStyle().FramePadding.x * 2);
 }
 
 void same_line_if_checkbox_fits(const char* next) {
-  const ImGuiStyle& style = ImGui::GetStyle();
-  const float width = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(next, nullptr, true).x;
-  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
-  if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
+  same_line_if_room(ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +
+                    ImGui::CalcTextSize(next, nullptr, true).x);
 }
 
 void bar_chart(const char* id, const std::vector<Bar>& bars, double scale, const char* unit) {
