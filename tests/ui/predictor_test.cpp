@@ -42,8 +42,8 @@ TEST(Predictor, AFinishedPredictionRunsToRest) {
   EXPECT_EQ(p.wall_seconds(g), done.wall_seconds);
 }
 
-// While the window waits a millisecond at a time, the break hands out its paths so far: not finished, covering part of
-// the shot, and each ball's path so far is the start of its finished path, point for point.
+// While the window waits a millisecond at a time, the break hands out its paths so far: not finished, some covering part
+// of the shot, and each ball's path so far is the start of its finished path, point for point.
 TEST(Predictor, ABreakHandsOutItsPathsSoFarWhileTheWindowWaits) {
   Predictor p;
   const long g = p.request(load_scene(test::preset("break.json")), kLimit);
@@ -53,8 +53,9 @@ TEST(Predictor, ABreakHandsOutItsPathsSoFarWhileTheWindowWaits) {
   for (const Prediction& s : seen) {
     ASSERT_EQ(s.generation, g);
     if (s.complete) continue;
-    ++partial;
-    EXPECT_LT(s.simulated, done.simulated);
+    // A snapshot taken after the last step, before the worker marks it finished, already covers the whole shot.
+    EXPECT_LE(s.simulated, done.simulated);
+    if (s.simulated < done.simulated) ++partial;
     ASSERT_EQ(s.paths.size(), done.paths.size());
     for (size_t b = 0; b < s.paths.size(); ++b) {
       ASSERT_LE(s.paths[b].size(), done.paths[b].size());
