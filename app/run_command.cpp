@@ -69,11 +69,15 @@ int run(const RunOptions& o) {
   for (AtomicFile* f : {out.get(), csv.get()})
     if (f) f->commit();
   const Stats& st = sim.stats();
-  if (!o.quiet)
-    std::cout << (scene.name.empty() ? o.scene : scene.name) << ": t = " << sim.time() << " s, "
-              << method_name(sim.model().integrator.method) << " " << st.steps << " steps (" << st.rejected_steps
-              << " rejected), " << st.rhs_evaluations << " rhs evaluations, " << sim.events().size()
-              << " events, wall " << st.wall_seconds << " s\n";
+  if (!o.quiet) {
+    std::cout << (scene.name.empty() ? o.scene : scene.name) << ": t = " << sim.time() << " s, ";
+    if (sim.model().options.contact == ContactModel::Rigid)  // no steps: one impulse or change of kind an event
+      std::cout << "rigid model, " << st.steps << " collisions and changes of motion, ";
+    else
+      std::cout << method_name(sim.model().integrator.method) << " " << st.steps << " steps (" << st.rejected_steps
+                << " rejected), " << st.rhs_evaluations << " rhs evaluations, ";
+    std::cout << sim.events().size() << " events, wall " << st.wall_seconds << " s\n";
+  }
   if (sim.status() != Status::Ok) {
     std::cerr << "shotlab: " << o.scene << ": simulation stopped (" << status_name(sim.status())
               << "): " << sim.diagnostic() << "\n";

@@ -20,6 +20,8 @@ double bisect(double lo, double hi, const Changed& changed, double resolution = 
   return hi;
 }
 
+}  // namespace
+
 const char* transition_kind(Motion from, Motion to) {
   if (from == Motion::Airborne) return "landed";
   switch (to) {
@@ -32,8 +34,6 @@ const char* transition_kind(Motion from, Motion to) {
   }
   return "?";
 }
-
-}  // namespace
 
 const char* motion_name(Motion m) {
   static constexpr const char* names[] = {"stationary", "spinning", "rolling", "sliding", "airborne", "pocketed"};

@@ -19,6 +19,9 @@ namespace shotlab {
 // whose normal points most upwards) with the model's rest_speed threshold on tangential speed and slip.
 Motion classify(const Model& model, const ModelIndex& index, const State& state, const double* x, int i);
 
+// The event kind of a ball's change of motion state (shotlab/event.hpp): "rolling", "stopped", "landed", ...
+const char* transition_kind(Motion from, Motion to);
+
 // A ball that leaves play during a step (fell through a pocket or off the table).
 struct Exit {
   int ball;

@@ -30,6 +30,14 @@ bool parse_method(const std::string& name, Method& out) {
   return false;
 }
 
+const char* contact_model_name(ContactModel m) { return m == ContactModel::Rigid ? "rigid" : "soft"; }
+
+bool parse_contact_model(const std::string& name, ContactModel& out) {
+  if (name != "soft" && name != "rigid") return false;
+  out = name == "rigid" ? ContactModel::Rigid : ContactModel::Soft;
+  return true;
+}
+
 bool is_adaptive(Method m) { return m != Method::Euler && m != Method::RK4; }
 
 const ContactMaterial& Model::material(const std::string& name) const {

@@ -5,6 +5,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "shotlab/simulation.hpp"
+
 namespace shotlab {
 
 const BallKind* find_ball_kind(const std::string& name) {
@@ -111,6 +113,10 @@ Prepared prepare(const Scene& scene) {
     out.strike = strike(*scene.cue, scene.balls[i].spec.mass, scene.balls[i].spec.radius);
     set_velocity(out.state.x, i, velocity(out.state.x, i) + out.strike->velocity);
     set_spin(out.state.x, i, spin(out.state.x, i) + out.strike->spin);
+  }
+  if (out.model.options.contact == ContactModel::Rigid) {
+    const std::string problem = rigid_unsupported(out.model, out.state);
+    if (!problem.empty()) fail("model.contact: the rigid model cannot run this scene: " + problem);
   }
   return out;
 }

@@ -1,10 +1,21 @@
 #include "shotlab/simulation.hpp"
 
+#include "rigid_world.hpp"
 #include "world.hpp"
 
 namespace shotlab {
 
-Simulation::Simulation(Model model, State initial) : world_(std::make_unique<World>(std::move(model), std::move(initial))) {}
+namespace {
+
+std::unique_ptr<Runner> runner_for(Model model, State initial) {
+  if (model.options.contact == ContactModel::Rigid)
+    return std::make_unique<RigidWorld>(std::move(model), std::move(initial));
+  return std::make_unique<World>(std::move(model), std::move(initial));
+}
+
+}  // namespace
+
+Simulation::Simulation(Model model, State initial) : world_(runner_for(std::move(model), std::move(initial))) {}
 Simulation::~Simulation() = default;
 
 Status Simulation::advance(double dt) { return world_->advance(dt); }

@@ -15,11 +15,12 @@
 #include "island.hpp"
 #include "shotlab/model.hpp"
 #include "partition.hpp"
+#include "runner.hpp"
 #include "shotlab/state.hpp"
 
 namespace shotlab {
 
-class World {
+class World final : public Runner {
  public:
   World(Model model, State initial);
   World(const World&) = delete;
@@ -27,30 +28,30 @@ class World {
 
   // Advance the clock by dt >= 0 s (a negative dt throws std::invalid_argument). Returns Ok, or why it stopped (then status() stays so and diagnostic() says
   // where and which balls; further calls do nothing).
-  Status advance(double dt);
+  Status advance(double dt) override;
   // As advance(), but the step limit (max_steps_per_call) keeps counting from the previous call: a caller that stops
   // at sample times inside a window of its own counts the limit per window, however it samples.
-  Status advance_on(double dt);
+  Status advance_on(double dt) override;
 
-  double time() const { return state_.time; }
-  const State& state() const { return state_; }
-  const Model& model() const { return model_; }
-  const std::vector<Event>& events() const { return events_; }
-  const Stats& stats() const { return stats_; }
-  Status status() const { return status_; }
-  const std::string& diagnostic() const { return diagnostic_; }
+  double time() const override { return state_.time; }
+  const State& state() const override { return state_; }
+  const Model& model() const override { return model_; }
+  const std::vector<Event>& events() const override { return events_; }
+  const Stats& stats() const override { return stats_; }
+  Status status() const override { return status_; }
+  const std::string& diagnostic() const override { return diagnostic_; }
 
-  Motion motion(int ball) const { return classify(model_, index_, state_, state_.x.data(), ball); }
-  Energy energy() const { return shotlab::energy(model_, state_); }
-  Vec3 momentum() const { return shotlab::momentum(model_, state_); }
-  std::vector<Contact> contacts() const { return shotlab::contacts(model_, state_); }
+  Motion motion(int ball) const override { return classify(model_, index_, state_, state_.x.data(), ball); }
+  Energy energy() const override { return shotlab::energy(model_, state_); }
+  Vec3 momentum() const override { return shotlab::momentum(model_, state_); }
+  std::vector<Contact> contacts() const override { return shotlab::contacts(model_, state_); }
   // True when every ball in play is stationary (or out of play): nothing will move again.
-  bool at_rest() const;
+  bool at_rest() const override;
 
   // Called after every accepted step of any island (odeint's observer): step-size plots, per-contact counts.
-  void set_observer(std::function<void(const StepView&)> observer) { observer_ = std::move(observer); }
+  void set_observer(std::function<void(const StepView&)> observer) override { observer_ = std::move(observer); }
   // The balls (scene indices) each island integrates together now.
-  std::vector<std::vector<int>> island_balls() const;
+  std::vector<std::vector<int>> island_balls() const override;
 
  private:
   // Splits the balls of `group` (islands at time t or, one step at most, past it) and the awake balls `awake` (in no

@@ -168,6 +168,9 @@ void read_options(const JsonNode& m, Options& o) {
     else if (v.string() == "plain") use_path(o, SolverPath::Plain);
     else v.fail("must be \"fast\" or \"plain\", got " + describe(v.raw()));
   });
+  m.optional("contact", [&](const JsonNode& v) {
+    if (!parse_contact_model(v.string(), o.contact)) v.fail("must be \"soft\" or \"rigid\", got " + describe(v.raw()));
+  });
   read_fields(m, o, kOptionNumbers);
   read_fields(m, o, kOptionSwitches);
   m.finish();

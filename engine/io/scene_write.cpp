@@ -76,6 +76,7 @@ json scene_to_json(const Scene& s) {
   doc["allow_overlap"] = s.allow_overlap;
   doc["gravity"] = vec(s.model.options.gravity);
   doc["model"] = json::object();
+  doc["model"]["contact"] = contact_model_name(s.model.options.contact);
   write_fields(doc["model"], s.model.options, kOptionNumbers);
   write_fields(doc["model"], s.model.options, kOptionSwitches);
   const IntegratorOptions& o = s.model.integrator;

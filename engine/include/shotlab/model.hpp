@@ -51,7 +51,15 @@ struct IntegratorOptions {
 
 inline constexpr double kDefaultSleepTime = 0.2;  // s
 
+// Which contact model moves the balls (docs/model.md#rigid-model). Soft: the thesis's compliant contacts, integrated;
+// the reference. Rigid: balls kept on a table's bed, in closed form between instant impulses: event-driven, far
+// faster, a different model with its own accuracy (docs/bench/speed.md).
+enum class ContactModel { Soft, Rigid };
+const char* contact_model_name(ContactModel m);  // "soft", "rigid"
+bool parse_contact_model(const std::string& name, ContactModel& out);
+
 struct Options {
+  ContactModel contact = ContactModel::Soft;
   Vec3 gravity{0.0, -9.81, 0.0};  // m/s^2
   double friction_sharpness = 1000.0;  // k of fricstep(k s), s/m: friction reaches full strength at 1/k m/s of slip
   double friction_rate_limit = 2e5;    // 1/s: the fastest a smoothed friction term may relax a slip; under heavy

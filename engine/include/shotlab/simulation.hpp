@@ -16,10 +16,17 @@
 
 namespace shotlab {
 
-class World;
+class Runner;
+
+// What keeps the rigid model (ContactModel::Rigid) from running a scene: a rod, a collider other than one flat, level
+// bed and level capsules (cushions, jaws), gravity not straight down, a ball off its resting height on the bed or
+// leaving it upwards. Empty when it can run.
+std::string rigid_unsupported(const Model& model, const State& state);
 
 class Simulation {
  public:
+  // Runs the model's contact model (Options::contact); a scene the rigid model cannot run throws
+  // std::invalid_argument saying why (rigid_unsupported, scene.hpp).
   Simulation(Model model, State initial);
   ~Simulation();
   Simulation(const Simulation&) = delete;
@@ -52,7 +59,7 @@ class Simulation {
   std::vector<std::vector<int>> island_balls() const;
 
  private:
-  std::unique_ptr<World> world_;
+  std::unique_ptr<Runner> world_;
 };
 
 }  // namespace shotlab

@@ -15,7 +15,7 @@ enum class Status {
 const char* status_name(Status s);
 
 struct Stats {
-  long steps = 0;           // accepted steps (of all islands)
+  long steps = 0;           // accepted steps (of all islands); on the rigid model, the events it handled
   long rejected_steps = 0;  // attempts the error control threw away
   long redone_steps = 0;    // accepted attempts redone to end where a contact begins or ends
   long rhs_evaluations = 0; // calls of the right-hand side (Jacobian columns included)

@@ -1,0 +1,77 @@
+// Polynomials of degree 4 at most, in time: the rigid model's gaps (a squared distance minus a squared reach) along
+// paths of constant acceleration. Roots are isolated between the derivative's roots and bisected, so a double or a
+// grazing root is neither missed nor found twice.
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace shotlab {
+
+// c[0] + c[1] s + ... + c[4] s^4.
+using Quartic = std::array<double, 5>;
+
+inline double evaluate(const Quartic& c, double s) {
+  return (((c[4] * s + c[3]) * s + c[2]) * s + c[1]) * s + c[0];
+}
+
+inline Quartic derivative(const Quartic& c) { return {c[1], 2 * c[2], 3 * c[3], 4 * c[4], 0.0}; }
+
+// The root of c in [a, b], where c(a) and c(b) have opposite signs or c(b) = 0, to about the last bit: Newton steps
+// while they stay inside the shrinking bracket, halving where they would leave it.
+inline double bisect_root(const Quartic& c, double a, double b) {
+  const bool rising = evaluate(c, a) < 0;
+  const Quartic d = derivative(c);
+  double x = 0.5 * (a + b);
+  for (int k = 0; k < 200; ++k) {
+    const double f = evaluate(c, x);
+    if (f == 0) return x;
+    ((f < 0) == rising ? a : b) = x;
+    const double slope = evaluate(d, x), newton = slope != 0 ? x - f / slope : a;
+    const double next = newton > a && newton < b ? newton : 0.5 * (a + b);
+    if (!(next > a && next < b)) return b;
+    if (std::abs(next - x) <= 1e-15 * std::max(1.0, std::abs(x))) return next;
+    x = next;
+  }
+  return x;
+}
+
+// The points in (lo, hi) where c changes sign, ascending, at most `degree` of them (count returned). c's degree must
+// be at most `degree`.
+inline int sign_changes(const Quartic& c, int degree, double lo, double hi, std::array<double, 4>& out) {
+  if (degree <= 0) return 0;
+  std::array<double, 6> edges{lo};
+  int n_edges = 1;
+  if (degree > 1) {
+    std::array<double, 4> turns{};
+    const int n = sign_changes(derivative(c), degree - 1, lo, hi, turns);
+    for (int k = 0; k < n; ++k) edges[n_edges++] = turns[k];
+  }
+  edges[n_edges++] = hi;
+  int count = 0;
+  for (int k = 0; k + 1 < n_edges; ++k) {
+    const double fa = evaluate(c, edges[k]), fb = evaluate(c, edges[k + 1]);
+    if ((fa < 0 && fb > 0) || (fa > 0 && fb < 0)) out[count++] = bisect_root(c, edges[k], edges[k + 1]);
+  }
+  return count;
+}
+
+// s: the earliest time in [0, h] at which the gap c goes from positive to zero or below (a contact begins); 0 when it
+// is at most zero and closing at s = 0; +inf when it does not.
+inline double first_entry(const Quartic& c, double h) {
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  const Quartic d = derivative(c);
+  if (evaluate(c, 0) <= 0 && evaluate(d, 0) < 0) return 0;
+  std::array<double, 6> edges{0.0};
+  std::array<double, 4> turns{};
+  int n_edges = 1;
+  const int n = sign_changes(d, 3, 0.0, h, turns);
+  for (int k = 0; k < n; ++k) edges[n_edges++] = turns[k];
+  edges[n_edges++] = h;
+  for (int k = 0; k + 1 < n_edges; ++k)
+    if (evaluate(c, edges[k]) > 0 && evaluate(c, edges[k + 1]) <= 0) return bisect_root(c, edges[k], edges[k + 1]);
+  return kNever;
+}
+
+}  // namespace shotlab

@@ -1,0 +1,106 @@
+#include "rigid_collide.hpp"
+
+#include <cmath>
+
+namespace shotlab {
+
+namespace {
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
+
+Vec3 horizontal(const Vec3& v) { return {v.x, 0.0, v.z}; }
+
+// The polynomial l0 + l1 s + l2 s^2 of a linear function `dir` . (x - origin) of the centre on p.
+Quartic along(const Parabola& p, const Vec3& origin, const Vec3& dir) {
+  return {glm::dot(p.p - origin, dir), glm::dot(p.v, dir), 0.5 * glm::dot(p.a, dir), 0.0, 0.0};
+}
+
+Quartic squared_minus(const Quartic& l, double reach) {
+  return {l[0] * l[0] - reach * reach, 2 * l[0] * l[1], l[1] * l[1] + 2 * l[0] * l[2], 2 * l[1] * l[2], l[2] * l[2]};
+}
+
+double inertia(const Body& b) { return 0.4 * b.mass * b.radius * b.radius; }
+
+// Friction impulse (N s) against the slip vt of a contact whose tangential compliance is `compliance` (s/kg): what
+// stops the slip, at most `limit`; along -vt.
+Vec3 friction_impulse(const Vec3& vt, double compliance, double limit) {
+  const double slip = glm::length(vt);
+  if (!(slip > 0)) return Vec3{0.0};
+  return -std::min(limit, slip / compliance) * vt / slip;
+}
+
+}  // namespace
+
+double point_entry(const Parabola& p, const Vec3& centre, double reach, double h) {
+  return first_entry(gap_between(p, Parabola{centre, Vec3{0.0}, Vec3{0.0}}, reach), h);
+}
+
+double rail_entry(const Parabola& p, double radius, const Rail& rail, double h) {
+  // In the bed's plane the capsule is a slab of half-width `reach` along the segment, capped by discs at its ends.
+  const double dy = p.p.y - rail.a.y, full = radius + rail.radius;
+  if (std::abs(dy) >= full) return kNever;
+  const double reach = std::sqrt(full * full - dy * dy);
+  const Vec3 seg = horizontal(rail.b - rail.a);
+  const double length = glm::length(seg);
+  double first = std::min(point_entry(p, rail.a, reach, h), point_entry(p, rail.b, reach, h));
+  if (length > 0) {
+    const Vec3 e = seg / length, n{-e.z, 0.0, e.x};
+    const double s = first_entry(squared_minus(along(p, rail.a, n), reach), std::min(h, first));
+    const double lambda = evaluate(along(p, rail.a, e), s);
+    if (s < first && lambda >= 0 && lambda <= length) first = s;
+  }
+  return first;
+}
+
+double edge_exit(const Parabola& p, const Vec3& origin, const Vec3& u, const Vec3& v, double h) {
+  double first = kNever;
+  for (const Vec3& side : {u, v}) {
+    const Quartic l = along(p, origin, side / glm::dot(side, side));  // 0 to 1 across the bed
+    const Quartic far{1 - l[0], -l[1], -l[2], 0.0, 0.0};
+    first = std::min({first, first_entry(l, h), first_entry(far, h)});
+  }
+  return first;
+}
+
+double closing_speed(const BallState& a, const BallState& b, const Vec3& n) { return glm::dot(a.v - b.v, n); }
+
+double collide_balls(BallState& a, const Body& ba, BallState& b, const Body& bb, const Vec3& n, double e,
+                     const ContactMaterial& material) {
+  const double closing = closing_speed(a, b, n);
+  if (!(closing > 0)) return 0;
+  const double jn = (1 + e) * closing / (1 / ba.mass + 1 / bb.mass);
+  // The contact points' relative velocity (a's point at +R_a n, b's at -R_b n), less its normal part.
+  const Vec3 vc = a.v + glm::cross(a.w, ba.radius * n) - b.v - glm::cross(b.w, -bb.radius * n);
+  const Vec3 vt = vc - glm::dot(vc, n) * n;
+  const double compliance = 1 / ba.mass + ba.radius * ba.radius / inertia(ba) + 1 / bb.mass +
+                            bb.radius * bb.radius / inertia(bb);
+  const Vec3 on_a = -jn * n + friction_impulse(vt, compliance, material.friction_at(glm::length(vt)) * jn);
+  a.v += on_a / ba.mass, a.w += glm::cross(ba.radius * n, on_a) / inertia(ba);
+  b.v -= on_a / bb.mass, b.w += glm::cross(-bb.radius * n, -on_a) / inertia(bb);
+  a.v.y = b.v.y = 0;  // the bed takes any vertical part
+  return closing;
+}
+
+Vec3 rail_normal(const BallState& k, const Rail& rail) {
+  const Vec3 ab = rail.b - rail.a;
+  const double along = glm::dot(ab, ab) > 0 ? std::clamp(glm::dot(k.p - rail.a, ab) / glm::dot(ab, ab), 0.0, 1.0) : 0;
+  return glm::normalize(k.p - (rail.a + along * ab));
+}
+
+double collide_rail(BallState& k, const Body& body, const Vec3& n, double e, double friction) {
+  const Vec3 nh = horizontal(n);
+  const double closing = -glm::dot(k.v, n);
+  if (!(closing > 0) || !(glm::dot(nh, nh) > 0)) return 0;
+  // The bed cancels the normal impulse's vertical part, so only n's horizontal part turns the ball round.
+  const double jn = (1 + e) * closing * body.mass / glm::dot(nh, nh);
+  const Vec3 r = -body.radius * n;  // centre to the cushion's contact point
+  const Vec3 vc = k.v + glm::cross(k.w, r);
+  const Vec3 vt = vc - glm::dot(vc, n) * n;
+  const double compliance = 1 / body.mass + body.radius * body.radius / inertia(body);
+  const Vec3 push = jn * n + friction_impulse(vt, compliance, friction * jn);
+  k.v += push / body.mass, k.w += glm::cross(r, push) / inertia(body);
+  k.v.y = 0;
+  return closing;
+}
+
+}  // namespace shotlab

@@ -1,0 +1,206 @@
+// The rigid model (ContactModel::Rigid, docs/model.md#rigid-model) against ../shared/reference/VALIDATION.md's closed
+// forms, each on a real scene run by the real engine with "contact": "rigid", and against what any model must keep:
+// energy that never grows, balls that stay on the table, results that do not depend on how the caller slices time.
+#include <cmath>
+#include <fstream>
+
+#include "shotlab/diagnostics.hpp"
+#include "shotlab/restitution.hpp"
+#include "support.hpp"
+
+namespace shotlab::test {
+namespace {
+
+nlohmann::json rigid(nlohmann::json doc) {
+  doc["model"]["contact"] = "rigid";
+  return doc;
+}
+
+nlohmann::json ball(const std::string& id, double x, double vx, double topspin = 0) {
+  // Topspin T = R w_top; rolling in +x has w_z = -v/R.
+  return {{"id", id}, {"position", {x, kR, 0}}, {"velocity", {vx, 0, 0}}, {"angular_velocity", {0, 0, -topspin / kR}}};
+}
+
+struct Rolled {
+  double tau, distance, speed;
+};
+
+Rolled slide_to_roll(double v0, double topspin) {
+  const Scene s = scene(rigid(cloth_scene(nlohmann::json::array({ball("cue", 0, v0, topspin)}), {{"friction", 0.2}, {"rolling_resistance", 0},
+                                                                          {"spin_friction", 0}})));
+  auto sim = simulate(s);
+  run_until(*sim, 3.0, [&] { return event_time(*sim, "rolling", "cue") >= 0; });
+  const double tau = event_time(*sim, "rolling", "cue");
+  auto replay = simulate(s);
+  EXPECT_EQ(replay->advance(tau), Status::Ok);
+  return {tau, position(replay->state().x, 0).x, velocity(replay->state().x, 0).x};
+}
+
+// R1 and R2: the slide's time, distance and final speed (tolerance 0.5 %; the rigid model's closed form meets them to
+// round-off, so the test asks for 1e-9).
+TEST(Rigid, R1R2_SlidesThenRolls) {
+  struct Case {
+    double topspin, tau, speed, distance;
+  };
+  for (const Case& c : {Case{0, 0.29125, 1.42857, 0.49928}, Case{-4, 0.87374, 0.28571, 0.99856},
+                        Case{1, 0.14562, 1.71429, 0.27044}}) {
+    const Rolled r = slide_to_roll(2.0, c.topspin);
+    EXPECT_NEAR(r.tau, c.tau, 1e-5) << "topspin " << c.topspin;  // VALIDATION.md quotes 5 digits
+    EXPECT_NEAR(r.speed, c.speed, 1e-5) << "topspin " << c.topspin;
+    EXPECT_NEAR(r.distance, c.distance, 1e-5) << "topspin " << c.topspin;
+  }
+}
+
+TEST(Rigid, R3_RollsToAStop) {
+  auto sim = simulate(scene(rigid(cloth_scene(nlohmann::json::array({ball("cue", 0, 1.0, 1.0)}), {{"rolling_resistance", 0.01}}))));
+  run_until(*sim, 12.0, [&] { return event_time(*sim, "stopped", "cue") >= 0; }, 0.1);
+  EXPECT_NEAR(event_time(*sim, "stopped", "cue"), 10.194, 0.0005 * 10.194);
+  EXPECT_NEAR(position(sim->state().x, 0).x, 5.097, 0.0005 * 5.097);
+  EXPECT_TRUE(sim->at_rest());
+}
+
+TEST(Rigid, R4_VerticalSpinDecaysLinearlyAndDoesNotBendAPath) {
+  const double w0 = 20.0, mu_sp = 0.0117, alpha = 5 * mu_sp * kG / (2 * kR);
+  nlohmann::json top = ball("top", 0, 0);
+  top["angular_velocity"] = {0, w0, 0};
+  auto sim = simulate(scene(rigid(cloth_scene(nlohmann::json::array({top}), {{"spin_friction", mu_sp}}))));
+  ASSERT_EQ(sim->advance(0.5 * w0 / alpha), Status::Ok);
+  EXPECT_NEAR(spin(sim->state().x, 0).y, 0.5 * w0, 1e-9);
+  EXPECT_EQ(sim->motion(0), Motion::Spinning);
+  run_until(*sim, 2 * w0 / alpha, [&] { return event_time(*sim, "stopped", "top") >= 0; });
+  EXPECT_NEAR(event_time(*sim, "stopped", "top"), w0 / alpha, 1e-9);
+
+  nlohmann::json roller = ball("cue", 0, 1.0, 1.0);
+  roller["angular_velocity"][1] = 30.0;
+  auto straight = simulate(scene(rigid(cloth_scene(nlohmann::json::array({roller})))));
+  run_until(*straight, 3.0, [&] { return position(straight->state().x, 0).x >= 1.0; }, 1e-3);
+  EXPECT_LT(std::abs(position(straight->state().x, 0).z), 1e-4);
+}
+
+// R6 and R7: a rolling cue ball on a resting ball, frictionless balls whose linear damping gives zeta = 0.05 at the
+// impact speed: restitution 0.9176 (R6, force clamped). Just after the impact the cue ball keeps (1 - e) / 2 v and the
+// object ball takes (1 + e) / 2 v; once both roll, (5/7)(1 - e)/2 v + (2/7) v and (5/7)(1 + e)/2 v (R7).
+TEST(Rigid, R6R7_HeadOnImpactRestitutionAndSpeeds) {
+  const double v = 1.0, k = 5e8, m_eff = kM / 2, zeta = 0.05, e = 0.9176;
+  auto doc = rigid(cloth_scene(nlohmann::json::array({ball("cue", -0.2, v, v), ball("ob", 0, 0)}),
+                               {{"rolling_resistance", 0}}));
+  doc["materials"]["ball_ball"] = {{"stiffness", k}, {"friction", 0},
+                                   {"damping", zeta * std::pow(m_eff, 0.6) * std::pow(k, 0.4) * std::pow(v, 0.2)}};
+  const Scene s = scene(doc);
+  auto sim = simulate(s);
+  run_until(*sim, 1.0, [&] { return event_time(*sim, "contact_begin", "cue", "ob") >= 0; }, 1e-3);
+  const double hit = event_time(*sim, "contact_begin", "cue", "ob");
+  EXPECT_NEAR(hit, (0.2 - 2 * kR) / v, 1e-12);  // rolling without resistance: at v all the way
+  auto at_hit = simulate(s);
+  ASSERT_EQ(at_hit->advance(hit), Status::Ok);  // the impulse is taken at its instant
+  EXPECT_NEAR(velocity(at_hit->state().x, 0).x, (1 - e) / 2 * v, 0.002 * v);
+  EXPECT_NEAR(velocity(at_hit->state().x, 1).x, (1 + e) / 2 * v, 0.002 * v);
+  run_until(*sim, 5.0, [&] { return sim->motion(0) == Motion::Rolling && sim->motion(1) == Motion::Rolling; });
+  EXPECT_NEAR(velocity(sim->state().x, 0).x, 5.0 / 7 * (1 - e) / 2 * v + 2.0 / 7 * v, 0.005 * v);
+  EXPECT_NEAR(velocity(sim->state().x, 1).x, 5.0 / 7 * (1 + e) / 2 * v, 0.005 * v);
+}
+
+// A frictionless cushion sends a sliding, spinless ball back at its angle with the normal part times the cushion's
+// restitution. A resting ball touches the nose at the WPA nose height 36.5 mm, so the contact normal is tilted down by
+// asin((36.5 - 28.575) / 28.575) = 16.1 degrees: the closing speed along it is 0.8 cos(16.1) = 0.7686 m/s, for which the
+// cushion's linear damping is set to zeta = 0.1 (R6: e = 0.8449, m_eff = m). The bed takes the vertical part of the
+// push, so the ball comes back along the table at e times its 0.8 m/s across.
+TEST(Rigid, AFrictionlessCushionReflectsWithItsRestitution) {
+  const double k = 3e7, zeta = 0.1, e = 0.8449;
+  const double closing = 0.8 * std::cos(std::asin((0.0365 - kR) / kR));
+  auto doc = rigid({{"table", {{"type", "pool"}}}});
+  doc["materials"]["ball_cushion"] = {
+      {"stiffness", k}, {"friction", 0},
+      {"damping", zeta * std::pow(kM, 0.6) * std::pow(k, 0.4) * std::pow(closing, 0.2)}};
+  doc["materials"]["ball_cloth"] = {{"friction", 0}, {"rolling_resistance", 0}, {"spin_friction", 0}};
+  doc["balls"] = {{{"id", "cue"}, {"position", {0, kR, 0.3}}, {"velocity", {0.6, 0, 0.8}}}};
+  auto sim = simulate(scene(doc));
+  run_until(*sim, 2.0, [&] { return event_time(*sim, "contact_begin", "cue") >= 0; }, 1e-3);
+  ASSERT_EQ(sim->advance(0.01), Status::Ok);
+  const Vec3 after = velocity(sim->state().x, 0);
+  EXPECT_NEAR(after.x, 0.6, 1e-9);
+  EXPECT_NEAR(after.z, -e * 0.8, 0.002);
+}
+
+// Any model: the break's energy never grows, every ball ends at rest on the bed or in a pocket, within the table.
+TEST(Rigid, TheBreakLosesEnergyAndEndsAtRestOnTheTable) {
+  nlohmann::json doc = nlohmann::json::parse(std::ifstream(preset("break.json")));
+  doc["model"]["contact"] = "rigid";
+  auto sim = simulate(scene(doc));
+  double last = sim->energy().kinetic;
+  for (int frame = 0; frame < 60 * 30 && !sim->at_rest(); ++frame) {
+    ASSERT_EQ(sim->advance(1.0 / 60), Status::Ok) << sim->diagnostic();
+    const double now = sim->energy().kinetic;
+    EXPECT_LE(now, last + 1e-12) << "at t = " << sim->time();
+    last = now;
+  }
+  ASSERT_TRUE(sim->at_rest());
+  int pocketed = 0;
+  for (int i = 0; i < sim->state().ball_count(); ++i) {
+    const Vec3 p = position(sim->state().x, i);
+    if (!sim->state().in_play[i]) {
+      ++pocketed;
+      continue;
+    }
+    EXPECT_NEAR(p.y, kR, 1e-4) << sim->model().balls[i].id;
+    EXPECT_LT(std::abs(p.x), 1.27 - kR + 1e-9) << sim->model().balls[i].id;
+    EXPECT_LT(std::abs(p.z), 0.635 - kR + 1e-9) << sim->model().balls[i].id;
+  }
+  EXPECT_LT(pocketed, 16);
+  EXPECT_GT(sim->stats().steps, 50);  // events: the rack spreads through many collisions
+}
+
+// Frames of 1/30 s, 1/240 s or one call give bit-identical results, as on the soft model.
+TEST(Rigid, ResultsDoNotDependOnTheFrameLength) {
+  nlohmann::json doc = nlohmann::json::parse(std::ifstream(preset("break.json")));
+  doc["model"]["contact"] = "rigid";
+  const Scene s = scene(doc);
+  auto coarse = simulate(s), fine = simulate(s), whole = simulate(s);
+  for (int f = 0; f < 30 * 4; ++f) ASSERT_EQ(coarse->advance(1.0 / 30), Status::Ok);
+  for (int f = 0; f < 240 * 4; ++f) ASSERT_EQ(fine->advance(1.0 / 240), Status::Ok);
+  ASSERT_EQ(whole->advance(coarse->time()), Status::Ok);
+  EXPECT_EQ(coarse->state().x, whole->state().x);
+  for (size_t k = 0; k < coarse->state().x.size(); ++k) EXPECT_NEAR(fine->state().x[k], coarse->state().x[k], 1e-12);
+  EXPECT_EQ(coarse->events().size(), whole->events().size());
+}
+
+// A scene the rigid model cannot run is refused with the field and the reason: a jump shot (the cue drives the ball
+// into the bed hard enough to hop off it), a ball leaving the bed upwards, a rod; a model name it does not know.
+TEST(Rigid, RefusesScenesOffTheBed) {
+  auto refused = [](nlohmann::json doc, const std::string& why) {
+    doc["model"]["contact"] = "rigid";
+    try {
+      simulate(scene(doc));
+      ADD_FAILURE() << "ran on the rigid model: " << why;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("model.contact"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
+  };
+  refused(nlohmann::json::parse(std::ifstream(preset("jump.json"))), "hop");
+  nlohmann::json up = ball("cue", 0, 1);
+  up["velocity"][1] = 0.5;
+  refused(cloth_scene(nlohmann::json::array({up})), "leaves the bed upwards");
+  refused(nlohmann::json::parse(std::ifstream(preset("cradle.json"))), "rods");
+  nlohmann::json typo = rigid(cloth_scene(nlohmann::json::array({ball("cue", 0, 1)})));
+  typo["model"]["contact"] = "hard";
+  try {
+    scene(typo);
+    ADD_FAILURE() << "contact \"hard\" was taken";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("\"soft\" or \"rigid\""), std::string::npos) << e.what();
+  }
+}
+
+// The restitution the rigid model reads off the soft law's table agrees with a head-on impact integrated at that speed.
+TEST(Rigid, TabulatedRestitutionMatchesTheScaledImpact) {
+  for (const ContactMaterial& m : {default_ball_ball(), default_ball_cushion(), default_ball_cloth()})
+    for (double v : {0.013, 0.1, 0.77, 1.0, 3.3, 9.9}) {
+      const double T = std::pow(kM / 2 * v * v / m.stiffness, 1 / (m.exponent + 1)) / v;
+      const double exact = scaled_impact(m.damping_law, m.exponent, m.damping * T / (kM / 2)).restitution;
+      EXPECT_NEAR(restitution_at(m, kM / 2, v), exact, 1e-5) << "v = " << v;
+    }
+}
+
+}  // namespace
+}  // namespace shotlab::test
