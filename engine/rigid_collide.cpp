@@ -87,7 +87,7 @@ Vec3 rail_normal(const BallState& k, const Rail& rail) {
   return glm::normalize(k.p - (rail.a + along * ab));
 }
 
-double collide_rail(BallState& k, const Body& body, const Vec3& n, double e, double friction) {
+double collide_rail(BallState& k, const Body& body, const Vec3& n, double e, double friction, double bed_friction) {
   const Vec3 nh = horizontal(n);
   const double closing = -glm::dot(k.v, n);
   if (!(closing > 0) || !(glm::dot(nh, nh) > 0)) return 0;
@@ -99,6 +99,12 @@ double collide_rail(BallState& k, const Body& body, const Vec3& n, double e, dou
   const double compliance = 1 / body.mass + body.radius * body.radius / inertia(body);
   const Vec3 push = jn * n + friction_impulse(vt, compliance, friction * jn);
   k.v += push / body.mass, k.w += glm::cross(r, push) / inertia(body);
+  // The bed stops what the push drives into it, and with that impulse its friction acts against the slip at the bed.
+  const double pressed = std::max(0.0, -k.v.y * body.mass);
+  const Vec3 under = -body.radius * kUp;
+  const Vec3 slip = k.v + glm::cross(k.w, under);
+  const Vec3 rub = friction_impulse({slip.x, 0.0, slip.z}, compliance, bed_friction * pressed);
+  k.v += rub / body.mass, k.w += glm::cross(under, rub) / inertia(body);
   k.v.y = 0;
   return closing;
 }

@@ -38,8 +38,9 @@ double closing_speed(const BallState& a, const BallState& b, const Vec3& n);
 // A ball touching a rail: the unit normal from the nearest point of the rail's axis to the ball's centre.
 Vec3 rail_normal(const BallState& k, const Rail& rail);
 // A ball closing on a rail with normal n: the normal impulse (and the bed's, which keeps the ball on the bed) that
-// sends it back at restitution e times its closing speed in the bed's plane, and friction at the cushion's contact
-// point up to `friction` times the normal impulse. Returns the closing speed (m/s).
-double collide_rail(BallState& k, const Body& body, const Vec3& n, double e, double friction);
+// sends it back at restitution e times its closing speed in the bed's plane, friction at the cushion's contact point
+// up to `friction` times the normal impulse, and the bed's friction up to `bed_friction` times the impulse with which
+// the bed holds the ball down. Returns the closing speed (m/s).
+double collide_rail(BallState& k, const Body& body, const Vec3& n, double e, double friction, double bed_friction);
 
 }  // namespace shotlab

@@ -192,7 +192,7 @@ void RigidWorld::handle(int i, const Next& next) {
       const Collider& c = model_.colliders[rail.collider];
       const Vec3 n = rail_normal(k, rail);
       const double e = restitution(model_.material(c.material), bodies_[i].mass, -glm::dot(k.v, n));
-      collide_rail(k, bodies_[i], n, e, model_.material(c.material).friction);
+      collide_rail(k, bodies_[i], n, e, model_.material(c.material).friction, laws_[i].friction);
       events_.push_back({t, "contact_begin", {id, c.name}});
       events_.push_back({t, "contact_end", {id, c.name}});
       restart(i, t, k);

@@ -280,6 +280,7 @@ int run_gui(const GuiOptions& options) {
         message_banner(lab, layout.view);
         status_line(lab, layout.view, frame_seconds, slept);
         lab.await_prediction();
+        lab.report_prediction();
         draw_overlay(lab, viewport, ImGui::GetBackgroundDrawList());
 
         // The side panels' background (they draw none), then the view clears its own part.

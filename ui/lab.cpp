@@ -449,6 +449,14 @@ void Lab::await_prediction() {
   predictor_.wait_for(wanted_, kWait);
 }
 
+void Lab::report_prediction() {
+  if (reported_ == wanted_) return;
+  const auto p = predictor_.latest();
+  if (!p || p->generation != wanted_ || !p->complete) return;
+  reported_ = wanted_;
+  if (!p->problem.empty()) say(MessageKind::Refused, "no predicted paths: " + p->problem);
+}
+
 const ContactLog* Lab::contact_log() {
   if (!shot) return nullptr;
   if (log_job_.valid() && log_job_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {

@@ -123,6 +123,8 @@ class Lab {
   // Before a frame is drawn: a new aim's prediction gets a few milliseconds to finish, once, so that a shot that takes
   // no longer to predict (a cut) shows its own paths in the frame that changed the aim.
   void await_prediction();
+  // Once a frame: a finished prediction that failed (a scene the chosen model refuses) says why, once.
+  void report_prediction();
   std::optional<double> prediction_seconds() const { return predictor_.wall_seconds(wanted_); }  // its compute time
   bool predicting() const { return predictor_.busy(); }
   // The contacts of the current shot with their force histories, traced on a worker thread; the latest complete
@@ -161,6 +163,7 @@ class Lab {
   Predictor predictor_;
   long wanted_ = -1;
   double last_turn_deg_ = kAimStepDeg;  // the last aim key's step: the guessed next aims repeat it first
+  long reported_ = -1;  // the last request report_prediction looked at
   long awaited_ = -1;  // the last request a frame waited for (await_prediction)
   Frame frame_;
   double exact_time_ = -1;  // the paused frame's time, so that the exact state is not worked out every frame

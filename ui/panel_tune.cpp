@@ -169,8 +169,21 @@ bool world_section(Lab& lab) {
   Options& o = lab.scene.model.options;
   IntegratorOptions& in = lab.scene.model.integrator;
   bool changed = false;
-  const Fields f({"friction sharpness", "rate limit", "gravity", "method", "abs tol", "rel tol", "fixed step",
-                  "max steps/call", "physics/frame"});
+  const Fields f({"contact model", "friction sharpness", "rate limit", "gravity", "method", "abs tol", "rel tol",
+                  "fixed step", "max steps/call", "physics/frame"});
+  int contact = static_cast<int>(o.contact);
+  f.label("contact model");
+  if (ImGui::Combo("##contact", &contact, "soft (integrated)\0rigid (events)\0"))
+    o.contact = static_cast<ContactModel>(contact), changed = true;
+  mark("contact model");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("soft: compliant contacts integrated in time, the reference. rigid: balls kept on the bed, "
+                      "moved in closed form between instant impulses; tens of times faster, a different model "
+                      "(no hops, jumps or rods; docs/model.md#rigid-model)");
+  // The rigid model has sharp friction switches and no integrator: those rows do not apply to it (greyed out).
+  const bool rigid = o.contact == ContactModel::Rigid;
+  if (rigid) ImGui::TextDisabled("greyed out: not used by the rigid model");
+  ImGui::BeginDisabled(rigid);
   f.label("friction sharpness");
   changed |= slider("##sharpness", o.friction_sharpness, 1.0, 1e6, "%.4g s/m", true);
   // 0 (no limit) is off the log scale: a checkbox switches the limit off and back to the default.
@@ -180,9 +193,11 @@ bool world_section(Lab& lab) {
   ImGui::SameLine();
   if (limited) changed |= slider("##rate", o.friction_rate_limit, 1e3, 1e9, "%.3g 1/s", true);
   else ImGui::TextDisabled("off");
+  ImGui::EndDisabled();
   double g = -o.gravity.y;
   f.label("gravity");
   if (slider("##gravity", g, 0.0, 30.0, "%.2f m/s^2")) o.gravity.y = -g, changed = true;
+  ImGui::BeginDisabled(rigid);
   int method = static_cast<int>(in.method);
   f.label("method");
   if (ImGui::Combo("##method", &method, "Euler\0RK4\0Cash-Karp 54\0Dormand-Prince 5\0Bulirsch-Stoer\0Rosenbrock 4\0"))
@@ -199,6 +214,7 @@ bool world_section(Lab& lab) {
     f.label("fixed step");
     changed |= slider("##step", in.fixed_step, 1e-7, 1e-2, "%.1e s", true);
   }
+  ImGui::EndDisabled();
   f.label("max steps/call");
   changed |= ImGui::SliderInt("##maxsteps", &in.max_steps_per_call, 100, 1000000, "%d",
                               ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
@@ -211,6 +227,13 @@ void diagnostics(const Lab& lab) {
   if (!lab.shot) return ImGui::TextDisabled("Shoot to see the integrator at work.");
   const Simulation& sim = lab.shot->sim();
   const Stats& s = sim.stats();
+  if (sim.model().options.contact == ContactModel::Rigid) {  // no integration: events only
+    ImGui::Text("rigid model: %ld collisions and changes of motion", s.steps);
+    ImGui::Text("last frame: %ld events, %.2f ms", lab.shot->last_steps(), lab.shot->last_wall() * 1e3);
+    ImGui::Text("%zu ball(s) moving", sim.island_balls().size());
+    if (sim.status() != Status::Ok) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "stopped: %s", status_name(sim.status()));
+    return;
+  }
   ImGui::Text("%s: %ld steps, %ld rejected, %ld rhs", method_name(sim.model().integrator.method), s.steps,
               s.rejected_steps, s.rhs_evaluations);
   ImGui::Text("last frame: %ld steps, %ld rhs, %.2f ms", lab.shot->last_steps(), lab.shot->last_rhs(),
@@ -255,7 +278,9 @@ void tune_panel(Lab& lab, Tuning& tuning) {
     }
     ImGui::PopID();
   }
-  if (ImGui::CollapsingHeader("World and integrator")) changed |= world_section(lab);
+  const bool world = ImGui::CollapsingHeader("World and integrator");
+  mark("World and integrator");
+  if (world) changed |= world_section(lab);
   if (ImGui::CollapsingHeader("Pause on events")) {
     PauseOn& p = lab.settings.pause_on;
     ImGui::Checkbox("ball-ball contact", &p.ball_ball), ImGui::SameLine();

@@ -79,7 +79,8 @@ json physics_json(const Lab& lab) {
   for (const auto& [name, mat] : lab.scene.model.materials)
     m[name] = {{"stiffness", mat.stiffness}, {"damping", mat.damping}, {"friction", mat.friction},
                {"friction_law", mat.friction_law == FrictionLaw::Constant ? "constant" : "speed_dependent"}};
-  return {{"materials", m}, {"changes", lab.physics_changes()}, {"compare_trails", lab.compare.size()}};
+  return {{"materials", m}, {"contact", contact_model_name(lab.scene.model.options.contact)},
+          {"changes", lab.physics_changes()}, {"compare_trails", lab.compare.size()}};
 }
 
 json measured_json(const Lab& lab) {

@@ -67,3 +67,19 @@ def test_errors_are_exceptions_that_name_the_field():
         shotlab.Simulation(STUN).advance(-1)
     with pytest.raises(ValueError, match="cannot open"):
         shotlab.run("/nonexistent/scene.json")
+
+
+def test_the_rigid_model_is_a_switch_away():
+    # A developer sweeping cut shots picks the rigid model for speed and checks where it lands against the soft one.
+    scene = os.path.join(SOURCE, "presets", "cut.json")
+    soft = shotlab.run(scene, until_rest=True)
+    rigid = shotlab.run(scene, ["model.contact=rigid"], until_rest=True)
+    assert rigid["stats"]["rhs_evaluations"] == 0 and soft["stats"]["rhs_evaluations"] > 0
+    pocketed = [[b["id"] for b in r["balls"] if b["motion"] == "pocketed"] for r in (soft, rigid)]
+    assert pocketed[0] == pocketed[1] == ["1"]
+    # The stun preset: both models stop the cue ball dead on the object ball, which they pocket.
+    stun = os.path.join(SOURCE, "presets", "stun.json")
+    ends = [shotlab.run(stun, o, until_rest=True)["balls"][0]["position"] for o in ([], ["model.contact=rigid"])]
+    assert np.linalg.norm(np.subtract(ends[0], ends[1])[[0, 2]]) < 0.005  # m
+    with pytest.raises(ValueError, match="model.contact.*hop"):
+        shotlab.run(os.path.join(SOURCE, "presets", "jump.json"), ["model.contact=rigid"])

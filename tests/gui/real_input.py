@@ -481,6 +481,56 @@ def developer(binary, root, display, work):
     app.close()
 
 
+def rigid(binary, root, display, work):
+    """A developer switches the cut to the rigid contact model in Tuning, shoots it to rest, and switches back; on the
+    jump shot the rigid model is refused with the reason and the lab goes on."""
+    def choose(app, s, entry):  # the contact model combo opens below itself: soft first, rigid second
+        combo = app.widget(s, "contact model")
+        app.click_widget(s, "contact model")
+        time.sleep(0.5)
+        app.click(combo["x"] + combo["w"] * 0.5, combo["y"] + combo["h"] * (1.5 + entry))
+
+    def open_world(app):
+        s = app.state()
+        app.click_widget(s, "tab Tuning")
+        s = app.state()
+        header = app.widget(s, "World and integrator")
+        app.scroll(header["x"] + header["w"] / 2, s["window"][1] / 2, 10)  # the panel's lower sections into view
+        s = app.state()
+        app.click_widget(s, "World and integrator")
+        s = app.wait(lambda s: "contact model" in s["widgets"], 10, "the world section opens")
+        app.scroll(header["x"] + header["w"] / 2, s["window"][1] / 2, 10)
+        s = app.state()
+        combo = app.widget(s, "contact model")
+        check(combo["y"] + 3 * combo["h"] < s["window"][1], "the contact model combo and its list fit in the window")
+        return s
+
+    app = App(binary, display, work, os.path.join(root, "presets", "cut.json"))
+    s = open_world(app)
+    check(s["physics"]["contact"] == "soft", "the cut starts on the soft model")
+    choose(app, s, 1)
+    s = app.wait(lambda s: s["physics"]["contact"] == "rigid", 10, "the rigid model is chosen from the combo")
+    check(any("contact" in c for c in s["physics"]["changes"]), "the change of model is listed")
+    app.key("s")
+    s = app.wait(lambda s: s["shot_over"], 40, "the cut comes to rest on the rigid model")
+    check(s["shot"]["end"] == "rest" and not ball(s, "1")["in_play"],
+          f"on the rigid model the cut pockets the 1 and rests ({s['shot']['sim_time']:.2f} s)")
+    choose(app, s, 0)
+    s = app.wait(lambda s: s["physics"]["contact"] == "soft", 10, "back to the soft model")
+    app.close()
+
+    app = App(binary, display, work, os.path.join(root, "presets", "jump.json"))
+    s = open_world(app)
+    choose(app, s, 1)
+    s = app.wait(lambda s: s["message_kind"] == "refused", 10, "the jump shot is refused on the rigid model")
+    check("hop" in s["message"] and "soft model" in s["message"], f"the note says why ({s['message']!r})")
+    choose(app, app.state(), 0)
+    s = app.wait(lambda s: s["physics"]["contact"] == "soft", 10, "back to the soft model")
+    app.key("s")
+    s = app.wait(lambda s: s["shot_over"], 40, "the jump shot plays on the soft model again")
+    app.close()
+
+
 def coach(binary, root, display, work):
     """The shot margin of the cut: open its section (scrolling the panel with the wheel), read the success and the
     aim window, turn the aim and see the window move with it, map aim x speed with few replays, click a cell of the
@@ -629,7 +679,7 @@ def bad_scene(binary, root, display, work):
 
 
 JOURNEYS = {"player": player, "teacher": teacher, "developer": developer, "coach": coach, "measured": measured,
-            "layout": layout, "bad_scene": bad_scene}
+            "layout": layout, "bad_scene": bad_scene, "rigid": rigid}
 
 
 def main():
