@@ -1,18 +1,14 @@
 #include "shotlab/restitution.hpp"
 
 #include <cmath>
-#include <map>
-#include <mutex>
 #include <string>
-#include <tuple>
 
 namespace shotlab {
 
 namespace {
 
-constexpr double kStep = 1e-3;          // in units of T: the undamped Hertz impact lasts 3.2 of them
-constexpr double kLongest = 200.0;      // in units of T: an impact still going on by then never parts (overdamped)
-constexpr double kKnotsPerDecade = 20;  // of g in restitution_at's table
+constexpr double kStep = 1e-3;       // in units of T: the undamped Hertz impact lasts 3.2 of them
+constexpr double kLongest = 200.0;   // in units of T: an impact still going on by then never parts (overdamped)
 
 // x'' of the scaled impact at depth x > 0 and rate v = x', the force clamped at zero.
 double accel(DampingLaw law, double n, double g, double x, double v) {
@@ -67,31 +63,6 @@ std::string apply_restitution(ContactMaterial& m, double m_eff) {
   const double T = std::pow(m_eff * v * v / m.stiffness, 1 / (n + 1)) / v;
   m.damping = m.damping_law == DampingLaw::Linear ? g * m_eff / T : g / v;
   return "";
-}
-
-double restitution_at(const ContactMaterial& m, double m_eff, double v) {
-  if (!(v > 0) || !(m.stiffness > 0) || !(m_eff > 0)) return 1;
-  const double n = m.exponent;
-  const double T = std::pow(m_eff * v * v / m.stiffness, 1 / (n + 1)) / v;  // as apply_restitution's
-  const double g = m.damping_law == DampingLaw::Linear ? m.damping * T / m_eff : m.damping * v;
-  if (!(g > 0)) return scaled_impact(m.damping_law, n, 0).restitution;
-  // e is smooth in log g: a cubic through the four nearest knots, each worked out once per process and kept (a sweep's
-  // thousands of shots meet the same few), within 1e-5 of scaled_impact's own value.
-  const double at = std::log10(g) * kKnotsPerDecade, lo = std::floor(at);
-  static std::mutex lock;
-  static std::map<std::tuple<int, double, long>, double> knots;
-  auto knot = [&](double k) {
-    const auto key = std::make_tuple(static_cast<int>(m.damping_law), n, static_cast<long>(k));
-    const std::lock_guard<std::mutex> hold(lock);
-    auto found = knots.find(key);
-    if (found == knots.end())
-      found = knots.emplace(key, scaled_impact(m.damping_law, n, std::pow(10.0, k / kKnotsPerDecade)).restitution).first;
-    return found->second;
-  };
-  // Cubic through the knots lo - 1 to lo + 2, at u = at - lo in [0, 1).
-  const double u = at - lo, a = knot(lo - 1), b = knot(lo), c = knot(lo + 1), d = knot(lo + 2);
-  return -u * (u - 1) * (u - 2) / 6 * a + (u + 1) * (u - 1) * (u - 2) / 2 * b - (u + 1) * u * (u - 2) / 2 * c +
-         (u + 1) * u * (u - 1) / 6 * d;
 }
 
 double damping_for_restitution(const ContactMaterial& material, double m_eff, double v, double e) {

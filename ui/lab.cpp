@@ -450,7 +450,7 @@ void Lab::await_prediction() {
 }
 
 void Lab::report_prediction() {
-  if (reported_ == wanted_) return;
+  if (reported_ == wanted_ || shot) return;  // a shot says for itself why it stopped
   const auto p = predictor_.latest();
   if (!p || p->generation != wanted_ || !p->complete) return;
   reported_ = wanted_;

@@ -123,7 +123,7 @@ class Lab {
   // Before a frame is drawn: a new aim's prediction gets a few milliseconds to finish, once, so that a shot that takes
   // no longer to predict (a cut) shows its own paths in the frame that changed the aim.
   void await_prediction();
-  // Once a frame: a finished prediction that failed (a scene the chosen model refuses) says why, once.
+  // Once a frame: before a shot, a finished prediction that failed (a scene the chosen model refuses) says why, once.
   void report_prediction();
   std::optional<double> prediction_seconds() const { return predictor_.wall_seconds(wanted_); }  // its compute time
   bool predicting() const { return predictor_.busy(); }

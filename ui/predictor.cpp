@@ -170,7 +170,7 @@ std::optional<Prediction> Predictor::predict(const Scene& scene, double limit, l
     while (sim.time() < limit && !(sim.time() > 0 && sim.at_rest())) {
       if (wanted_ != generation) return std::nullopt;  // superseded
       if (sim.advance(kSample) != Status::Ok) {
-        out.problem = std::string(status_name(sim.status())) + ": " + sim.diagnostic();
+        out.problem = sim.diagnostic().empty() ? status_name(sim.status()) : sim.diagnostic();  // it names the stop
         break;
       }
       sample();

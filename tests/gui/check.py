@@ -97,8 +97,13 @@ unstable, recovered = load("unstable.json"), load("recovered.json")
 check(unstable["message_kind"] == "engine_stop" and "unstable" in unstable["message"] and not unstable["playing"],
       "a blown-up simulation stops with a message")
 # (x and z only: undo keeps the tuned physics, and the stiffer cloth changes how deep the ball sits)
-check(not recovered["has_shot"] and recovered["message_kind"] in ("none", "note")
-      and ball(recovered, "cue")["position"][::2] == ball(aim, "cue")["position"][::2], "undo recovers from it")
+# Undo keeps the tuned physics (Euler at 1e-3 s), so the prediction of the recovered scene may blow up as well and
+# says so; nothing else may be reported.
+quiet = recovered["message_kind"] in ("none", "note") or (
+    recovered["message_kind"] == "refused" and recovered["message"].startswith("no predicted paths: unstable"))
+check(not recovered["has_shot"] and quiet
+      and ball(recovered, "cue")["position"][::2] == ball(aim, "cue")["position"][::2],
+      f"undo recovers from it ({recovered['message_kind']}: {recovered['message'][:60]!r})")
 added, edited = load("added.json"), load("edited.json")
 check([b["id"] for b in added["balls"]] == ["cue", "1", "2"] and ball(added, "2")["position"][::2] == [0.0, 0.0],
       "a ball added where clicked, with the next free number")

@@ -22,8 +22,8 @@ double effective_mass(bool ball_ball, double ball_mass);
 
 // The restitution of a head-on impact at closing speed v (m/s) between bodies of effective mass m_eff (kg) under the
 // material's normal law, damping and clamp as they are: what the rigid model's impulses use (docs/model.md#rigid-model).
-// Interpolated in the log of the scaled damping g between values of scaled_impact worked out once per process (thread-
-// safe), within 1e-5 of scaled_impact at g itself.
+// Interpolated in the log of the scaled damping g between values of scaled_impact, built into the engine for Hertz
+// contacts and worked out once per process otherwise (thread-safe): within 1e-5 of scaled_impact at g itself.
 double restitution_at(const ContactMaterial& material, double m_eff, double v);
 
 // Sets material.damping (and, when material.contact_time > 0, material.stiffness) so that a head-on impact at
