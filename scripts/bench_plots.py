@@ -26,7 +26,7 @@ plt.rcParams.update({'svg.fonttype': 'none', 'svg.hashsalt': 'shotlab-bench', 'f
 
 # A fixed colour per method, so a method looks the same in every panel and figure.
 COLORS = {'euler': '#9e9e9e', 'rk4': '#8d5a2b', 'cash_karp54': '#1f77b4', 'dopri5': '#d62728',
-          'bulirsch_stoer': '#2ca02c', 'rosenbrock4': '#9467bd'}
+          'bulirsch_stoer': '#2ca02c', 'rosenbrock4': '#9467bd', 'rigid': '#ff7f0e'}
 
 PANEL_W, PANEL_H = 3.3, 2.5  # inches per panel, labels included
 

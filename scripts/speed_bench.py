@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Whole shots to rest (issue 34), printed and written as markdown: the break (presets/break.json) and the cut
-(presets/cut.json) timed by tests/benchmarks/shot_speed on one pinned core, this build against a baseline build of
-the same benchmark (another commit's), in alternated rounds; the plain all-ODE path once for reference; where
+(presets/cut.json) timed by tests/benchmarks/shot_speed on one pinned core, this build's soft model against its rigid
+model (docs/model.md#rigid-model) and, if given, a baseline build of the same benchmark (another commit's), in
+alternated rounds; the plain all-ODE path once for reference; where
 this build's steps and right-hand sides go, by the kind of island that took them; and what the cost follows: the same
 shots at looser integrator tolerances and softer friction rate limits.
 
@@ -29,11 +30,12 @@ VARIANTS = [("default (tolerance 1e-7, rate limit 2e5 1/s)", None, None, None)] 
     [(f"rate limit {r:.0e} 1/s", "model", "friction_rate_limit", r) for r in (5e4, 2e4)]
 
 
-def measure(build, core, runs, plain=False, paths=None):
-    """{scene: (median ms, steps, rejected, redone, rhs, digest)} from one call of shot_speed pinned to `core`, of the
-    presets or of `paths`; redone is None from a build whose benchmark does not count it."""
+def measure(build, core, runs, plain=False, paths=None, rigid=False):
+    """{scene: (median ms, steps, rejected, redone, rhs, digest, first ms)} from one call of shot_speed pinned to
+    `core`, of the presets or of `paths`; redone (first ms) is None from a build whose benchmark does not count it."""
     tool = os.path.join(build, "tests", "benchmarks", "shot_speed")
-    args = ["taskset", "-c", str(core), tool, "--rounds", str(runs)] + (["--plain"] if plain else [])
+    args = ["taskset", "-c", str(core), tool, "--rounds", str(runs)] + (["--plain"] if plain else []) + \
+        (["--rigid"] if rigid else [])
     paths = paths or [os.path.join(ROOT, "presets", s) for s in SCENES]
     text = subprocess.run(args + paths, check=True, capture_output=True, text=True).stdout
     out = {}
@@ -41,7 +43,8 @@ def measure(build, core, runs, plain=False, paths=None):
         f = line.split()
         v = dict(zip(f[1::2], f[2::2]))
         out[os.path.basename(f[0])] = (float(v["median_ms"]), int(v["steps"]), int(v["rejected"]),
-                                       int(v["redone"]) if "redone" in v else None, int(v["rhs"]), v["digest"])
+                                       int(v["redone"]) if "redone" in v else None, int(v["rhs"]), v["digest"],
+                                       float(v["first_ms"]) if "first_ms" in v else None)
     return out
 
 
@@ -83,7 +86,7 @@ def sweep(build, core, rounds):
                 files[label].append(path)
         for r in range(rounds):
             for label in (files if r % 2 == 0 else reversed(list(files))):
-                last[label] = {k.split("_", 1)[1]: v for k, v in measure(build, core, 10, paths=files[label]).items()}
+                last[label] = {k.split("_", 1)[1]: v[:6] for k, v in measure(build, core, 10, paths=files[label]).items()}
                 times.setdefault(label, {s: [] for s in SCENES})
                 for s in SCENES:
                     times[label][s].append(last[label][s][0])
@@ -101,12 +104,16 @@ def main():
     ap.add_argument("--out")
     ap.add_argument("--sweep-rounds", type=int, default=3, help="alternated rounds of the tolerance and rate-limit sweep")
     a = ap.parse_args()
-    sides = {"this build": a.build} | ({a.label: a.baseline} if a.baseline else {})
+    rigid = "this build, rigid model"
+    sides = {"this build": a.build, rigid: a.build} | ({a.label: a.baseline} if a.baseline else {})
     times = {k: {s: [] for s in SCENES} for k in sides}
-    last = {}
+    last, first = {}, {s: [] for s in SCENES}
     for r in range(a.rounds):
         for k in (list(sides) if r % 2 == 0 else list(reversed(sides))):
-            last[k] = measure(sides[k], a.core, 10)
+            last[k] = measure(sides[k], a.core, 10, rigid=k == rigid)
+            if k == rigid:
+                for s in SCENES:
+                    first[s].append(last[k][s][6])
             for s in SCENES:
                 times[k][s].append(last[k][s][0])
     plain = measure(a.build, a.core, 1, plain=True)
@@ -121,11 +128,23 @@ def main():
              "| scene | build | wall ms | steps | rejected | redone | right-hand sides |", "|---|---|---|---|---|---|---|"]
     for s in SCENES:
         for k in sides:
-            _, steps, rej, redo, rhs, _ = last[k][s]
+            _, steps, rej, redo, rhs, _, _ = last[k][s]
+            if k == rigid:  # no steps: the events it handled, no right-hand sides
+                lines.append(f"| {s} | {k} | {statistics.median(times[k][s]):.3f} | {steps} events | - | - | 0 |")
+                continue
             lines.append(f"| {s} | {k} | {statistics.median(times[k][s]):.3f} | {steps} | {rej} | "
                          f"{'-' if redo is None else redo} | {rhs} |")
-        _, steps, rej, redo, rhs, _ = plain[s]
+        _, steps, rej, redo, rhs, _, _ = plain[s]
         lines.append(f"| {s} | this build, plain path (one round) | {plain[s][0]:.1f} | {steps} | {rej} | {redo} | {rhs} |")
+    lines += ["", "The rigid model is a different model (docs/model.md#rigid-model; its distance from the soft model is "
+              "in [rigid.md](rigid.md)). The first shot in a process (each round is one) costs no more than the others: "
+              "the break's first shot took " + ", ".join(f"{x:.1f}" for x in first["break.json"]) + " ms and "
+              "the cut's " + ", ".join(f"{x:.2f}" for x in first["cut.json"]) + " ms (its restitution table is built "
+              "with the engine, docs/model.md#rigid-model).", "",
+              "| scene | wall time, rigid model / soft model |", "|---|---|"]
+    for s in SCENES:
+        ratios = [x / y for x, y in zip(times[rigid][s], times["this build"][s])]
+        lines.append(f"| {s} | {statistics.median(ratios):.4f} ({min(ratios):.4f}-{max(ratios):.4f}) |")
     if a.baseline:
         lines += ["", "| scene | wall time, this build / " + a.label + " |", "|---|---|"]
         for s in SCENES:

@@ -78,8 +78,12 @@ IntegratorOptions integrator_options(const MethodSetting& s) {
   return o;
 }
 
-std::string line_name(const MethodSetting& s) {
-  return std::string(method_name(s.method)) + (s.plain ? " plain" : "");
+std::string method_column(const MethodSetting& s) { return s.rigid ? "rigid" : method_name(s.method); }
+
+std::string line_name(const MethodSetting& s) { return method_column(s) + (s.plain ? " plain" : ""); }
+
+namespace {
+const MethodSetting kRigid{Method::CashKarp54, 0.0, false, true};
 }
 
 std::vector<MethodSetting> sweep(bool coarse) {
@@ -92,16 +96,18 @@ std::vector<MethodSetting> sweep(bool coarse) {
     for (double tol : half_decades(-3, -11, coarse)) out.push_back({m, tol});
   for (Method m : {Method::CashKarp54, Method::DormandPrince5})
     for (double tol : half_decades(-3, -11, coarse)) out.push_back({m, tol, true});
+  out.push_back(kRigid);
   return out;
 }
 
 std::vector<MethodSetting> sweep_timed_only(bool quick) {
   // --quick: the default setting on both paths only.
-  if (quick) return {{Method::CashKarp54, 1e-7}, {Method::CashKarp54, 1e-7, true}};
+  if (quick) return {{Method::CashKarp54, 1e-7}, {Method::CashKarp54, 1e-7, true}, kRigid};
   std::vector<MethodSetting> out;
   for (Method m : {Method::CashKarp54, Method::DormandPrince5, Method::BulirschStoer})
     for (double tol : {1e-4, 1e-6, 1e-7, 1e-8}) out.push_back({m, tol});
   for (Method m : {Method::CashKarp54, Method::DormandPrince5}) out.push_back({m, 1e-7, true});
+  out.push_back(kRigid);
   return out;
 }
 

@@ -31,15 +31,18 @@ struct MethodSetting {
   Method method;
   double value;        // tolerance (adaptive) or step in s (fixed)
   bool plain = false;  // the plain all-ODE path
+  bool rigid = false;  // the rigid contact model instead (docs/model.md#rigid-model): no integrator, method ignored
 };
 IntegratorOptions integrator_options(const MethodSetting& setting);
-// The setting's line in plots and tables: "cash_karp54", or "cash_karp54 plain".
+// The setting's line in plots and tables: "cash_karp54", "cash_karp54 plain", or "rigid".
+// What the CSV's method column says: the method's name, or "rigid".
+std::string method_column(const MethodSetting& setting);
 std::string line_name(const MethodSetting& setting);
 
 // The sweep: Euler and RK4 over fixed steps, each adaptive method over tolerances, loosest first (the runner stops
 // a method once it gets too slow, and tighter settings are only slower). `coarse` takes whole decades only and
 // fewer steps; S7 and S8 get a short list of practical settings. Cash-Karp and Dormand-Prince also run on the plain
-// path, so that the fast path's gain (issue 5) shows next to them.
+// path, so that the fast path's gain (issue 5) shows next to them. Each list ends with the rigid model, once.
 std::vector<MethodSetting> sweep(bool coarse);
 std::vector<MethodSetting> sweep_timed_only(bool quick);
 

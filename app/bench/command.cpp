@@ -18,6 +18,7 @@
 #include "app/commands.hpp"
 #include "app/paths.hpp"
 #include "shotlab/io/json_reader.hpp"
+#include "shotlab/io/scene_json.hpp"
 
 namespace shotlab {
 namespace {
@@ -27,6 +28,7 @@ struct BenchOptions {
   bool scaling = false;             // issue 5's scene scaling instead of the sweep (bench/scaling.hpp)
   std::string out_dir = "docs/bench";
   std::vector<std::string> scenes;  // S1..S8, empty: all
+  std::vector<std::string> methods;  // method columns (cash_karp54, rigid, ...) to run, empty: all
   int repeats = 0;                  // runs per setting; 0: 5, or 3 with --quick
   double budget = 0;                // s per run; 0: 1 s, or 0.2 s with --quick
 };
@@ -123,6 +125,17 @@ void bench_case(const std::string& root, const BenchCase& c, const BenchOptions&
     const MethodSetting& s = settings[k];
     const std::string line = line_name(s);
     if (over_budget.count(line)) continue;
+    if (!o.methods.empty() && !std::count(o.methods.begin(), o.methods.end(), method_column(s))) continue;
+    if (s.rigid) {  // scenes the rigid model refuses (free space, rods) are left out, and the notes say why
+      Scene scene = load_scene(root + "/" + c.file, c.overrides);
+      scene.model.options.contact = ContactModel::Rigid;
+      try {
+        prepare(scene);
+      } catch (const std::invalid_argument& e) {
+        report.notes.push_back(c.id + ": rigid not run (" + e.what() + ")");
+        continue;
+      }
+    }
     // A whole game (S7, S8) is long by nature: its few settings get ten times the budget.
     const double budget = c.until_rest ? 10 * o.budget : o.budget;
     // One slow setting may be a fluke of the error control (dopri5 at 1e-3 on the break rejects 9 steps in 10);
@@ -151,6 +164,11 @@ std::string check_bench_options(const BenchOptions& o) {
       for (const std::string& k : known) list += (list.empty() ? "" : ",") + k;
       return "--scenes: no bench scene '" + s + "' (the scenes are " + list + ")";
     }
+  for (const std::string& m : o.methods) {
+    Method parsed;
+    if (m != "rigid" && !parse_method(m, parsed))
+      return "--methods: no method '" + m + "' (euler, rk4, cash_karp54, dopri5, bulirsch_stoer, rosenbrock4, rigid)";
+  }
   std::error_code ec;
   std::filesystem::create_directories(o.out_dir, ec);
   if (ec || !std::filesystem::is_directory(o.out_dir))
@@ -194,6 +212,8 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("--out-dir", o->out_dir, "Directory for results.csv, results.md and the SVG figures (drawn by "
                                         "scripts/bench_plots.py, python3 + matplotlib)");
   cmd->add_option("--scenes", o->scenes, "Scenes to run, e.g. S1,S3 (default: all)")->delimiter(',');
+  cmd->add_option("--methods", o->methods, "Methods to run, e.g. cash_karp54,rigid (rigid: the rigid contact model; "
+                                           "default: all)")->delimiter(',');
   cmd->add_option("--repeats", o->repeats, "Runs per setting; the wall time is their median "
                                            "(default 5, or 3 with --quick)")->check(CLI::Range(1, 100));
   cmd->add_option("--budget", o->budget, "Seconds one run may take before the method's tighter settings are skipped "

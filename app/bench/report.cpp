@@ -56,8 +56,10 @@ bool write_csv(const std::string& path, const BenchReport& r) {
        "tol_ratio_pv_end,tol_ratio_spin_end,label\n";
   for (const BenchRow& w : r.rows) {
     const bool measured = !w.c->until_rest;
-    o << w.c->id << "," << w.c->scene << "," << method_name(w.setting.method) << ","
-      << (w.setting.plain ? "plain" : "fast") << "," << (is_adaptive(w.setting.method) ? 1 : 0) << "," << fmt("%.3g", w.setting.value) << ","
+    const bool adaptive = is_adaptive(w.setting.method) && !w.setting.rigid;
+    o << w.c->id << "," << w.c->scene << "," << method_column(w.setting) << ","
+      << (w.setting.rigid ? "rigid" : w.setting.plain ? "plain" : "fast") << "," << (adaptive ? 1 : 0) << ","
+      << fmt("%.3g", w.setting.value) << ","
       << status_name(w.run.status) << "," << (measured ? sci(w.err.position) : "") << ","
       << (measured ? sci(w.err.velocity) : "") << "," << (measured ? sci(w.err.worst()) : "") << ","
       << (measured ? std::to_string(w.err.missed) : "") << "," << sci(w.err.energy) << "," << sci(w.err.momentum)
@@ -72,7 +74,7 @@ bool write_csv(const std::string& path, const BenchReport& r) {
 }
 
 bool same_line(const BenchRow& a, const BenchRow& b) {
-  return a.c == b.c && a.setting.method == b.setting.method && a.setting.plain == b.setting.plain;
+  return a.c == b.c && line_name(a.setting) == line_name(b.setting);
 }
 
 // For each case and line (method and path), the cheapest setting whose error is at most each target: the table form
@@ -160,7 +162,8 @@ void fast_plain_ratios(std::ostream& o, const BenchReport& r) {
     for (Method m : {Method::CashKarp54, Method::DormandPrince5}) {
       std::vector<double> ratios;
       for (const BenchRow& f : r.rows) {
-        if (f.c != w.c || f.setting.method != m || f.setting.plain || f.setting.value > 1.001e-5) continue;
+        if (f.c != w.c || f.setting.method != m || f.setting.plain || f.setting.rigid || f.setting.value > 1.001e-5)
+          continue;
         const BenchRow* p = find_row(r, w.c, m, f.setting.value, true);
         if (p && f.err.worst() > 0 && p->err.worst() > 0) ratios.push_back(f.err.worst() / p->err.worst());
       }
@@ -280,6 +283,7 @@ bool write_report(const std::string& dir, const BenchReport& r) {
 }
 
 std::string setting_text(const MethodSetting& s) {
+  if (s.rigid) return "-";
   return (is_adaptive(s.method) ? "" : "h=") + fmt("%.2g", s.value);
 }
 

@@ -46,6 +46,7 @@ RunResult run_case(const std::string& data_root, const BenchCase& c, const Metho
   Scene scene = load_scene(data_root + "/" + c.file, c.overrides);
   scene.model.integrator = integrator_options(setting);
   if (setting.plain) use_path(scene.model.options, SolverPath::Plain);
+  if (setting.rigid) scene.model.options.contact = ContactModel::Rigid;
   Prepared p = prepare(scene);
   RunResult r;
   for (const BallSpec& b : p.model.balls) r.radius.push_back(b.radius);

@@ -264,6 +264,8 @@ TEST(Hardening, BenchRefusesBadOptionsBeforeRunning) {
   EXPECT_NE(err.find("S99"), std::string::npos) << err;
   EXPECT_EQ(cli("bench --scenes S1 --budget nan", err), 1);
   EXPECT_NE(err.find("--budget"), std::string::npos) << err;
+  EXPECT_EQ(cli("bench --scenes S1 --methods rigid,rk5", err), 1);
+  EXPECT_NE(err.find("--methods: no method 'rk5'"), std::string::npos) << err;
 }
 
 TEST(Hardening, CsvQuotesIdsAsRfc4180Says) {
