@@ -138,8 +138,11 @@ void drag_move(Lab& lab, Camera& camera, const Viewport& vp, MouseDrag& drag, co
 
 void handle_input(Lab& lab, Camera& camera, const Viewport& vp, MouseDrag& drag, bool over_view) {
   const ImGuiIO& io = ImGui::GetIO();
+  // Nothing behind a text field or an open dialog or list (Open, Save as, a combo's) hears the keys: Return in Save as
+  // must not shoot, nor Delete there remove a ball.
+  const bool covered = io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
   for (const KeyPress& k : take_key_presses())
-    if (!io.WantTextInput) key(lab, camera, k);
+    if (!covered) key(lab, camera, k);
   const glm::dvec2 mouse{io.MousePos.x, io.MousePos.y};
   const auto at = vp.pick_plane(mouse, ball_height(lab));
   const bool free = over_view && !io.WantCaptureMouse;

@@ -658,6 +658,9 @@ def bad_scene(binary, root, display, work):
         s = app.state()
         if what == "a broken file":
             check(len(s["balls"]) == 2 and "broken.json" in s["message"], "a typed broken file is named, the scene kept")
+            app.key("s")  # the shoot key, with the dialog still open
+            time.sleep(0.3)
+            check(not app.state()["has_shot"], "keys do not reach the scene behind the open dialog: S does not shoot")
             app.key("Escape")
     check(len(s["balls"]) == 16, "a typed path opens the break over the aimed cut shot")
     app.key("u")
