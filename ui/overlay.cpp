@@ -38,6 +38,7 @@ ImVec2 v2(const glm::dvec2& p) { return {static_cast<float>(p.x), static_cast<fl
 // backing so that it reads over trails and cloth.
 class Labels {
  public:
+  explicit Labels(const ImRect& view) : view_(view) {}
   void add(int priority, ImVec2 anchor, ImVec2 wanted, std::string text, ImU32 colour) {
     items_.push_back({priority, anchor, wanted, std::move(text), colour});
   }
@@ -59,7 +60,7 @@ class Labels {
       float least = INFINITY;
       for (const ImVec2& s : spots) {
         const ImRect r(s.x - 3, s.y - 1, s.x + size.x + 3, s.y + size.y + 1);
-        float covered = 0;
+        float covered = r.GetWidth() * r.GetHeight() - overlap(r, view_);  // off the view counts as covered
         for (const ImRect& t : taken) covered += overlap(r, t);
         if (covered < least) least = covered, best = r;
         if (covered == 0) break;
@@ -84,6 +85,7 @@ class Labels {
     const float h = std::min(a.Max.y, b.Max.y) - std::max(a.Min.y, b.Min.y);
     return w > 0 && h > 0 ? w * h : 0;
   }
+  ImRect view_;  // the 3D view's pixels: a label is placed inside them where it can be
   std::vector<Item> items_;
 };
 enum LabelPriority { kBallName, kForce, kCut, kCentre, kMiss };
@@ -322,7 +324,7 @@ namespace {
 
 void draw_all(const Lab& lab, const Viewport& vp, ImDrawList* d) {
   const ViewFlags& v = lab.settings.view;
-  Labels labels;
+  Labels labels(ImRect(static_cast<float>(vp.x0), 0, static_cast<float>(vp.x0 + vp.width), static_cast<float>(vp.height)));
   if (v.ghost) paths(d, vp, lab.ghost, 0.35f, 1.5f, false);
   for (const KeptShot& k : lab.kept)
     if (k.visible) paths(d, vp, k.trails, 0.8f, 2.0f, false, kept_colour(k.colour));

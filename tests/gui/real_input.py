@@ -392,6 +392,9 @@ def teacher(binary, root, display, work):
         return a["x"] + a["w"] <= b["x"] or b["x"] + b["w"] <= a["x"] or a["y"] + a["h"] <= b["y"] or b["y"] + b["h"] <= a["y"]
     check(len(labels) >= 6 and all(apart(a, b) for i, a in enumerate(labels) for b in labels[i + 1:]),
           f"{len(labels)} labels at the impact (ball names, forces), none over another")
+    view = s["view"]
+    check(all(inside(view, r["x"], r["y"]) and inside(view, r["x"] + r["w"], r["y"] + r["h"]) for r in labels),
+          "every label lies inside the 3D view")
     app.key("l")
 
     for tab in ("Tuning", "Teaching", "Tuning", "Teaching"):
