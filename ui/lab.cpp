@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
+#include <stdexcept>
 
 #include "shotlab/io/scene_json.hpp"
 
@@ -137,6 +138,16 @@ void Lab::scene_changed() {
   if (selected >= static_cast<int>(scene.balls.size())) selected = 0;
   Scene still = scene;
   still.cue.reset();
+  if (scene.model.options.contact == ContactModel::Rigid) {
+    // A scene the rigid model refuses (rods, gravity not straight down) goes back to the soft model, saying why.
+    still.model.options.contact = ContactModel::Rigid;
+    try {
+      prepare(still);
+    } catch (const std::invalid_argument& e) {
+      scene.model.options.contact = still.model.options.contact = ContactModel::Soft;
+      say(MessageKind::Refused, std::string(e.what()) + "; back to the soft model");
+    }
+  }
   Prepared p = prepare(still);
   table_model = p.model;
   if (!shot) {

@@ -533,6 +533,16 @@ def rigid(binary, root, display, work):
     s = app.wait(lambda s: s["shot_over"], 40, "the jump shot plays on the soft model again")
     app.close()
 
+    # The cradle hangs on rods: choosing rigid there is refused at once, and the lab stays on the soft model.
+    app = App(binary, display, work, os.path.join(root, "presets", "cradle.json"))
+    s = open_world(app)
+    choose(app, s, 1)
+    time.sleep(0.5)
+    s = app.state()
+    check(app.proc.poll() is None and s["physics"]["contact"] == "soft" and "rods" in s["message"],
+          f"the cradle refuses the rigid model and stays soft ({s['message']!r})")
+    app.close()
+
 
 def coach(binary, root, display, work):
     """The shot margin of the cut: open its section (scrolling the panel with the wheel), read the success and the
