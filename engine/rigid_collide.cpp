@@ -8,8 +8,6 @@ namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
 
-Vec3 horizontal(const Vec3& v) { return {v.x, 0.0, v.z}; }
-
 // The polynomial l0 + l1 s + l2 s^2 of a linear function `dir` . (x - origin) of the centre on p.
 Quartic along(const Parabola& p, const Vec3& origin, const Vec3& dir) {
   return {glm::dot(p.p - origin, dir), glm::dot(p.v, dir), 0.5 * glm::dot(p.a, dir), 0.0, 0.0};
@@ -18,8 +16,6 @@ Quartic along(const Parabola& p, const Vec3& origin, const Vec3& dir) {
 Quartic squared_minus(const Quartic& l, double reach) {
   return {l[0] * l[0] - reach * reach, 2 * l[0] * l[1], l[1] * l[1] + 2 * l[0] * l[2], 2 * l[1] * l[2], l[2] * l[2]};
 }
-
-double inertia(const Body& b) { return 0.4 * b.mass * b.radius * b.radius; }
 
 // Friction impulse (N s) against the slip vt of a contact whose tangential compliance is `compliance` (s/kg): what
 // stops the slip, at most `limit`; along -vt.
@@ -64,7 +60,7 @@ double edge_exit(const Parabola& p, const Vec3& origin, const Vec3& u, const Vec
 
 double closing_speed(const BallState& a, const BallState& b, const Vec3& n) { return glm::dot(a.v - b.v, n); }
 
-double collide_balls(BallState& a, const Body& ba, BallState& b, const Body& bb, const Vec3& n, double e,
+double collide_balls(BallState& a, const BallSpec& ba, BallState& b, const BallSpec& bb, const Vec3& n, double e,
                      const ContactMaterial& material) {
   const double closing = closing_speed(a, b, n);
   if (!(closing > 0)) return 0;
@@ -72,11 +68,11 @@ double collide_balls(BallState& a, const Body& ba, BallState& b, const Body& bb,
   // The contact points' relative velocity (a's point at +R_a n, b's at -R_b n), less its normal part.
   const Vec3 vc = a.v + glm::cross(a.w, ba.radius * n) - b.v - glm::cross(b.w, -bb.radius * n);
   const Vec3 vt = vc - glm::dot(vc, n) * n;
-  const double compliance = 1 / ba.mass + ba.radius * ba.radius / inertia(ba) + 1 / bb.mass +
-                            bb.radius * bb.radius / inertia(bb);
+  const double compliance = 1 / ba.mass + ba.radius * ba.radius / ba.inertia() + 1 / bb.mass +
+                            bb.radius * bb.radius / bb.inertia();
   const Vec3 on_a = -jn * n + friction_impulse(vt, compliance, material.friction_at(glm::length(vt)) * jn);
-  a.v += on_a / ba.mass, a.w += glm::cross(ba.radius * n, on_a) / inertia(ba);
-  b.v -= on_a / bb.mass, b.w += glm::cross(-bb.radius * n, -on_a) / inertia(bb);
+  a.v += on_a / ba.mass, a.w += glm::cross(ba.radius * n, on_a) / ba.inertia();
+  b.v -= on_a / bb.mass, b.w += glm::cross(-bb.radius * n, -on_a) / bb.inertia();
   a.v.y = b.v.y = 0;  // the bed takes any vertical part
   return closing;
 }
@@ -87,7 +83,7 @@ Vec3 rail_normal(const BallState& k, const Rail& rail) {
   return glm::normalize(k.p - (rail.a + along * ab));
 }
 
-double collide_rail(BallState& k, const Body& body, const Vec3& n, double e, double friction, double bed_friction) {
+double collide_rail(BallState& k, const BallSpec& body, const Vec3& n, double e, double friction, double bed_friction) {
   const Vec3 nh = horizontal(n);
   const double closing = -glm::dot(k.v, n);
   if (!(closing > 0) || !(glm::dot(nh, nh) > 0)) return 0;
@@ -96,15 +92,15 @@ double collide_rail(BallState& k, const Body& body, const Vec3& n, double e, dou
   const Vec3 r = -body.radius * n;  // centre to the cushion's contact point
   const Vec3 vc = k.v + glm::cross(k.w, r);
   const Vec3 vt = vc - glm::dot(vc, n) * n;
-  const double compliance = 1 / body.mass + body.radius * body.radius / inertia(body);
+  const double compliance = 1 / body.mass + body.radius * body.radius / body.inertia();
   const Vec3 push = jn * n + friction_impulse(vt, compliance, friction * jn);
-  k.v += push / body.mass, k.w += glm::cross(r, push) / inertia(body);
+  k.v += push / body.mass, k.w += glm::cross(r, push) / body.inertia();
   // The bed stops what the push drives into it, and with that impulse its friction acts against the slip at the bed.
   const double pressed = std::max(0.0, -k.v.y * body.mass);
   const Vec3 under = -body.radius * kUp;
   const Vec3 slip = k.v + glm::cross(k.w, under);
   const Vec3 rub = friction_impulse({slip.x, 0.0, slip.z}, compliance, bed_friction * pressed);
-  k.v += rub / body.mass, k.w += glm::cross(under, rub) / inertia(body);
+  k.v += rub / body.mass, k.w += glm::cross(under, rub) / body.inertia();
   k.v.y = 0;
   return closing;
 }

@@ -8,8 +8,6 @@ namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
 
-Vec3 horizontal(const Vec3& v) { return {v.x, 0.0, v.z}; }
-
 // s after which a rate `rate` takes `amount` to zero; never without a rate.
 double lasts(double amount, double rate) { return rate > 0 ? amount / rate : kNever; }
 

@@ -22,6 +22,9 @@ struct BedLaw {
   double spin_decel() const { return 2.5 * spin * gravity / radius; }  // rad/s^2
 };
 
+// v in the bed's plane: its vertical part dropped.
+inline Vec3 horizontal(const Vec3& v) { return {v.x, 0.0, v.z}; }
+
 // Slip (m/s) and speed (m/s) under which a ball counts as rolling and as not moving after an impulse.
 inline constexpr double kRigidSlip = 1e-9;
 inline constexpr double kRigidSpeed = 1e-9;

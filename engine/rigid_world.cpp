@@ -93,7 +93,6 @@ RigidWorld::RigidWorld(Model model, State initial) : model_(std::move(model)), s
   for (int i = 0; i < n; ++i) {
     const BallSpec& b = model_.balls[i];
     laws_.push_back({b.radius, -model_.options.gravity.y, cloth.friction, cloth.rolling_resistance, cloth.spin_friction});
-    bodies_.push_back({b.mass, b.radius});
     tracks_.push_back(state_.in_play[i] ? bed_track(laws_[i], state_.time, position(state_.x, i),
                                                     velocity(state_.x, i), spin(state_.x, i))
                                         : out_track(state_.time, position(state_.x, i)));
@@ -117,7 +116,7 @@ RigidWorld::Next RigidWorld::own_next(int i) const {
     if (t.t0 + s < best.time) best = {t.t0 + s, kind, other};
   };
   const Sweep box = sweep(p, h);
-  const double radius = bodies_[i].radius;
+  const double radius = model_.balls[i].radius;
   for (size_t r = 0; r < rails_.size(); ++r)
     if (box.near(rails_[r].a, rails_[r].b, radius + rails_[r].radius))
       take(rail_entry(p, radius, rails_[r], h), Kind::Rail, static_cast<int>(r));
@@ -137,7 +136,7 @@ double RigidWorld::pair_next(int i, int j) const {
   const double t0 = std::max(a.t0, b.t0);
   const double h = std::min({a.ends, b.ends, t0 + kFarthest}) - t0;
   const Parabola pa = parabola(laws_[i], a, t0), pb = parabola(laws_[j], b, t0);
-  const double reach = bodies_[i].radius + bodies_[j].radius;
+  const double reach = model_.balls[i].radius + model_.balls[j].radius;
   // Out of reach within h even at the greatest closing speed and acceleration: no need to solve.
   const double gap = glm::length(Vec3{pb.p.x - pa.p.x, 0.0, pb.p.z - pa.p.z}) - reach;
   if (gap > glm::length(pb.v - pa.v) * h + 0.5 * glm::length(pb.a - pa.a) * h * h) return kNever;
@@ -178,9 +177,9 @@ void RigidWorld::handle(int i, const Next& next) {
       BallState kj = at(laws_[j], tracks_[j], t);
       const Vec3 d{kj.p.x - k.p.x, 0.0, kj.p.z - k.p.z};
       const Vec3 n = glm::normalize(d);
-      const double m_eff = 1 / (1 / bodies_[i].mass + 1 / bodies_[j].mass);
+      const double m_eff = 1 / (1 / model_.balls[i].mass + 1 / model_.balls[j].mass);
       const double e = restitution(model_.material(kBallBall), m_eff, closing_speed(k, kj, n));
-      collide_balls(k, bodies_[i], kj, bodies_[j], n, e, model_.material(kBallBall));
+      collide_balls(k, model_.balls[i], kj, model_.balls[j], n, e, model_.material(kBallBall));
       events_.push_back({t, "contact_begin", {id, model_.balls[j].id}});
       events_.push_back({t, "contact_end", {id, model_.balls[j].id}});
       restart(i, t, k), restart(j, t, kj);
@@ -191,8 +190,8 @@ void RigidWorld::handle(int i, const Next& next) {
       const Rail& rail = rails_[next.other];
       const Collider& c = model_.colliders[rail.collider];
       const Vec3 n = rail_normal(k, rail);
-      const double e = restitution(model_.material(c.material), bodies_[i].mass, -glm::dot(k.v, n));
-      collide_rail(k, bodies_[i], n, e, model_.material(c.material).friction, laws_[i].friction);
+      const double e = restitution(model_.material(c.material), model_.balls[i].mass, -glm::dot(k.v, n));
+      collide_rail(k, model_.balls[i], n, e, model_.material(c.material).friction, laws_[i].friction);
       events_.push_back({t, "contact_begin", {id, c.name}});
       events_.push_back({t, "contact_end", {id, c.name}});
       restart(i, t, k);
@@ -201,7 +200,7 @@ void RigidWorld::handle(int i, const Next& next) {
     case Kind::Pocket:
     case Kind::Edge: {
       const bool pocket = next.kind == Kind::Pocket;
-      tracks_[i] = out_track(t, Vec3{k.p.x, -bodies_[i].radius, k.p.z});  // below the bed, as the soft model leaves it
+      tracks_[i] = out_track(t, Vec3{k.p.x, -model_.balls[i].radius, k.p.z});  // below the bed, as the soft model leaves it
       state_.in_play[i] = 0;
       events_.push_back({t, pocket ? "pocketed" : "off_table",
                          pocket ? std::vector<std::string>{id, model_.pockets[next.other].name}

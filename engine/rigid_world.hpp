@@ -56,7 +56,6 @@ class RigidWorld final : public Runner {
   Model model_;
   State state_;
   std::vector<BedLaw> laws_;
-  std::vector<Body> bodies_;
   std::vector<Track> tracks_;
   std::vector<Rail> rails_;
   bool has_edge_ = false;

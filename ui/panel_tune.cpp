@@ -229,7 +229,7 @@ void diagnostics(const Lab& lab) {
   const Stats& s = sim.stats();
   if (sim.model().options.contact == ContactModel::Rigid) {  // no integration: events only
     ImGui::Text("rigid model: %ld collisions and changes of motion", s.steps);
-    ImGui::Text("last frame: %ld events, %.2f ms", lab.shot->last_steps(), lab.shot->last_wall() * 1e3);
+    ImGui::Text("last frame: %ld event(s), %.2f ms", lab.shot->last_steps(), lab.shot->last_wall() * 1e3);
     ImGui::Text("%zu ball(s) moving", sim.island_balls().size());
     if (sim.status() != Status::Ok) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "stopped: %s", status_name(sim.status()));
     return;

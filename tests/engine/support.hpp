@@ -54,6 +54,20 @@ void run_until(Simulation& sim, double limit, Done done, double slice = 1e-2) {
   }
 }
 
+// Ball "cue" of a scene from its start to its rolling event: when it begins to roll, how far it has gone along x and
+// its speed then. Runs until the event, then replays exactly to that time (runs do not depend on slicing).
+struct SlideResult {
+  double tau, distance, speed;  // s, m, m/s
+};
+inline SlideResult slide_to_roll(const Scene& s) {
+  auto sim = simulate(s);
+  run_until(*sim, 3.0, [&] { return event_time(*sim, "rolling", "cue") >= 0; });
+  const double tau = event_time(*sim, "rolling", "cue");
+  auto replay = simulate(s);
+  EXPECT_EQ(replay->advance(tau), Status::Ok);
+  return {tau, position(replay->state().x, 0).x, velocity(replay->state().x, 0).x};
+}
+
 inline void advance_to(Simulation& sim, double t) {
   run_until(sim, t, [] { return false; }, 1.0 / 60);
 }

@@ -24,20 +24,7 @@ Scene slide_scene(double v0, double topspin) {
   return scene(doc);
 }
 
-struct SlideResult {
-  double tau, distance, speed;
-};
-
-// Runs until the rolling event, then replays exactly to that time (runs do not depend on slicing) to read the state.
-SlideResult slide_to_roll(double v0, double topspin) {
-  const Scene s = slide_scene(v0, topspin);
-  auto sim = simulate(s);
-  run_until(*sim, 3.0, [&] { return event_time(*sim, "rolling", "cue") >= 0; });
-  const double tau = event_time(*sim, "rolling", "cue");
-  auto replay = simulate(s);
-  EXPECT_EQ(replay->advance(tau), Status::Ok);
-  return {tau, position(replay->state().x, 0).x, velocity(replay->state().x, 0).x};
-}
+SlideResult slide_to_roll(double v0, double topspin) { return test::slide_to_roll(slide_scene(v0, topspin)); }
 
 TEST(Validation, R1_StunShotSlidesThenRolls) {
   const SlideResult r = slide_to_roll(2.0, 0.0);
