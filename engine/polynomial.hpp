@@ -57,21 +57,29 @@ inline int sign_changes(const Quartic& c, int degree, double lo, double hi, std:
   return count;
 }
 
-// s: the earliest time in [0, h] at which the gap c goes from positive to zero or below (a contact begins); 0 when it
-// is at most zero and closing at s = 0; +inf when it does not.
-inline double first_entry(const Quartic& c, double h) {
-  constexpr double kNever = std::numeric_limits<double>::infinity();
+// The times s in [0, h] at which the gap c begins a contact, ascending (count returned): where it goes from positive to
+// zero or below, and where, at zero or below, it starts to fall (a touching pair that closes, however slowly, from
+// rest or from parting; not one that parts). Between two of c's turns it is monotone, so there are at most 2.
+inline int entries(const Quartic& c, double h, std::array<double, 4>& out) {
   const Quartic d = derivative(c);
-  if (evaluate(c, 0) <= 0 && evaluate(d, 0) < 0) return 0;
   std::array<double, 6> edges{0.0};
   std::array<double, 4> turns{};
-  int n_edges = 1;
+  int n_edges = 1, count = 0;
   const int n = sign_changes(d, 3, 0.0, h, turns);
   for (int k = 0; k < n; ++k) edges[n_edges++] = turns[k];
   edges[n_edges++] = h;
-  for (int k = 0; k + 1 < n_edges; ++k)
-    if (evaluate(c, edges[k]) > 0 && evaluate(c, edges[k + 1]) <= 0) return bisect_root(c, edges[k], edges[k + 1]);
-  return kNever;
+  for (int k = 0; k + 1 < n_edges; ++k) {
+    const double from = evaluate(c, edges[k]), to = evaluate(c, edges[k + 1]);
+    if (from > 0 && to <= 0) out[count++] = bisect_root(c, edges[k], edges[k + 1]);
+    else if (from <= 0 && evaluate(d, 0.5 * (edges[k] + edges[k + 1])) < 0) out[count++] = edges[k];
+  }
+  return count;
+}
+
+// s: the earliest of entries(c, h); +inf when there is none.
+inline double first_entry(const Quartic& c, double h) {
+  std::array<double, 4> out{};
+  return entries(c, h, out) > 0 ? out[0] : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace shotlab

@@ -1,5 +1,6 @@
 #include "rigid_collide.hpp"
 
+#include <array>
 #include <cmath>
 
 namespace shotlab {
@@ -38,12 +39,15 @@ double rail_entry(const Parabola& p, double radius, const Rail& rail, double h) 
   const double reach = std::sqrt(full * full - dy * dy);
   const Vec3 seg = horizontal(rail.b - rail.a);
   const double length = glm::length(seg);
-  double first = std::min(point_entry(p, rail.a, reach, h), point_entry(p, rail.b, reach, h));
-  if (length > 0) {
-    const Vec3 e = seg / length, n{-e.z, 0.0, e.x};
-    const double s = first_entry(squared_minus(along(p, rail.a, n), reach), std::min(h, first));
-    const double lambda = evaluate(along(p, rail.a, e), s);
-    if (s < first && lambda >= 0 && lambda <= length) first = s;
+  const double first = std::min(point_entry(p, rail.a, reach, h), point_entry(p, rail.b, reach, h));
+  if (!(length > 0)) return first;
+  // Entries into the slab count where they are alongside the segment; a curved path may enter it twice.
+  const Vec3 e = seg / length, n{-e.z, 0.0, e.x};
+  std::array<double, 4> in{};
+  const int count = entries(squared_minus(along(p, rail.a, n), reach), std::min(h, first), in);
+  for (int k = 0; k < count; ++k) {
+    const double lambda = evaluate(along(p, rail.a, e), in[k]);
+    if (lambda >= 0 && lambda <= length) return std::min(first, in[k]);
   }
   return first;
 }
@@ -60,11 +64,11 @@ double edge_exit(const Parabola& p, const Vec3& origin, const Vec3& u, const Vec
 
 double closing_speed(const BallState& a, const BallState& b, const Vec3& n) { return glm::dot(a.v - b.v, n); }
 
-double collide_balls(BallState& a, const BallSpec& ba, BallState& b, const BallSpec& bb, const Vec3& n, double e,
-                     const ContactMaterial& material) {
+double collide_balls(BallState& a, const BallSpec& ba, BallState& b, const BallSpec& bb, const Vec3& n,
+                     double parting, const ContactMaterial& material) {
   const double closing = closing_speed(a, b, n);
-  if (!(closing > 0)) return 0;
-  const double jn = (1 + e) * closing / (1 / ba.mass + 1 / bb.mass);
+  if (!(closing >= 0)) return 0;
+  const double jn = (closing + parting) / (1 / ba.mass + 1 / bb.mass);
   // The contact points' relative velocity (a's point at +R_a n, b's at -R_b n), less its normal part.
   const Vec3 vc = a.v + glm::cross(a.w, ba.radius * n) - b.v - glm::cross(b.w, -bb.radius * n);
   const Vec3 vt = vc - glm::dot(vc, n) * n;
@@ -83,12 +87,14 @@ Vec3 rail_normal(const BallState& k, const Rail& rail) {
   return glm::normalize(k.p - (rail.a + along * ab));
 }
 
-double collide_rail(BallState& k, const BallSpec& body, const Vec3& n, double e, double friction, double bed_friction) {
+double collide_rail(BallState& k, const BallSpec& body, const Vec3& n, double parting, double friction,
+                    double bed_friction) {
   const Vec3 nh = horizontal(n);
   const double closing = -glm::dot(k.v, n);
-  if (!(closing > 0) || !(glm::dot(nh, nh) > 0)) return 0;
-  // The bed cancels the normal impulse's vertical part, so only n's horizontal part turns the ball round.
-  const double jn = (1 + e) * closing * body.mass / glm::dot(nh, nh);
+  if (!(closing >= 0) || !(glm::dot(nh, nh) > 0)) return 0;
+  // The bed cancels the normal impulse's vertical part (rails are not below a ball's centre: rigid_unsupported), so
+  // only n's horizontal part turns the ball round.
+  const double jn = (closing + parting) * body.mass / glm::dot(nh, nh);
   const Vec3 r = -body.radius * n;  // centre to the cushion's contact point
   const Vec3 vc = k.v + glm::cross(k.w, r);
   const Vec3 vt = vc - glm::dot(vc, n) * n;

@@ -22,21 +22,22 @@ double point_entry(const Parabola& p, const Vec3& centre, double reach, double h
 // s in [0, h]: when the centre on `p` first leaves the parallelogram origin + [0, 1] u + [0, 1] v (horizontal u, v).
 double edge_exit(const Parabola& p, const Vec3& origin, const Vec3& u, const Vec3& v, double h);
 
-// Two balls touching with unit horizontal normal n from a to b, a closing on b: the normal impulse that parts them at
-// restitution e times their closing speed, and a friction impulse against the slip of their contact points, at most
+// Two balls touching with unit horizontal normal n from a to b, a closing on b (or touching): the normal impulse that
+// parts them at `parting` m/s, and a friction impulse against the slip of their contact points, at most
 // material.friction_at(slip) times the normal one (then it stops the slip). Both stay on the bed: no vertical speed.
 // Returns the closing speed (m/s).
-double collide_balls(BallState& a, const BallSpec& ba, BallState& b, const BallSpec& bb, const Vec3& n, double e,
+double collide_balls(BallState& a, const BallSpec& ba, BallState& b, const BallSpec& bb, const Vec3& n, double parting,
                      const ContactMaterial& material);
 // The closing speed (m/s) along n of a's centre on b's.
 double closing_speed(const BallState& a, const BallState& b, const Vec3& n);
 
 // A ball touching a rail: the unit normal from the nearest point of the rail's axis to the ball's centre.
 Vec3 rail_normal(const BallState& k, const Rail& rail);
-// A ball closing on a rail with normal n: the normal impulse (and the bed's, which keeps the ball on the bed) that
-// sends it back at restitution e times its closing speed in the bed's plane, friction at the cushion's contact point
+// A ball closing on (or touching) a rail with normal n: the normal impulse that sends it back at `parting` m/s along n
+// (with the bed's impulse, which keeps the ball on the bed), friction at the cushion's contact point
 // up to `friction` times the normal impulse, and the bed's friction up to `bed_friction` times the impulse with which
 // the bed holds the ball down. Returns the closing speed (m/s).
-double collide_rail(BallState& k, const BallSpec& body, const Vec3& n, double e, double friction, double bed_friction);
+double collide_rail(BallState& k, const BallSpec& body, const Vec3& n, double parting, double friction,
+                    double bed_friction);
 
 }  // namespace shotlab

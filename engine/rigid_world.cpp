@@ -1,6 +1,8 @@
 #include "rigid_world.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -38,6 +40,35 @@ double bed_height(const Shape& bed) {
   return std::holds_alternative<BoundedPlane>(bed) ? std::get<BoundedPlane>(bed).origin.y : std::get<Plane>(bed).point.y;
 }
 
+const std::vector<Hole>& bed_holes(const Shape& bed) {
+  return std::holds_alternative<BoundedPlane>(bed) ? std::get<BoundedPlane>(bed).holes : std::get<Plane>(bed).holes;
+}
+
+// The problem with the bed's holes and the rails for the rigid model, or "": every hole must be a pocket's (the rigid
+// model pockets a ball whose centre crosses a pocket's edge), and no rail may lie below a ball's centre (it would lift
+// the ball off the bed).
+std::string bed_and_rails_problem(const Model& model, const State& state, int bed) {
+  const Shape& shape = model.colliders[bed].shape;
+  for (const Hole& hole : bed_holes(shape)) {
+    const bool pocket = std::any_of(model.pockets.begin(), model.pockets.end(), [&](const Pocket& p) {
+      return glm::length(horizontal(p.center - hole.center)) < 1e-9 && std::abs(p.radius - hole.radius) < 1e-9;
+    });
+    if (!pocket) {
+      std::ostringstream msg;
+      msg << "the bed '" << model.colliders[bed].name << "' has a hole at x = " << hole.center.x << ", z = "
+          << hole.center.z << " m that is not a pocket's";
+      return msg.str();
+    }
+  }
+  double highest = -std::numeric_limits<double>::infinity();  // m: the highest ball centre at rest on the bed
+  for (int i = 0; i < state.ball_count(); ++i)
+    if (state.in_play[i]) highest = std::max(highest, bed_height(shape) + model.balls[i].radius);
+  for (const Collider& c : model.colliders)
+    if (const auto* cap = std::get_if<Capsule>(&c.shape); cap && cap->a.y < highest - 1e-9)
+      return "collider '" + c.name + "' lies below a ball's centre and would lift it off the bed";
+  return "";
+}
+
 }  // namespace
 
 std::string rigid_unsupported(const Model& model, const State& state) {
@@ -54,6 +85,7 @@ std::string rigid_unsupported(const Model& model, const State& state) {
     if (!cap || cap->a.y != cap->b.y)
       return "collider '" + model.colliders[c].name + "' is not a level cushion or jaw (a horizontal capsule)";
   }
+  if (std::string problem = bed_and_rails_problem(model, state, bed); !problem.empty()) return problem;
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.in_play[i]) continue;
     const BallSpec& b = model.balls[i];
@@ -108,9 +140,11 @@ RigidWorld::RigidWorld(Model model, State initial) : model_(std::move(model)), s
 
 RigidWorld::Next RigidWorld::own_next(int i) const {
   const Track& t = tracks_[i];
-  Next best{t.ends, Kind::Change, -1};
-  if (t.kind == Motion::Pocketed || t.kind == Motion::Stationary || t.kind == Motion::Spinning) return best;
+  if (t.kind == Motion::Pocketed || t.kind == Motion::Stationary || t.kind == Motion::Spinning)
+    return {t.ends, Kind::Change, -1};
+  // A track that outlasts the search's horizon (no rolling resistance) is taken up again there and searched anew.
   const double h = std::min(t.ends - t.t0, kFarthest);
+  Next best{t.t0 + h, Kind::Change, -1};
   const Parabola p = parabola(laws_[i], t, t.t0);
   auto take = [&](double s, Kind kind, int other) {
     if (t.t0 + s < best.time) best = {t.t0 + s, kind, other};
@@ -136,13 +170,18 @@ double RigidWorld::pair_next(int i, int j) const {
   const double t0 = std::max(a.t0, b.t0);
   const double h = std::min({a.ends, b.ends, t0 + kFarthest}) - t0;
   const Parabola pa = parabola(laws_[i], a, t0), pb = parabola(laws_[j], b, t0);
-  const double reach = model_.balls[i].radius + model_.balls[j].radius;
+  const double reach = horizontal_reach(i, j);
   // Out of reach within h even at the greatest closing speed and acceleration: no need to solve.
   const double gap = glm::length(Vec3{pb.p.x - pa.p.x, 0.0, pb.p.z - pa.p.z}) - reach;
   if (gap > glm::length(pb.v - pa.v) * h + 0.5 * glm::length(pb.a - pa.a) * h * h) return kNever;
   const Sweep other = sweep(pb, h);
   if (!sweep(pa, h).near(other.lo, other.hi, reach)) return kNever;  // the boxes they sweep do not come within reach
   return t0 + first_entry(gap_between(pa, pb, reach), h);
+}
+
+double RigidWorld::horizontal_reach(int i, int j) const {
+  const double full = model_.balls[i].radius + model_.balls[j].radius, dy = tracks_[i].p.y - tracks_[j].p.y;
+  return std::sqrt(full * full - dy * dy);  // balls on one bed: |dy| is a difference of radii, under their sum
 }
 
 void RigidWorld::plan(int i) {
@@ -159,11 +198,12 @@ void RigidWorld::restart(int i, double t, const BallState& k) {
   if (now != before) events_.push_back({t, transition_kind(before, now), {model_.balls[i].id}});
 }
 
-double RigidWorld::restitution(const ContactMaterial& material, double m_eff, double closing) const {
-  // Slower than rest_speed, a collision is elastic: a ball pushing another that slides ahead of it (or a rack's
-  // touching balls) would otherwise meet it again and again ever sooner, without end; elastic, it bounces at that speed
-  // every 2 closing / (their deceleration difference), within a micrometre of it.
-  return closing < model_.options.rest_speed ? 1.0 : restitution_at(material, m_eff, closing);
+double RigidWorld::parting(const ContactMaterial& material, double m_eff, double closing) const {
+  // Slower than rest_speed, a collision parts the two at rest_speed: a ball pushing another that slides ahead of it (or
+  // a rack's touching balls, or a ball spun into a cushion from rest) would otherwise meet it again and again ever
+  // sooner, without end; so it bounces every 2 rest_speed / (their deceleration difference), within a micrometre of it.
+  return closing < model_.options.rest_speed ? model_.options.rest_speed
+                                             : restitution_at(material, m_eff, closing) * closing;
 }
 
 void RigidWorld::handle(int i, const Next& next) {
@@ -178,8 +218,8 @@ void RigidWorld::handle(int i, const Next& next) {
       const Vec3 d{kj.p.x - k.p.x, 0.0, kj.p.z - k.p.z};
       const Vec3 n = glm::normalize(d);
       const double m_eff = 1 / (1 / model_.balls[i].mass + 1 / model_.balls[j].mass);
-      const double e = restitution(model_.material(kBallBall), m_eff, closing_speed(k, kj, n));
-      collide_balls(k, model_.balls[i], kj, model_.balls[j], n, e, model_.material(kBallBall));
+      const double out = parting(model_.material(kBallBall), m_eff, closing_speed(k, kj, n));
+      collide_balls(k, model_.balls[i], kj, model_.balls[j], n, out, model_.material(kBallBall));
       events_.push_back({t, "contact_begin", {id, model_.balls[j].id}});
       events_.push_back({t, "contact_end", {id, model_.balls[j].id}});
       restart(i, t, k), restart(j, t, kj);
@@ -190,8 +230,8 @@ void RigidWorld::handle(int i, const Next& next) {
       const Rail& rail = rails_[next.other];
       const Collider& c = model_.colliders[rail.collider];
       const Vec3 n = rail_normal(k, rail);
-      const double e = restitution(model_.material(c.material), model_.balls[i].mass, -glm::dot(k.v, n));
-      collide_rail(k, model_.balls[i], n, e, model_.material(c.material).friction, laws_[i].friction);
+      const double out = parting(model_.material(c.material), model_.balls[i].mass, -glm::dot(k.v, n));
+      collide_rail(k, model_.balls[i], n, out, model_.material(c.material).friction, laws_[i].friction);
       events_.push_back({t, "contact_begin", {id, c.name}});
       events_.push_back({t, "contact_end", {id, c.name}});
       restart(i, t, k);
@@ -222,6 +262,8 @@ Status RigidWorld::advance_on(double dt) {
   const auto wall0 = std::chrono::steady_clock::now();
   const double target = state_.time + dt;
   const int n = state_.ball_count();
+  double reached = target;  // s: where the state is left, the last event handled when the limit stops the loop
+  double last = state_.time;
   while (true) {
     int who = -1;
     Next next{kNever, Kind::Change, -1};
@@ -237,13 +279,14 @@ Status RigidWorld::advance_on(double dt) {
           << "not reach t = " << target << " s; stopped at t = " << next.time << " s at ball '" << model_.balls[who].id
           << "'";
       stop(Status::StepLimit, msg.str());
+      reached = last;
       break;
     }
     handle(who, next);
+    last = next.time;
     ++call_events_, ++stats_.steps;
   }
-  const double reached = status_ == Status::Ok ? target : state_.time;
-  for (int i = 0; i < n && status_ == Status::Ok; ++i) {
+  for (int i = 0; i < n; ++i) {
     const BallState k = at(laws_[i], tracks_[i], reached);
     set_position(state_.x, i, k.p), set_velocity(state_.x, i, k.v), set_spin(state_.x, i, k.w);
   }

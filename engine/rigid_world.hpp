@@ -49,7 +49,8 @@ class RigidWorld final : public Runner {
   Next own_next(int i) const;   // the earliest of ball i's change, rails, pockets and the bed's edge
   double pair_next(int i, int j) const;
   void handle(int i, const Next& next);
-  double restitution(const ContactMaterial& material, double m_eff, double closing) const;  // closing: m/s
+  double horizontal_reach(int i, int j) const;  // m: how near two balls' centres come in the bed's plane when touching
+  double parting(const ContactMaterial& material, double m_eff, double closing) const;  // m/s, from the closing m/s
   void restart(int i, double t, const BallState& k);  // a new track for ball i from k at t; reports a change of kind
   void stop(Status why, std::string message);
 

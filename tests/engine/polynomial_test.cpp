@@ -43,6 +43,12 @@ TEST(Polynomial, ClosingAtZeroGapIsAnEntryAtOnce) {
   EXPECT_EQ(first_entry({0.0, -1.0, 0.0, 0.0, 0.0}, 1.0), 0.0);
   EXPECT_EQ(first_entry({0.0, 1.0, 0.0, 0.0, 0.0}, 1.0), kNever);
   EXPECT_EQ(first_entry({-1e-20, 1.0, 0.0, 0.0, 0.0}, 1.0), kNever);  // overlapping by round-off, parting
+  // Touching with no closing speed but accelerating together: a contact at once (a ball spun into a touching one).
+  EXPECT_EQ(first_entry({0.0, 0.0, -1.0, 0.0, 0.0}, 1.0), 0.0);
+  EXPECT_EQ(first_entry({-1e-20, 0.0, -1.0, 0.0, 0.0}, 1.0), 0.0);
+  EXPECT_EQ(first_entry({0.0, 0.0, 1.0, 0.0, 0.0}, 1.0), kNever);  // touching, accelerating apart
+  // Overlapping, parting, then closing again before they are clear: a contact where they start to close.
+  EXPECT_NEAR(first_entry({-1.0, 1.0, -1.0, 0.0, 0.0}, 2.0), 0.5, 1e-15);
 }
 
 TEST(Polynomial, ANearGrazeIsFoundAndAMissIsNot) {

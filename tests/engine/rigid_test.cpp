@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "engine/rigid_collide.hpp"
 #include "shotlab/diagnostics.hpp"
 #include "shotlab/restitution.hpp"
 #include "support.hpp"
@@ -154,8 +155,97 @@ TEST(Rigid, ResultsDoNotDependOnTheFrameLength) {
   EXPECT_EQ(coarse->events().size(), whole->events().size());
 }
 
+// A ball at rest touching another, spun towards it, pushes it ahead instead of passing through it: the pair touches
+// with no closing speed but accelerates together, which is a contact from that instant (engine/polynomial.hpp), and a
+// collision that slow parts them at rest_speed.
+// Both come to rest within 2 mm of where the soft model, whose contact lasts, leaves them.
+TEST(Rigid, ABallSpunIntoATouchingBallPushesItAhead) {
+  const nlohmann::json doc = cloth_scene(nlohmann::json::array({ball("cue", 0, 0, 2.0), ball("ob", 2 * kR, 0)}));
+  auto sim = simulate(scene(rigid(doc))), soft = simulate(scene(doc));
+  double closest = 1;
+  run_until(*sim, 5.0, [&] {
+    closest = std::min(closest, position(sim->state().x, 1).x - position(sim->state().x, 0).x);
+    return sim->at_rest();
+  }, 1e-3);
+  EXPECT_GT(closest, 2 * kR - 1e-6);
+  EXPECT_GT(position(sim->state().x, 1).x, 2 * kR + 0.1);  // pushed along
+  run_until(*soft, 5.0, [&] { return soft->at_rest(); }, 0.1);
+  for (int i : {0, 1}) EXPECT_NEAR(position(sim->state().x, i).x, position(soft->state().x, i).x, 2e-3) << i;
+}
+
+// The same against a cushion: a ball at rest touching the nose, spun into it, stays on the table.
+TEST(Rigid, ABallSpunIntoACushionFromRestStaysOnTheTable) {
+  auto doc = rigid({{"table", {{"type", "pool"}}}});
+  doc["balls"] = {{{"id", "cue"}, {"position", {0.3, kR, 0}}}};
+  const auto probe = simulate(scene(doc));
+  const double y = position(probe->state().x, 0).y;
+  double nose = 1;  // m: the centre's z touching the far side cushion's capsule over x = 0.3
+  for (const Collider& c : probe->model().colliders)
+    if (const auto* cap = std::get_if<Capsule>(&c.shape);
+        cap && cap->a.z == cap->b.z && cap->a.z > 0 && std::min(cap->a.x, cap->b.x) < 0.3 && std::max(cap->a.x, cap->b.x) > 0.3)
+      nose = cap->a.z - std::sqrt(std::pow(kR + cap->radius, 2) - std::pow(cap->a.y - y, 2));
+  ASSERT_LT(nose, 1.0);
+  doc["balls"][0]["position"] = {0.3, kR, nose};
+  doc["balls"][0]["angular_velocity"] = {3.0 / kR, 0, 0};  // topspin towards +z
+  auto sim = simulate(scene(doc));
+  run_until(*sim, 3.0, [&] { return sim->at_rest(); }, 1e-2);
+  EXPECT_TRUE(sim->state().in_play[0]);
+  EXPECT_LT(position(sim->state().x, 0).z, nose + 1e-9);
+  EXPECT_GE(event_time(*sim, "contact_begin", "cue"), 0);
+}
+
+// A path that curves across a cushion's line beyond its end and back across it alongside the cushion meets the
+// cushion on the way back: the slab along the segment is entered twice. Rail at z = 0 from x = 0 to 1, reach 0.05 m;
+// z(s) = 0.1 - s + s^2 re-enters |z| < 0.05 at s = (1 + sqrt(0.4)) / 2 where x = 1.6 - s = 0.784.
+TEST(Rigid, ACurvedPathMeetsACushionAlongsideItAfterPassingItsEnd) {
+  const Rail rail{0, Vec3{0.0}, Vec3{1.0, 0.0, 0.0}, 0.02};
+  const Parabola p{Vec3{1.6, 0.0, 0.1}, Vec3{-1.0, 0.0, -1.0}, Vec3{0.0, 0.0, 2.0}};
+  EXPECT_NEAR(rail_entry(p, 0.03, rail, 2.0), (1 + std::sqrt(0.4)) / 2, 1e-12);
+}
+
+// Balls of different radii on one bed touch with their centres at different heights: in the bed's plane they meet at
+// sqrt((R1 + R2)^2 - (R1 - R2)^2) = 2 sqrt(R1 R2), not at R1 + R2.
+TEST(Rigid, BallsOfDifferentSizesMeetWhereTheyTouch) {
+  const double big = 0.0325, v = 1.0;
+  nlohmann::json ob = ball("ob", 0.2, 0);
+  ob["radius"] = big, ob["position"][1] = big;
+  auto sim = simulate(scene(rigid(cloth_scene(nlohmann::json::array({ball("cue", 0, v, v), ob}), {{"rolling_resistance", 0}}))));
+  run_until(*sim, 1.0, [&] { return event_time(*sim, "contact_begin", "cue", "ob") >= 0; }, 1e-3);
+  EXPECT_NEAR(event_time(*sim, "contact_begin", "cue", "ob"), (0.2 - 2 * std::sqrt(kR * big)) / v, 1e-9);
+}
+
+// A ball rolling without resistance is searched beyond the search's horizon (1e4 s): at 0.1 mm/s it meets the
+// cushion 1.24 m away after about 1.24e4 s instead of rolling through it.
+TEST(Rigid, AnEventPastTheSearchHorizonIsFound) {
+  auto doc = rigid({{"table", {{"type", "pool"}}}});
+  doc["materials"]["ball_cloth"] = {{"rolling_resistance", 0}};
+  doc["balls"] = {ball("cue", 0, 1e-4, 1e-4)};
+  auto sim = simulate(scene(doc));
+  ASSERT_EQ(sim->advance(2e4), Status::Ok) << sim->diagnostic();
+  // The cushion's nose is at x = 1.27 m; its tilted contact has the centre within a few millimetres of 1.27 - R.
+  EXPECT_GT(event_time(*sim, "contact_begin", "cue"), (1.27 - kR - 0.005) / 1e-4);
+  EXPECT_LT(event_time(*sim, "contact_begin", "cue"), 1.27 / 1e-4);
+  EXPECT_TRUE(sim->state().in_play[0]);
+}
+
+// Stopped by its event limit, the rigid model leaves the state at the last event it handled.
+TEST(Rigid, TheEventLimitLeavesTheStateAtTheLastEvent) {
+  nlohmann::json doc = nlohmann::json::parse(std::ifstream(preset("break.json")));
+  doc["model"]["contact"] = "rigid";
+  doc["integrator"]["max_steps_per_call"] = 5;
+  auto sim = simulate(scene(doc));
+  const State start = sim->state();
+  ASSERT_EQ(sim->advance(1.0), Status::StepLimit);
+  ASSERT_FALSE(sim->events().empty());
+  EXPECT_GT(sim->time(), 0.0);
+  EXPECT_GE(sim->time(), sim->events().back().time);
+  EXPECT_NE(sim->state().x, start.x);
+  EXPECT_NE(sim->diagnostic().find("event limit"), std::string::npos);
+}
+
 // A scene the rigid model cannot run is refused with the field and the reason: a jump shot (the cue drives the ball
-// into the bed hard enough to hop off it), a ball leaving the bed upwards, a rod; a model name it does not know.
+// into the bed hard enough to hop off it), a ball leaving the bed upwards, a rod, a hole in the bed that is no pocket, a
+// rail below a ball's centre; a model name it does not know.
 TEST(Rigid, RefusesScenesOffTheBed) {
   auto refused = [](nlohmann::json doc, const std::string& why) {
     doc["model"]["contact"] = "rigid";
@@ -172,6 +262,12 @@ TEST(Rigid, RefusesScenesOffTheBed) {
   up["velocity"][1] = 0.5;
   refused(cloth_scene(nlohmann::json::array({up})), "leaves the bed upwards");
   refused(nlohmann::json::parse(std::ifstream(preset("cradle.json"))), "rods");
+  nlohmann::json holed = cloth_scene(nlohmann::json::array({ball("cue", 0, 1)}));
+  holed["colliders"][0]["holes"] = {{{"center", {0.5, 0, 0}}, {"radius", 0.06}}};
+  refused(holed, "hole at x = 0.5, z = 0 m that is not a pocket's");
+  nlohmann::json low = cloth_scene(nlohmann::json::array({ball("cue", 0, 1)}));
+  low["colliders"].push_back({{"type", "capsule"}, {"name", "kerb"}, {"a", {1, 0.01, -1}}, {"b", {1, 0.01, 1}}, {"radius", 0.01}});
+  refused(low, "collider 'kerb' lies below a ball's centre");
   nlohmann::json typo = rigid(cloth_scene(nlohmann::json::array({ball("cue", 0, 1)})));
   typo["model"]["contact"] = "hard";
   try {
