@@ -36,6 +36,16 @@ std::vector<DirEntry> list_scene_dir(const std::string& dir) {
   return out;
 }
 
+std::string typed_path(const std::string& typed, const std::string& dir) {
+  const size_t from = typed.find_first_not_of(" \t"), to = typed.find_last_not_of(" \t");
+  if (from == std::string::npos) return "";
+  fs::path p = typed.substr(from, to - from + 1);
+  const char* home = std::getenv("HOME");
+  if (home && *home && (p == "~" || p.string().rfind("~/", 0) == 0)) p = fs::path(home) / p.string().substr(std::min<size_t>(2, p.string().size()));
+  if (p.is_relative()) p = fs::path(dir) / p;
+  return p.lexically_normal().string();
+}
+
 bool inside(const std::string& path, const std::string& dir) {
   std::error_code ec;
   const fs::path p = fs::weakly_canonical(path, ec);

@@ -2,27 +2,30 @@
 // break set up, and shots. Each entry is the scene as it was before the action, with a label for the menu. A run of
 // edits of the same kind (dragging the aim, nudging the speed) merges into one entry, so that one undo takes back
 // the whole gesture. Tuned physics is not part of it (the tuning panel has its own reset), except across a file load:
-// undoing a load brings back the whole scene before it, its file and its tuned physics.
+// undoing a load brings back the whole scene before it, its file, its tuned physics and the lab's workbench.
 #pragma once
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "shotlab/scene.hpp"
+#include "ui/workbench.hpp"
 
 namespace shotlab {
 
-// The file a scene came from: its path ("" for a scene made in the lab) and the scene as it was loaded.
+// The file a scene came from: its path ("" for a scene made in the lab), the scene as it was loaded, and what the
+// lab held about it (kept shots, A/B, target, measured shot) when another file replaced it.
 struct SceneFile {
   std::string path;
   Scene loaded;
+  Workbench bench;
 };
 
 // What undo or redo goes back to: the scene, and for a load's entry the file that goes with it.
 struct HistoryStep {
   std::string label;
   Scene scene;
-  std::optional<SceneFile> file;  // set when the step crosses a file load: physics, path and loaded go back too
+  std::optional<SceneFile> file;  // set when the step crosses a file load: physics, path, loaded, bench go back too
 };
 
 class History {

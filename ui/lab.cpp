@@ -48,13 +48,11 @@ void Lab::say(MessageKind kind, std::string text) {
 void Lab::adopt(Scene s, const std::string& path, const std::string& what) {
   validate(s);
   if (!scene.balls.empty() || !scene_path.empty())
-    history.record_load("open " + std::filesystem::path(path).filename().string(), scene, {scene_path, loaded});
+    history.record_load("open " + std::filesystem::path(path).filename().string(), scene, current_file());
   loaded = s;
   set_scene(std::move(s));
-  ghost.clear(), kept.clear(), compare.clear(), compare_label.clear();
-  target.reset();
-  measured.fit.cancel(), measured.shot.reset(), measured.last.reset();
-  measured.applied = measured.fit.finished();
+  ghost.clear();
+  restore({});
   std::string note = "loaded ";
   note.append(what).append(path);
   if (history.can_undo()) note += " (Undo brings back the scene before)";
@@ -62,7 +60,12 @@ void Lab::adopt(Scene s, const std::string& path, const std::string& what) {
   if (on_load) on_load(scene);
 }
 
-bool Lab::load(const std::string& path) {
+bool Lab::load(const std::string& given) {
+  // Kept absolute: Save and the dialogs, which take typed names inside the scene's folder, do not depend on the
+  // working folder.
+  std::error_code ec;
+  const std::filesystem::path abs = std::filesystem::absolute(given, ec);
+  const std::string path = ec ? given : abs.lexically_normal().string();
   if (std::filesystem::path(path).extension() == ".csv") return load_measured(path);
   try {
     adopt(load_scene(path), path, "");
@@ -254,13 +257,13 @@ void Lab::replay() {
 void Lab::undo() {
   if (in_hand) {  // putting the ball back where it was picked up
     in_hand = false;
-    if (history.can_undo()) take_step(history.undo(scene, {scene_path, loaded}));
+    if (history.can_undo()) take_step(history.undo(scene, current_file()));
     scene_changed();
     return;
   }
   if (!history.can_undo()) return say(MessageKind::Note, "nothing to undo");
   const std::string what = history.undo_label();
-  HistoryStep previous = history.undo(scene, {scene_path, loaded});
+  HistoryStep previous = history.undo(scene, current_file());
   if (shot && !previous.file) ghost = trails(shot->sim().time());
   take_step(std::move(previous));
   shot.reset();
@@ -278,6 +281,7 @@ void Lab::take_step(HistoryStep step) {
     loaded = std::move(step.file->loaded);
     if (!scene_path.empty()) remember_file(settings, scene_path);  // the next start opens the scene shown
     ghost.clear();
+    restore(std::move(step.file->bench));
     scene = std::move(step.scene);
     if (on_load) on_load(scene);  // the camera frames the table it goes back to
     return;
@@ -286,11 +290,25 @@ void Lab::take_step(HistoryStep step) {
   scene = std::move(step.scene);
 }
 
+SceneFile Lab::current_file() const {
+  return {scene_path, loaded, {kept, compare, compare_label, target, measured.shot, measured.path, measured.last}};
+}
+
+void Lab::restore(Workbench bench) {
+  kept = std::move(bench.kept);
+  compare = std::move(bench.compare), compare_label = std::move(bench.compare_label);
+  target = bench.target;
+  measured.fit.cancel();  // a fit of the scene being left is not applied to the one coming back
+  measured.shot = std::move(bench.measured), measured.path = std::move(bench.measured_path);
+  measured.last = std::move(bench.measured_fit);
+  measured.applied = measured.fit.finished();
+}
+
 void Lab::redo() {
   if (!history.can_redo()) return say(MessageKind::Note, "nothing to redo");
   if (history.redo_label() == "shot") return shoot();  // shooting again records the shot anew
   const std::string what = history.redo_label();
-  take_step(history.redo(scene, {scene_path, loaded}));
+  take_step(history.redo(scene, current_file()));
   shot.reset();
   playing = false;
   view_time = 0;

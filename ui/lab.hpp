@@ -27,8 +27,6 @@ namespace shotlab {
 // Index of the ball with this id in scene.balls, -1 when absent.
 int scene_ball(const Scene& s, const std::string& id);
 
-using Trails = std::vector<std::vector<PathPoint>>;  // per ball
-
 // What a left click or drag on the table does.
 enum class Tool { Aim, Move, Target };
 
@@ -36,13 +34,6 @@ enum class Tool { Aim, Move, Target };
 // offers to undo the shot; a refused edit or a note is a line of feedback.
 enum class MessageKind { None, Note, Refused, LoadError, EngineStop };
 
-// A shot kept to compare with later ones: its trails and the cue settings that made it.
-struct KeptShot {
-  std::string label;
-  Trails trails;
-  int colour = 0;
-  bool visible = true;
-};
 inline constexpr size_t kMaxKeptShots = 8;
 inline constexpr double kAimStepDeg = 0.1;  // the aim keys' plain step (shift 1 degree, ctrl 0.01)
 // The cue turned by `degrees` (positive: counter-clockwise seen from above), as the aim keys turn it.
@@ -153,6 +144,8 @@ class Lab {
  private:
   void adopt(Scene s, const std::string& path, const std::string& what);  // lab.cpp: a loaded scene taken on
   void take_step(HistoryStep step);  // the scene (and file) undo or redo goes back to
+  SceneFile current_file() const;    // the scene's file and the workbench, for the history to bring back
+  void restore(Workbench bench);     // kept shots, A/B, target and measured shot as a load's undo brings them back
   bool editable(const char* what);
   bool fits(int i, const Vec3& p) const;
   void show(double t);

@@ -30,7 +30,10 @@ const std::vector<PresetEntry>& presets(const std::string& data_root) {
     std::vector<PresetEntry> out;
     for (const DirEntry& e : list_scene_dir(data_root + "/presets")) {
       if (e.folder) continue;
-      PresetEntry p{data_root + "/presets/" + e.name, fs::path(e.name).stem().string(), ""};
+      // Absolute, as Lab::load keeps the scene's path: the preset shown is found by comparing the two.
+      std::error_code ec;
+      const fs::path file = fs::path(data_root) / "presets" / e.name, abs = fs::absolute(file, ec);
+      PresetEntry p{(ec ? file : abs).lexically_normal().string(), fs::path(e.name).stem().string(), ""};
       try {
         const Scene s = load_scene(p.path);
         p.name = s.name.empty() ? p.name : s.name;
@@ -59,8 +62,9 @@ void browser_popup(Lab& lab, std::string& dir) {
   ImGui::SameLine();
   if ((ImGui::Button("Open") || enter) && !typed.empty()) {
     std::error_code ec;
-    if (fs::is_directory(typed, ec)) dir = typed, typed.clear();
-    else if (lab.load(typed)) typed.clear(), ImGui::CloseCurrentPopup();  // a bad file: its message, popup stays
+    const std::string path = typed_path(typed, dir);
+    if (fs::is_directory(path, ec)) dir = path, typed.clear();
+    else if (lab.load(path)) typed.clear(), ImGui::CloseCurrentPopup();  // a bad file: its message, popup stays
   }
   ImGui::SameLine();
   if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
@@ -98,12 +102,14 @@ void save_to(Lab& lab, const std::string& path) {
   }
 }
 
-// Save as: a path box, with a confirmation before replacing a file that exists.
-void save_as_popup(Lab& lab, std::string& path) {
+// Save as: a path box (a relative path is taken inside `folder`, the one it proposes), with a confirmation before
+// replacing a file that exists.
+void save_as_popup(Lab& lab, std::string& typed, const std::string& folder) {
   if (!ImGui::BeginPopupModal("Save scene as", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
   ImGui::TextUnformatted("File (a .json scene):");
   ImGui::SetNextItemWidth(em(420));
-  const bool enter = ImGui::InputText("##saveas", &path, ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool enter = ImGui::InputText("##saveas", &typed, ImGuiInputTextFlags_EnterReturnsTrue);
+  const std::string path = typed_path(typed, folder);
   std::error_code ec;
   const bool exists = !path.empty() && fs::exists(path, ec);
   const bool preset = inside(path, lab.data_root + "/presets");
@@ -180,7 +186,7 @@ void scene_section(Lab& lab) {
     ImGui::OpenPopup("Save scene as");
   }
   mark("Save as...");
-  save_as_popup(lab, save_path);
+  save_as_popup(lab, save_path, folder);
   same_line_if_fits("Set up break");
   if (ImGui::Button("Set up break")) lab.setup_break();
   mark("Set up break");

@@ -651,26 +651,37 @@ def layout(binary, root, display, work):
 
 
 def bad_scene(binary, root, display, work):
-    """A broken file typed into Open is named and the scene kept; a scene opened over an aimed one undoes back to it;
+    """A broken file typed into Open by its name in the folder shown is named and the scene kept; a scene opened over an aimed one undoes back to it;
     a broken --scene: the error on stderr and in the banner, a preset opens instead, and the settings still name the
     user's last good scene after the window closes."""
     config = os.path.join(work, "config")
-    bad = os.path.join(work, "broken.json")
+    scenes = os.path.join(work, "scenes")  # not the app's working folder
+    os.makedirs(scenes, exist_ok=True)
+    bad = os.path.join(scenes, "broken.json")
     with open(bad, "w") as f:
         f.write('{"balls": [{"id": "a", "mass": -1}]}')
     app = App(binary, display, work, os.path.join(root, "presets", "cut.json"), config=config)
     app.key("Right", 3)
     aimed = app.state()["cue"]["aim_deg"]
-    for path, what in ((bad, "a broken file"), (os.path.join(root, "presets", "break.json"), "the break preset")):
-        app.click_widget(app.state(), "Open...")
-        time.sleep(0.4)
+    app.click_widget(app.state(), "Open...")
+    time.sleep(0.4)
+    app.click_widget(app.state(), "open path")
+    app.type(scenes)  # a folder typed: the dialog shows it
+    app.key("Return")
+    time.sleep(0.4)
+    # A name typed there is the file in the folder shown, not in the working folder.
+    for path, what in (("broken.json", "a broken file"), (os.path.join(root, "presets", "break.json"), "the break preset")):
+        if what != "a broken file":
+            app.click_widget(app.state(), "Open...")
+            time.sleep(0.4)
         app.click_widget(app.state(), "open path")
         app.type(path)
         app.key("Return")
         time.sleep(0.4)
         s = app.state()
         if what == "a broken file":
-            check(len(s["balls"]) == 2 and "broken.json" in s["message"], "a typed broken file is named, the scene kept")
+            check(len(s["balls"]) == 2 and bad in s["message"] and "mass" in s["message"],
+                  f"a broken file typed by its name in the folder shown is named, the scene kept ({s['message']})")
             app.key("s")  # the shoot key, with the dialog still open
             time.sleep(0.3)
             check(not app.state()["has_shot"], "keys do not reach the scene behind the open dialog: S does not shoot")

@@ -128,8 +128,11 @@ TEST_F(LabTest, PocketAimsSayWhetherTheBallDrops) {
   ASSERT_FALSE(aims.empty());
   EXPECT_TRUE(aims.front().drops);
   EXPECT_NEAR(aims.front().cut_deg, 30.0, 1.0);
-  for (const PocketAim& a : aims)
-    if (a.cut_deg > 75) EXPECT_FALSE(a.drops) << a.pocket << " at " << a.cut_deg << " deg";
+  for (const PocketAim& a : aims) {
+    if (a.cut_deg > 75) {
+      EXPECT_FALSE(a.drops) << a.pocket << " at " << a.cut_deg << " deg";
+    }
+  }
   lab.nudge_aim(40.0);
   ASSERT_LT(aim_line(lab.scene)->hit, 0);
   lab.aim_for_pocket(1);
@@ -244,6 +247,33 @@ TEST_F(LabTest, LoadingAnotherSceneUndoes) {
   EXPECT_EQ(lab.scene.balls.size(), 16u);
   EXPECT_EQ(lab.scene_path, test::preset("break.json"));
   EXPECT_TRUE(lab.physics_changes().empty());
+}
+
+// What the lab held about a scene beside it (kept shots, the A of A/B, the target, the measured shot it was made from)
+// starts afresh with another file and comes back when that load is undone; redo starts it afresh again.
+TEST_F(LabTest, UndoingALoadBringsBackTheWorkbench) {
+  load("cut.json");
+  lab.shoot();
+  ASSERT_TRUE(lab.shot);
+  lab.seek(2.0);
+  lab.keep_shot();
+  lab.pin_compare();
+  lab.set_target({0.4, 0, 0.1});
+  lab.measured.shot = MeasuredShot{}, lab.measured.path = "/shots/tracked.csv";
+  load("break.json");
+  EXPECT_TRUE(lab.kept.empty() && lab.compare.empty() && !lab.target && !lab.measured.shot);
+  lab.undo();
+  ASSERT_EQ(lab.kept.size(), 1u);
+  EXPECT_FALSE(lab.kept[0].trails.empty());
+  EXPECT_FALSE(lab.compare.empty());
+  EXPECT_EQ(lab.compare_label, "A: as loaded");
+  ASSERT_TRUE(lab.target);
+  EXPECT_EQ(lab.target->x, 0.4);
+  EXPECT_TRUE(lab.measured.shot);
+  EXPECT_EQ(lab.measured.path, "/shots/tracked.csv");
+  lab.redo();
+  EXPECT_EQ(lab.scene.balls.size(), 16u);
+  EXPECT_TRUE(lab.kept.empty() && lab.compare.empty() && !lab.target && !lab.measured.shot);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // files written atomically.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -54,15 +55,15 @@ TEST(History, AGestureIsOneEntryAndANewEditClearsRedo) {
 TEST(History, ALoadStepCarriesItsFileBothWays) {
   History h;
   h.record("move 1", named("a"));
-  h.record_load("open break.json", named("b"), {"cut.json", named("cut as loaded")});
-  HistoryStep back = h.undo(named("break"), {"break.json", named("break as loaded")});
+  h.record_load("open break.json", named("b"), {"cut.json", named("cut as loaded"), {}});
+  HistoryStep back = h.undo(named("break"), {"break.json", named("break as loaded"), {}});
   EXPECT_EQ(back.scene.name, "b");
   ASSERT_TRUE(back.file);
   EXPECT_EQ(back.file->path, "cut.json");
   EXPECT_EQ(back.file->loaded.name, "cut as loaded");
-  EXPECT_FALSE(h.undo(named("b"), {"cut.json", named("cut as loaded")}).file);  // a plain edit's step has none
+  EXPECT_FALSE(h.undo(named("b"), {"cut.json", named("cut as loaded"), {}}).file);  // a plain edit's step has none
   EXPECT_FALSE(h.redo(named("a"), {}).file);
-  HistoryStep again = h.redo(named("b"), {"cut.json", named("cut as loaded")});
+  HistoryStep again = h.redo(named("b"), {"cut.json", named("cut as loaded"), {}});
   EXPECT_EQ(again.scene.name, "break");
   ASSERT_TRUE(again.file);
   EXPECT_EQ(again.file->path, "break.json");
@@ -140,6 +141,14 @@ TEST(Files, AtomicWriteReplacesWholeAndLeavesNoTemporaries) {
   EXPECT_EQ(unique_path(dir.string(), "cut shot", "png"), (dir / "cut-shot-2.png").string());
   EXPECT_TRUE(inside(file.string(), dir.string()));
   EXPECT_FALSE(inside(dir.string() + "/../x.json", dir.string()));
+  // Typed in a dialog showing `dir`: relative names are inside it, absolute ones stand, "~" is home.
+  EXPECT_EQ(typed_path(" scene.json ", "/data/shots"), "/data/shots/scene.json");
+  EXPECT_EQ(typed_path("../a/b.json", "/data/shots"), "/data/a/b.json");
+  EXPECT_EQ(typed_path("/elsewhere/c.json", "/data/shots"), "/elsewhere/c.json");
+  EXPECT_EQ(typed_path("   ", "/data/shots"), "");
+  if (const char* home = std::getenv("HOME"); home && *home) {
+    EXPECT_EQ(typed_path("~/d.json", "/data/shots"), (std::filesystem::path(home) / "d.json").lexically_normal().string());
+  }
   std::filesystem::remove_all(dir);
 }
 
