@@ -42,7 +42,7 @@ std::string goal_text(const MarginOptions& o) {
   const double numbers[] = {o.goal.x, o.goal.z, o.goal.radius, o.noise.aim_deg, o.noise.speed_pct, o.noise.tip_mm,
                             o.noise.elevation_deg, static_cast<double>(o.samples)};
   std::string text = o.goal.ball + "|" + o.goal.pocket;
-  for (double v : numbers) text += "|" + std::to_string(v);
+  for (double v : numbers) text.append("|").append(std::to_string(v));
   return text;
 }
 }  // namespace

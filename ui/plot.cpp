@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <utility>
 
 #include "ui/files.hpp"
 #include "ui/ticks.hpp"
@@ -69,6 +70,90 @@ float header(ImDrawList* d, ImVec2 o, float width, const PlotSpec& spec, const s
   return y - o.y + line + em(4);
 }
 
+// The time axis: the spec's, or the series' extent.
+std::pair<double, double> time_extent(const PlotSpec& spec, const std::vector<PlotSeries>& series) {
+  if (spec.t1 >= spec.t0) return {spec.t0, spec.t1};
+  double t0 = INFINITY, t1 = -INFINITY;
+  for (const PlotSeries& s : series)
+    if (!s.time.empty()) t0 = std::min(t0, s.time.front()), t1 = std::max(t1, s.time.back());
+  return t0 < t1 ? std::pair{t0, t1} : std::pair{0.0, 1.0};
+}
+
+// The plot area a-b on screen and the times and values it spans.
+struct Area {
+  ImVec2 a, b;
+  double t0, t1;
+  Range v;
+  float x(double t) const { return a.x + static_cast<float>((t - t0) / (t1 - t0)) * (b.x - a.x); }
+  float y(double value) const { return b.y - static_cast<float>((value - v.lo) / (v.hi - v.lo)) * (b.y - a.y); }
+};
+
+constexpr ImU32 kGrid = IM_COL32(90, 90, 90, 120);
+
+void value_axis(ImDrawList* d, const Area& p, const Ticks& ticks) {
+  const float line = ImGui::GetTextLineHeight();
+  for (double y : ticks.values) {
+    if (y < p.v.lo || y > p.v.hi) continue;
+    d->AddLine({p.a.x, p.y(y)}, {p.b.x, p.y(y)}, kGrid);
+    const std::string s = format_tick(y, ticks);
+    d->AddText({p.a.x - em(4) - ImGui::CalcTextSize(s.c_str()).x, p.y(y) - line / 2}, ImGui::GetColorU32(ImGuiCol_Text),
+               s.c_str());
+  }
+}
+
+// Ticks counted from spec.origin in the span's unit, and the axis's name under them.
+void time_axis(ImDrawList* d, const Area& p, const PlotSpec& spec, float left, float width) {
+  const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
+  const TimeUnit unit = time_unit(p.t1 - p.t0);
+  const Ticks ticks = nice_ticks((p.t0 - spec.origin) * unit.per_second, (p.t1 - spec.origin) * unit.per_second,
+                                 std::max(2, static_cast<int>((p.b.x - p.a.x) / em(60))));
+  for (double x : ticks.values) {
+    const float X = p.x(spec.origin + x / unit.per_second);
+    if (X < p.a.x - 0.5f || X > p.b.x + 0.5f) continue;
+    d->AddLine({X, p.a.y}, {X, p.b.y}, kGrid);
+    const std::string s = format_tick(x, ticks);
+    d->AddText({X - ImGui::CalcTextSize(s.c_str()).x / 2, p.b.y + 1}, text, s.c_str());
+  }
+  // Under the axis, centred; in a narrow panel the origin's label drops "time", then starts at the plot's left edge.
+  std::string label = (spec.origin_name.empty() ? "time" : "time since " + spec.origin_name) + " (" + unit.name + ")";
+  if (!spec.origin_name.empty() && ImGui::CalcTextSize(label.c_str()).x > width) label = label.substr(5);
+  d->AddText({std::max(left, (p.a.x + p.b.x - ImGui::CalcTextSize(label.c_str()).x) / 2),
+              p.b.y + ImGui::GetTextLineHeight()},
+             text, label.c_str());
+}
+
+void curves(ImDrawList* d, const Area& p, const PlotSpec& spec, const std::vector<PlotSeries>& series) {
+  d->PushClipRect(p.a, p.b, true);
+  for (const PlotSeries& s : series) {
+    std::vector<ImVec2> pts;
+    for (size_t k = 0; k < s.time.size(); ++k)
+      if (std::isfinite(s.value[k])) pts.push_back({p.x(s.time[k]), p.y(std::clamp(s.value[k], p.v.lo, p.v.hi))});
+    simplified_polyline(d, pts, s.colour, em(1.6f));
+  }
+  if (spec.cursor >= p.t0 && spec.cursor <= p.t1)
+    d->AddLine({p.x(spec.cursor), p.a.y}, {p.x(spec.cursor), p.b.y}, IM_COL32(255, 255, 255, 200), 1.5f);
+  d->PopClipRect();
+}
+
+// Under the pointer: a line, and a tooltip with the time and each series' value there. Returns that time.
+std::optional<double> hover(ImDrawList* d, const Area& p, const PlotSpec& spec, const std::vector<PlotSeries>& series) {
+  const ImVec2 m = ImGui::GetIO().MousePos;
+  if (m.x < p.a.x || m.x > p.b.x) return std::nullopt;
+  const double t = p.t0 + (m.x - p.a.x) / (p.b.x - p.a.x) * (p.t1 - p.t0);
+  d->AddLine({m.x, p.a.y}, {m.x, p.b.y}, IM_COL32(255, 255, 120, 120));
+  std::string tip = "t = " + format_time(t, p.t1 - p.t0 < 0.05);
+  if (!spec.origin_name.empty()) {
+    const TimeUnit unit = time_unit(p.t1 - p.t0);
+    char since[64];
+    std::snprintf(since, sizeof since, " (%.4g %s since ", (t - spec.origin) * unit.per_second, unit.name);
+    tip += since + spec.origin_name + ")";
+  }
+  for (const PlotSeries& s : series)
+    if (const auto y = value_at(s, t)) tip += "\n" + s.name + ": " + with_unit(*y, spec.unit);
+  ImGui::SetTooltip("%s\n(click: go to this time; right-click: export)", tip.c_str());
+  return t;
+}
+
 }  // namespace
 
 PlotAction plot(const char* id, const PlotSpec& spec, const std::vector<PlotSeries>& series, float height) {
@@ -83,70 +168,19 @@ PlotAction plot(const char* id, const PlotSpec& spec, const std::vector<PlotSeri
   ImDrawList* d = ImGui::GetWindowDrawList();
   const float line = ImGui::GetTextLineHeight();
   const float top = o.y + header(d, o, width, spec, series);
-  double t0 = spec.t0, t1 = spec.t1;
-  if (t1 < t0) {
-    t0 = INFINITY, t1 = -INFINITY;
-    for (const PlotSeries& s : series)
-      if (!s.time.empty()) t0 = std::min(t0, s.time.front()), t1 = std::max(t1, s.time.back());
-    if (!(t0 < t1)) t0 = 0, t1 = 1;
-  }
+  const auto [t0, t1] = time_extent(spec, series);
   const Range v = value_range(spec, series, t0, t1);
   const Ticks yt = nice_ticks(v.lo, v.hi, 4);
   float left = 0;
   for (double y : yt.values) left = std::max(left, ImGui::CalcTextSize(format_tick(y, yt).c_str()).x);
-  const ImVec2 a{o.x + left + em(6), top}, b{o.x + width - em(4), o.y + height - 2 * line - em(2)};
-  if (b.y - a.y < line || b.x - a.x < em(40)) return ImGui::PopID(), out;
-  auto px = [&](double t) { return a.x + static_cast<float>((t - t0) / (t1 - t0)) * (b.x - a.x); };
-  auto py = [&](double y) { return b.y - static_cast<float>((y - v.lo) / (v.hi - v.lo)) * (b.y - a.y); };
-  const ImU32 grid = IM_COL32(90, 90, 90, 120), text = ImGui::GetColorU32(ImGuiCol_Text);
-  d->AddRectFilled(a, b, IM_COL32(20, 22, 26, 255));
-  for (double y : yt.values) {
-    if (y < v.lo || y > v.hi) continue;
-    d->AddLine({a.x, py(y)}, {b.x, py(y)}, grid);
-    const std::string s = format_tick(y, yt);
-    d->AddText({a.x - em(4) - ImGui::CalcTextSize(s.c_str()).x, py(y) - line / 2}, text, s.c_str());
-  }
-  const TimeUnit unit = time_unit(t1 - t0);
-  const double from = spec.origin;
-  const Ticks xt = nice_ticks((t0 - from) * unit.per_second, (t1 - from) * unit.per_second,
-                              std::max(2, static_cast<int>((b.x - a.x) / em(60))));
-  for (double x : xt.values) {
-    const float X = px(from + x / unit.per_second);
-    if (X < a.x - 0.5f || X > b.x + 0.5f) continue;
-    d->AddLine({X, a.y}, {X, b.y}, grid);
-    const std::string s = format_tick(x, xt);
-    d->AddText({X - ImGui::CalcTextSize(s.c_str()).x / 2, b.y + 1}, text, s.c_str());
-  }
-  // Under the axis, centred; in a narrow panel the origin's label drops "time", then starts at the plot's left edge.
-  std::string x_label =
-      (spec.origin_name.empty() ? "time" : "time since " + spec.origin_name) + " (" + unit.name + ")";
-  if (!spec.origin_name.empty() && ImGui::CalcTextSize(x_label.c_str()).x > width) x_label = x_label.substr(5);
-  d->AddText({std::max(o.x, (a.x + b.x - ImGui::CalcTextSize(x_label.c_str()).x) / 2), b.y + line}, text,
-             x_label.c_str());
-  d->PushClipRect(a, b, true);
-  for (const PlotSeries& s : series) {
-    std::vector<ImVec2> pts;
-    for (size_t k = 0; k < s.time.size(); ++k)
-      if (std::isfinite(s.value[k])) pts.push_back({px(s.time[k]), py(std::clamp(s.value[k], v.lo, v.hi))});
-    simplified_polyline(d, pts, s.colour, em(1.6f));
-  }
-  if (spec.cursor >= t0 && spec.cursor <= t1) d->AddLine({px(spec.cursor), a.y}, {px(spec.cursor), b.y}, IM_COL32(255, 255, 255, 200), 1.5f);
-  d->PopClipRect();
-  const ImVec2 m = ImGui::GetIO().MousePos;
-  if (hovered && m.x >= a.x && m.x <= b.x) {
-    const double t = t0 + (m.x - a.x) / (b.x - a.x) * (t1 - t0);
-    d->AddLine({m.x, a.y}, {m.x, b.y}, IM_COL32(255, 255, 120, 120));
-    std::string tip = "t = " + format_time(t, t1 - t0 < 0.05);
-    if (!spec.origin_name.empty()) {
-      char since[64];
-      std::snprintf(since, sizeof since, " (%.4g %s since ", (t - from) * unit.per_second, unit.name);
-      tip += since + spec.origin_name + ")";
-    }
-    for (const PlotSeries& s : series)
-      if (const auto y = value_at(s, t)) tip += "\n" + s.name + ": " + with_unit(*y, spec.unit);
-    ImGui::SetTooltip("%s\n(click: go to this time; right-click: export)", tip.c_str());
-    if (active) out.picked = t;
-  }
+  const Area area{{o.x + left + em(6), top}, {o.x + width - em(4), o.y + height - 2 * line - em(2)}, t0, t1, v};
+  if (area.b.y - area.a.y < line || area.b.x - area.a.x < em(40)) return ImGui::PopID(), out;
+  d->AddRectFilled(area.a, area.b, IM_COL32(20, 22, 26, 255));
+  value_axis(d, area, yt);
+  time_axis(d, area, spec, o.x, width);
+  curves(d, area, spec, series);
+  if (hovered)
+    if (const auto t = hover(d, area, spec, series); t && active) out.picked = *t;
   if (ImGui::BeginPopupContextItem("export")) {
     out.export_csv = ImGui::MenuItem("Export CSV");
     out.export_png = ImGui::MenuItem("Export PNG");
