@@ -8,6 +8,8 @@ namespace shotlab {
 namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
+// Slices of a cushion impact's normal impulse; the error of the state after it falls as 1 / slices.
+constexpr int kRailSlices = 64;
 
 // The polynomial l0 + l1 s + l2 s^2 of a linear function `dir` . (x - origin) of the centre on p.
 Quartic along(const Parabola& p, const Vec3& origin, const Vec3& dir) {
@@ -92,21 +94,24 @@ double collide_rail(BallState& k, const BallSpec& body, const Vec3& n, double pa
   const Vec3 nh = horizontal(n);
   const double closing = -glm::dot(k.v, n);
   if (!(closing >= 0) || !(glm::dot(nh, nh) > 0)) return 0;
-  // The bed cancels the normal impulse's vertical part (rails are not below a ball's centre: rigid_unsupported), so
-  // only n's horizontal part turns the ball round.
-  const double jn = (closing + parting) * body.mass / glm::dot(nh, nh);
-  const Vec3 r = -body.radius * n;  // centre to the cushion's contact point
-  const Vec3 vc = k.v + glm::cross(k.w, r);
-  const Vec3 vt = vc - glm::dot(vc, n) * n;
+  // The impact integrated over the cushion's normal impulse, in slices (docs/model.md#rigid-model): in each, the
+  // cushion's push along n, friction at its contact point against that point's slip, the bed's normal impulse that
+  // holds the ball on the bed against the push's downward part (rails are not below a ball's centre:
+  // rigid_unsupported), and the cloth's friction against the slip at the bed, until the ball leaves at `parting`.
+  const double across = glm::dot(nh, nh) / body.mass;  // (m/s) / (N s): speed along n a slice of push gives
+  const double slice = (closing + parting) / across / kRailSlices;  // N s
+  const Vec3 at_rail = -body.radius * n, at_bed = -body.radius * kUp;
   const double compliance = 1 / body.mass + body.radius * body.radius / body.inertia();
-  const Vec3 push = jn * n + friction_impulse(vt, compliance, friction * jn);
-  k.v += push / body.mass, k.w += glm::cross(r, push) / body.inertia();
-  // The bed stops what the push drives into it, and with that impulse its friction acts against the slip at the bed.
-  const double pressed = std::max(0.0, -k.v.y * body.mass);
-  const Vec3 under = -body.radius * kUp;
-  const Vec3 slip = k.v + glm::cross(k.w, under);
-  const Vec3 rub = friction_impulse({slip.x, 0.0, slip.z}, compliance, bed_friction * pressed);
-  k.v += rub / body.mass, k.w += glm::cross(under, rub) / body.inertia();
+  for (int s = 0; s < 4 * kRailSlices && glm::dot(k.v, n) < parting; ++s) {
+    const double push = std::max(std::min(slice, (parting - glm::dot(k.v, n)) / across), 1e-3 * slice);
+    Vec3 slip = k.v + glm::cross(k.w, at_rail);
+    slip -= glm::dot(slip, n) * n;
+    const Vec3 rub = friction_impulse(slip, compliance, friction * push);
+    const double held = std::max(0.0, -(n.y * push + rub.y));  // N s
+    const Vec3 rub_bed = friction_impulse(horizontal(k.v + glm::cross(k.w, at_bed)), compliance, bed_friction * held);
+    k.v += (push * n + rub + held * kUp + rub_bed) / body.mass;
+    k.w += (glm::cross(at_rail, rub) + glm::cross(at_bed, rub_bed)) / body.inertia();
+  }
   k.v.y = 0;
   return closing;
 }

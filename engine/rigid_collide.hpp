@@ -33,10 +33,10 @@ double closing_speed(const BallState& a, const BallState& b, const Vec3& n);
 
 // A ball touching a rail: the unit normal from the nearest point of the rail's axis to the ball's centre.
 Vec3 rail_normal(const BallState& k, const Rail& rail);
-// A ball closing on (or touching) a rail with normal n: the normal impulse that sends it back at `parting` m/s along n
-// (with the bed's impulse, which keeps the ball on the bed), friction at the cushion's contact point
-// up to `friction` times the normal impulse, and the bed's friction up to `bed_friction` times the impulse with which
-// the bed holds the ball down. Returns the closing speed (m/s).
+// A ball closing on (or touching) a rail with normal n, integrated over the impact: the cushion's normal impulse until
+// the ball leaves at `parting` m/s along n, friction at the cushion's contact point up to `friction` times the normal
+// impulse, and, at the same time, the bed's normal impulse that holds the ball on the bed and the cloth's friction up to
+// `bed_friction` times it. Returns the closing speed (m/s).
 double collide_rail(BallState& k, const BallSpec& body, const Vec3& n, double parting, double friction,
                     double bed_friction);
 
