@@ -67,10 +67,10 @@ double edge_exit(const Parabola& p, const Vec3& origin, const Vec3& u, const Vec
 double closing_speed(const BallState& a, const BallState& b, const Vec3& n) { return glm::dot(a.v - b.v, n); }
 
 double collide_balls(BallState& a, const BallSpec& ba, BallState& b, const BallSpec& bb, const Vec3& n,
-                     double parting, const ContactMaterial& material) {
-  const double closing = closing_speed(a, b, n);
-  if (!(closing >= 0)) return 0;
-  const double jn = (closing + parting) / (1 / ba.mass + 1 / bb.mass);
+                     const Bounce& bounce, const ContactMaterial& material) {
+  // The event found them touching and not parting: a round-off negative closing speed counts as none.
+  const double closing = std::max(0.0, closing_speed(a, b, n));
+  const double jn = (closing + bounce.parting(closing)) / (1 / ba.mass + 1 / bb.mass);
   // The contact points' relative velocity (a's point at +R_a n, b's at -R_b n), less its normal part.
   const Vec3 vc = a.v + glm::cross(a.w, ba.radius * n) - b.v - glm::cross(b.w, -bb.radius * n);
   const Vec3 vt = vc - glm::dot(vc, n) * n;
@@ -89,21 +89,28 @@ Vec3 rail_normal(const BallState& k, const Rail& rail) {
   return glm::normalize(k.p - (rail.a + along * ab));
 }
 
-double collide_rail(BallState& k, const BallSpec& body, const Vec3& n, double parting, double friction,
+double collide_rail(BallState& k, const BallSpec& body, const Vec3& n, const Bounce& bounce, double friction,
                     double bed_friction) {
   const Vec3 nh = horizontal(n);
-  const double closing = -glm::dot(k.v, n);
-  if (!(closing >= 0) || !(glm::dot(nh, nh) > 0)) return 0;
+  if (!(glm::dot(nh, nh) > 0)) return 0;
+  const double closing = std::max(0.0, -glm::dot(k.v, n));  // as in collide_balls
   // The impact integrated over the cushion's normal impulse, in slices (docs/model.md#rigid-model): in each, the
   // cushion's push along n, friction at its contact point against that point's slip, the bed's normal impulse that
   // holds the ball on the bed against the push's downward part (rails are not below a ball's centre:
-  // rigid_unsupported), and the cloth's friction against the slip at the bed, until the ball leaves at `parting`.
-  const double across = glm::dot(nh, nh) / body.mass;  // (m/s) / (N s): speed along n a slice of push gives
-  const double slice = (closing + parting) / across / kRailSlices;  // N s
+  // rigid_unsupported), and the cloth's friction against the slip at the bed.
+  const double across = glm::dot(nh, nh) / body.mass;  // (m/s) / (N s): speed along n a push gives
+  const double slice = (closing + bounce.parting(closing)) / across / kRailSlices;  // N s
   const Vec3 at_rail = -body.radius * n, at_bed = -body.radius * kUp;
   const double compliance = 1 / body.mass + body.radius * body.radius / body.inertia();
-  for (int s = 0; s < 4 * kRailSlices && glm::dot(k.v, n) < parting; ++s) {
-    const double push = std::max(std::min(slice, (parting - glm::dot(k.v, n)) / across), 1e-3 * slice);
+  double taken = 0, given = 0;  // J: the push's work while the ball closes, and while it leaves
+  auto done = [&] { return glm::dot(k.v, n) >= bounce.floor && given >= bounce.e * bounce.e * taken; };
+  for (int s = 0; s < 4 * kRailSlices && !done(); ++s) {
+    const double u = glm::dot(k.v, n);
+    // A slice ends where the ball stops closing, or where the work and speed owed are paid.
+    const double owed = std::max(0.0, bounce.e * bounce.e * taken - given);
+    const double last = u < 0 ? -u / across
+                              : std::max((std::sqrt(u * u + 2 * across * owed) - u) / across, (bounce.floor - u) / across);
+    const double push = std::max(std::min(slice, last), 1e-3 * slice);
     Vec3 slip = k.v + glm::cross(k.w, at_rail);
     slip -= glm::dot(slip, n) * n;
     const Vec3 rub = friction_impulse(slip, compliance, friction * push);
@@ -111,7 +118,11 @@ double collide_rail(BallState& k, const BallSpec& body, const Vec3& n, double pa
     const Vec3 rub_bed = friction_impulse(horizontal(k.v + glm::cross(k.w, at_bed)), compliance, bed_friction * held);
     k.v += (push * n + rub + held * kUp + rub_bed) / body.mass;
     k.w += (glm::cross(at_rail, rub) + glm::cross(at_bed, rub_bed)) / body.inertia();
+    const double work = 0.5 * (u + glm::dot(k.v, n)) * push;  // trapezoid over the slice
+    (u < 0 ? taken : given) += std::abs(work);
   }
+  // Friction far beyond any cloth's can outlast the slices: the ball then leaves at the floor speed.
+  if (const double short_by = bounce.floor - glm::dot(k.v, n); short_by > 0) k.v += short_by * nh / glm::dot(nh, nh);
   k.v.y = 0;
   return closing;
 }

@@ -60,12 +60,15 @@ std::string bed_and_rails_problem(const Model& model, const State& state, int be
       return msg.str();
     }
   }
-  double highest = -std::numeric_limits<double>::infinity();  // m: the highest ball centre at rest on the bed
-  for (int i = 0; i < state.ball_count(); ++i)
-    if (state.in_play[i]) highest = std::max(highest, bed_height(shape) + model.balls[i].radius);
-  for (const Collider& c : model.colliders)
-    if (const auto* cap = std::get_if<Capsule>(&c.shape); cap && cap->a.y < highest - 1e-9)
-      return "collider '" + c.name + "' lies below a ball's centre and would lift it off the bed";
+  for (const Collider& c : model.colliders) {
+    const auto* cap = std::get_if<Capsule>(&c.shape);
+    for (int i = 0; cap && i < state.ball_count(); ++i) {
+      const double below = bed_height(shape) + model.balls[i].radius - cap->a.y;  // m, under the resting centre
+      if (state.in_play[i] && below > 1e-9 && below < model.balls[i].radius + cap->radius)
+        return "collider '" + c.name + "' lies below ball '" + model.balls[i].id +
+               "''s centre, within its reach, and would lift it off the bed";
+    }
+  }
   return "";
 }
 
@@ -181,7 +184,7 @@ double RigidWorld::pair_next(int i, int j) const {
 
 double RigidWorld::horizontal_reach(int i, int j) const {
   const double full = model_.balls[i].radius + model_.balls[j].radius, dy = tracks_[i].p.y - tracks_[j].p.y;
-  return std::sqrt(full * full - dy * dy);  // balls on one bed: |dy| is a difference of radii, under their sum
+  return std::sqrt(std::max(0.0, full * full - dy * dy));  // on one bed |dy| is about a difference of radii
 }
 
 void RigidWorld::plan(int i) {
@@ -198,12 +201,12 @@ void RigidWorld::restart(int i, double t, const BallState& k) {
   if (now != before) events_.push_back({t, transition_kind(before, now), {model_.balls[i].id}});
 }
 
-double RigidWorld::parting(const ContactMaterial& material, double m_eff, double closing) const {
-  // Slower than rest_speed, a collision parts the two at rest_speed: a ball pushing another that slides ahead of it (or
-  // a rack's touching balls, or a ball spun into a cushion from rest) would otherwise meet it again and again ever
-  // sooner, without end; so it bounces every 2 rest_speed / (their deceleration difference), within a micrometre of it.
-  return closing < model_.options.rest_speed ? model_.options.rest_speed
-                                             : restitution_at(material, m_eff, closing) * closing;
+Bounce RigidWorld::bounce(const ContactMaterial& material, double m_eff, double closing) const {
+  // Never slower than rest_speed: a ball pushing another that slides ahead of it (or a rack's touching balls, or a ball
+  // spun into a cushion from rest) would otherwise meet it again and again ever sooner, without end; so it bounces
+  // every 2 rest_speed / (their deceleration difference), within a micrometre of it.
+  const double e = closing < model_.options.rest_speed ? 1.0 : restitution_at(material, m_eff, closing);
+  return {e, model_.options.rest_speed};
 }
 
 void RigidWorld::handle(int i, const Next& next) {
@@ -218,7 +221,7 @@ void RigidWorld::handle(int i, const Next& next) {
       const Vec3 d{kj.p.x - k.p.x, 0.0, kj.p.z - k.p.z};
       const Vec3 n = glm::normalize(d);
       const double m_eff = 1 / (1 / model_.balls[i].mass + 1 / model_.balls[j].mass);
-      const double out = parting(model_.material(kBallBall), m_eff, closing_speed(k, kj, n));
+      const Bounce out = bounce(model_.material(kBallBall), m_eff, closing_speed(k, kj, n));
       collide_balls(k, model_.balls[i], kj, model_.balls[j], n, out, model_.material(kBallBall));
       events_.push_back({t, "contact_begin", {id, model_.balls[j].id}});
       events_.push_back({t, "contact_end", {id, model_.balls[j].id}});
@@ -230,7 +233,7 @@ void RigidWorld::handle(int i, const Next& next) {
       const Rail& rail = rails_[next.other];
       const Collider& c = model_.colliders[rail.collider];
       const Vec3 n = rail_normal(k, rail);
-      const double out = parting(model_.material(c.material), model_.balls[i].mass, -glm::dot(k.v, n));
+      const Bounce out = bounce(model_.material(c.material), model_.balls[i].mass, -glm::dot(k.v, n));
       collide_rail(k, model_.balls[i], n, out, model_.material(c.material).friction, laws_[i].friction);
       events_.push_back({t, "contact_begin", {id, c.name}});
       events_.push_back({t, "contact_end", {id, c.name}});

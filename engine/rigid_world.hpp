@@ -50,7 +50,7 @@ class RigidWorld final : public Runner {
   double pair_next(int i, int j) const;
   void handle(int i, const Next& next);
   double horizontal_reach(int i, int j) const;  // m: how near two balls' centres come in the bed's plane when touching
-  double parting(const ContactMaterial& material, double m_eff, double closing) const;  // m/s, from the closing m/s
+  Bounce bounce(const ContactMaterial& material, double m_eff, double closing) const;  // closing: m/s
   void restart(int i, double t, const BallState& k);  // a new track for ball i from k at t; reports a change of kind
   void stop(Status why, std::string message);
 

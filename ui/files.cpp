@@ -43,7 +43,9 @@ std::string typed_path(const std::string& typed, const std::string& dir) {
   const char* home = std::getenv("HOME");
   if (home && *home && (p == "~" || p.string().rfind("~/", 0) == 0)) p = fs::path(home) / p.string().substr(std::min<size_t>(2, p.string().size()));
   if (p.is_relative()) p = fs::path(dir) / p;
-  return p.lexically_normal().string();
+  p = p.lexically_normal();
+  if (p.filename().empty() && p.has_relative_path()) p = p.parent_path();  // "/home/u/" is the folder "/home/u"
+  return p.string();
 }
 
 bool inside(const std::string& path, const std::string& dir) {

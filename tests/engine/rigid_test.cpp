@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "engine/rigid_collide.hpp"
+#include "shotlab/material.hpp"
 #include "shotlab/diagnostics.hpp"
 #include "shotlab/restitution.hpp"
 #include "support.hpp"
@@ -129,6 +130,33 @@ TEST(Rigid, ACushionReboundRollsOnAsOnTheSoftModel) {
   const Vec3 vs = rolling_after_cushion(*soft), vr = rolling_after_cushion(*hard);
   EXPECT_GT(vs.z, 0.4);  // on its way back from the cushion
   EXPECT_LT(glm::length(vr - vs), 0.01 * glm::length(vs)) << vr.x << " " << vr.z << " against " << vs.x << " " << vs.z;
+}
+
+// An impulse at an event always parts the pair, even when round-off makes the closing speed a hair negative: else the
+// same event would come back at the same instant until the event limit. And a cushion impact ends by work (energetic
+// restitution), so that friction's vertical part, which the bed turns into speed across the cushion, cannot make an
+// elastic cushion give back more energy than the ball brought.
+TEST(Rigid, AnImpulseAlwaysPartsThePairAndGainsNoEnergy) {
+  const BallSpec body = load_scene(preset("cut.json")).balls[0].spec;
+  const Bounce slow{1.0, 1e-3};
+  BallState a{Vec3{0.0}, Vec3{-1e-17, 0.0, 0.0}, Vec3{0.0}}, b{Vec3{2 * kR, 0.0, 0.0}, Vec3{0.0}, Vec3{0.0}};
+  collide_balls(a, body, b, body, Vec3{1.0, 0.0, 0.0}, slow, default_ball_ball());
+  EXPECT_GE(b.v.x - a.v.x, 1e-3 - 1e-15);
+  const double tilt = std::asin((0.0365 - kR) / kR);
+  const Vec3 n{0.0, -std::sin(tilt), std::cos(tilt)};  // from the nose's axis down to the centre
+  BallState touching{Vec3{0.0}, Vec3{0.0, 0.0, 1e-17}, Vec3{0.0}};
+  collide_rail(touching, body, n, slow, 0.2, 0.2);
+  EXPECT_GE(glm::dot(touching.v, n), 1e-3 - 1e-12);
+  auto energy = [&](const BallState& k) {
+    return 0.5 * body.mass * glm::dot(k.v, k.v) + 0.5 * body.inertia() * glm::dot(k.w, k.w);
+  };
+  for (double e : {0.8, 0.98, 1.0}) {
+    BallState stun{Vec3{0.0}, Vec3{0.0, 0.0, -1.0}, Vec3{0.0}};  // head-on at 1 m/s, no spin
+    const double before = energy(stun);
+    collide_rail(stun, body, n, Bounce{e, 1e-3}, 0.2, 0.2);
+    EXPECT_LE(energy(stun), before) << "e = " << e;
+    EXPECT_GT(stun.v.z, 0.0);
+  }
 }
 
 // Any model: the break's energy never grows, every ball ends at rest on the bed or in a pocket, within the table.
@@ -261,7 +289,7 @@ TEST(Rigid, TheEventLimitLeavesTheStateAtTheLastEvent) {
   ASSERT_EQ(sim->advance(1.0), Status::StepLimit);
   ASSERT_FALSE(sim->events().empty());
   EXPECT_GT(sim->time(), 0.0);
-  EXPECT_GE(sim->time(), sim->events().back().time);
+  EXPECT_EQ(sim->time(), sim->events().back().time);
   EXPECT_NE(sim->state().x, start.x);
   EXPECT_NE(sim->diagnostic().find("event limit"), std::string::npos);
 }
@@ -290,7 +318,10 @@ TEST(Rigid, RefusesScenesOffTheBed) {
   refused(holed, "hole at x = 0.5, z = 0 m that is not a pocket's");
   nlohmann::json low = cloth_scene(nlohmann::json::array({ball("cue", 0, 1)}));
   low["colliders"].push_back({{"type", "capsule"}, {"name", "kerb"}, {"a", {1, 0.01, -1}}, {"b", {1, 0.01, 1}}, {"radius", 0.01}});
-  refused(low, "collider 'kerb' lies below a ball's centre");
+  refused(low, "collider 'kerb' lies below ball 'cue''s centre");
+  nlohmann::json deep = low;  // out of any ball's reach under the bed: nothing to refuse
+  deep["colliders"][1]["a"][1] = deep["colliders"][1]["b"][1] = -0.1;
+  EXPECT_NO_THROW(simulate(scene(rigid(deep))));
   nlohmann::json typo = rigid(cloth_scene(nlohmann::json::array({ball("cue", 0, 1)})));
   typo["model"]["contact"] = "hard";
   try {

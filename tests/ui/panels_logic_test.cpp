@@ -146,6 +146,8 @@ TEST(Files, AtomicWriteReplacesWholeAndLeavesNoTemporaries) {
   EXPECT_EQ(typed_path("../a/b.json", "/data/shots"), "/data/a/b.json");
   EXPECT_EQ(typed_path("/elsewhere/c.json", "/data/shots"), "/elsewhere/c.json");
   EXPECT_EQ(typed_path("   ", "/data/shots"), "");
+  EXPECT_EQ(typed_path("sub/", "/data/shots"), "/data/shots/sub");  // a folder, as Up expects it
+  EXPECT_EQ(typed_path("/", "/data/shots"), "/");
   if (const char* home = std::getenv("HOME"); home && *home) {
     EXPECT_EQ(typed_path("~/d.json", "/data/shots"), (std::filesystem::path(home) / "d.json").lexically_normal().string());
   }
