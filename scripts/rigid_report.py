@@ -114,10 +114,12 @@ def main():
                   f"{fits['soft']['seconds']:.0f} s, rigid {fits['rigid']['median_cue_rms_mm']:.0f} mm in "
                   f"{fits['rigid']['seconds']:.0f} s."]
         if len(runs) > 1:
+            medians = [r["median_cue_rms_mm"] for r in runs]
             lines += ["", "The rigid fit run again gives " +
                       ", ".join(f"{r['median_cue_rms_mm']:.0f} mm in {r['seconds']:.0f} s" for r in runs[1:]) +
-                      ": its rounds (docs/fit.md) can end differently from run to run, since Ceres' threads change "
-                      "the last bits of a joint fit and a three-cushion path is chaotic."]
+                      (": its rounds (docs/fit.md) can end differently from run to run, since Ceres' threads change "
+                       "the last bits of a joint fit and a three-cushion path is chaotic."
+                       if max(medians) - min(medians) > 1 else ".")]
     publish(lines, a.out)
 
 
