@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
+#include <string>
 
 #include "shotlab/rack.hpp"
 #include "shotlab/simulation.hpp"
@@ -83,6 +85,10 @@ constexpr double kDropCheckSeconds = 15.0;  // s of a shot simulated at most to 
 bool drops_in(const Scene& scene, const std::string& object, const std::string& pocket) {
   Prepared p = prepare(scene);
   Simulation sim(std::move(p.model), std::move(p.state));
+  const auto& balls = sim.model().balls;
+  const int obj = static_cast<int>(std::find_if(balls.begin(), balls.end(), [&](const BallSpec& b) { return b.id == object; }) -
+                                   balls.begin());
+  bool moved = false;
   size_t seen = 0;
   while (sim.time() < kDropCheckSeconds && sim.advance(0.25) == Status::Ok) {
     for (; seen < sim.events().size(); ++seen) {
@@ -90,7 +96,12 @@ bool drops_in(const Scene& scene, const std::string& object, const std::string& 
       if ((e.kind == "pocketed" || e.kind == "off_table") && !e.bodies.empty() && e.bodies[0] == object)
         return e.kind == "pocketed" && e.bodies.size() > 1 && e.bodies[1] == pocket;
     }
-    if (sim.at_rest()) break;
+    // Once the object ball has moved and stopped (or only spins in place), this shot does not drop it: the rest of
+    // the table need not be played out.
+    const bool still = obj >= static_cast<int>(balls.size()) || sim.motion(obj) == Motion::Stationary ||
+                       sim.motion(obj) == Motion::Spinning;
+    if (sim.at_rest() || (moved && still)) break;
+    moved = moved || !still;
   }
   return false;
 }
@@ -98,15 +109,20 @@ bool drops_in(const Scene& scene, const std::string& object, const std::string& 
 
 void check_drops(const Scene& scene, int object, std::vector<PocketAim>& aims) {
   if (!scene.cue || object < 0 || object >= static_cast<int>(scene.balls.size())) return;
-  for (PocketAim& a : aims) {
+  // Each pocket's shot on its own thread: P answers in the time of the longest, not of all of them.
+  std::vector<std::future<bool>> jobs;
+  for (const PocketAim& a : aims) {
     Scene s = scene;
     s.cue->aim = a.aim;
-    try {
-      a.drops = drops_in(s, scene.balls[object].spec.id, a.pocket);
-    } catch (const std::exception&) {
-      a.drops = false;  // a scene the engine refuses drops nothing
-    }
+    jobs.push_back(std::async(std::launch::async, [s = std::move(s), id = scene.balls[object].spec.id, pocket = a.pocket] {
+      try {
+        return drops_in(s, id, pocket);
+      } catch (const std::exception&) {
+        return false;  // a scene the engine refuses drops nothing
+      }
+    }));
   }
+  for (size_t k = 0; k < aims.size(); ++k) aims[k].drops = jobs[k].get();
   std::stable_partition(aims.begin(), aims.end(), [](const PocketAim& a) { return a.drops; });
 }
 

@@ -31,8 +31,9 @@ struct PocketAim {
   bool drops = false;  // set by check_drops()
 };
 std::vector<PocketAim> pocket_aims(const Scene& scene, const std::vector<Pocket>& pockets, int cue_ball, int object);
-// Simulates the scene's shot at each aim (its speed, spin and the other balls as they are) and sets `drops` where ball
-// `object` falls into that aim's pocket; the aims that drop come first, each part easiest cut first.
+// Simulates the scene's shot at each aim (its speed, spin and the other balls as they are; each aim on a thread of its
+// own, each shot until ball `object` drops or stops) and sets `drops` where it falls into that aim's pocket; the aims
+// that drop come first, each part easiest cut first.
 void check_drops(const Scene& scene, int object, std::vector<PocketAim>& aims);
 // The ball P aims for: the one the aim line meets, else the object ball whose centre is nearest the aim in heading
 // (-1 when there is no cue strike or no other ball).
