@@ -85,9 +85,7 @@ constexpr double kDropCheckSeconds = 15.0;  // s of a shot simulated at most to 
 bool drops_in(const Scene& scene, const std::string& object, const std::string& pocket) {
   Prepared p = prepare(scene);
   Simulation sim(std::move(p.model), std::move(p.state));
-  const auto& balls = sim.model().balls;
-  const int obj = static_cast<int>(std::find_if(balls.begin(), balls.end(), [&](const BallSpec& b) { return b.id == object; }) -
-                                   balls.begin());
+  const int obj = sim.model().ball_index(object);
   bool moved = false;
   size_t seen = 0;
   while (sim.time() < kDropCheckSeconds && sim.advance(0.25) == Status::Ok) {
@@ -98,8 +96,7 @@ bool drops_in(const Scene& scene, const std::string& object, const std::string& 
     }
     // Once the object ball has moved and stopped (or only spins in place), this shot does not drop it: the rest of
     // the table need not be played out.
-    const bool still = obj >= static_cast<int>(balls.size()) || sim.motion(obj) == Motion::Stationary ||
-                       sim.motion(obj) == Motion::Spinning;
+    const bool still = obj < 0 || sim.motion(obj) == Motion::Stationary || sim.motion(obj) == Motion::Spinning;
     if (sim.at_rest() || (moved && still)) break;
     moved = moved || !still;
   }

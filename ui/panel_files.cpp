@@ -68,7 +68,11 @@ void browser_popup(Lab& lab, std::string& dir) {
   }
   ImGui::SameLine();
   if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
-  if (lab.message_kind == MessageKind::LoadError) ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "%s", lab.message.c_str());
+  if (lab.message_kind == MessageKind::LoadError) {  // wrapped: a load error names the whole path
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.4f, 1));
+    ImGui::TextWrapped("%s", lab.message.c_str());
+    ImGui::PopStyleColor();
+  }
   ImGui::TextWrapped("%s", dir.c_str());
   if (ImGui::Button("Up")) dir = fs::path(dir).parent_path().string();
   ImGui::SameLine();
