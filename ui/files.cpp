@@ -4,6 +4,9 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include <pwd.h>
+#include <unistd.h>
+
 namespace shotlab {
 
 namespace fs = std::filesystem;
@@ -36,12 +39,19 @@ std::vector<DirEntry> list_scene_dir(const std::string& dir) {
   return out;
 }
 
+std::string home_folder() {
+  if (const char* home = std::getenv("HOME"); home && *home) return home;
+  const passwd* user = getpwuid(getuid());  // HOME unset (a service, env -i): the account's own
+  return user && user->pw_dir ? user->pw_dir : "";
+}
+
 std::string typed_path(const std::string& typed, const std::string& dir) {
   const size_t from = typed.find_first_not_of(" \t"), to = typed.find_last_not_of(" \t");
   if (from == std::string::npos) return "";
   fs::path p = typed.substr(from, to - from + 1);
-  const char* home = std::getenv("HOME");
-  if (home && *home && (p == "~" || p.string().rfind("~/", 0) == 0)) p = fs::path(home) / p.string().substr(std::min<size_t>(2, p.string().size()));
+  const std::string home = home_folder();
+  if (!home.empty() && (p == "~" || p.string().rfind("~/", 0) == 0))
+    p = fs::path(home) / p.string().substr(std::min<size_t>(2, p.string().size()));
   if (p.is_relative()) p = fs::path(dir) / p;
   p = p.lexically_normal();
   if (p.filename().empty() && p.has_relative_path()) p = p.parent_path();  // "/home/u/" is the folder "/home/u"
@@ -64,7 +74,7 @@ std::string user_folder(const std::vector<std::string>& recent, const std::strin
     const fs::path folder = fs::absolute(r, ec).parent_path();
     if (!ec && !inside(r, presets_dir) && fs::is_directory(folder, ec)) return folder.string();
   }
-  if (const char* home = std::getenv("HOME"); home && *home && fs::is_directory(home, ec)) return home;
+  if (const std::string home = home_folder(); !home.empty() && fs::is_directory(home, ec)) return home;
   return fs::current_path(ec).string();
 }
 

@@ -23,6 +23,9 @@ std::vector<DirEntry> list_scene_dir(const std::string& dir);
 // else the home folder, else the working folder.
 std::string user_folder(const std::vector<std::string>& recent, const std::string& presets_dir);
 
+// The user's home folder: $HOME, else the account's (HOME unset); "" when neither is known.
+std::string home_folder();
+
 // A path the user typed in a file dialog showing folder `dir`: a relative one is taken inside `dir` (not the working
 // folder, which the user does not see), "~" is the home folder; surrounding spaces are dropped.
 std::string typed_path(const std::string& typed, const std::string& dir);

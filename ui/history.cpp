@@ -31,19 +31,19 @@ const std::string& History::redo_label() const {
 }
 
 HistoryStep History::take(std::vector<HistoryStep>& from, std::vector<HistoryStep>& to, const Scene& current,
-                          const SceneFile& current_file) {
+                          const FileOf& current_file) {
   HistoryStep e = std::move(from.back());
   from.pop_back();
-  to.push_back({e.label, current, e.file ? std::optional<SceneFile>(current_file) : std::nullopt});
+  to.push_back({e.label, current, e.file ? std::optional<SceneFile>(current_file()) : std::nullopt});
   return e;
 }
 
-HistoryStep History::undo(const Scene& current, const SceneFile& current_file) {
+HistoryStep History::undo(const Scene& current, const FileOf& current_file) {
   open_merge_.clear();
   return take(undo_, redo_, current, current_file);
 }
 
-HistoryStep History::redo(const Scene& current, const SceneFile& current_file) {
+HistoryStep History::redo(const Scene& current, const FileOf& current_file) {
   open_merge_.clear();
   return take(redo_, undo_, current, current_file);
 }

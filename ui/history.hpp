@@ -4,6 +4,7 @@
 // the whole gesture. Tuned physics is not part of it (the tuning panel has its own reset), except across a file load:
 // undoing a load brings back the whole scene before it, its file, its tuned physics and the lab's workbench.
 #pragma once
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,16 +45,17 @@ class History {
   const std::string& redo_label() const;
   size_t size() const { return undo_.size(); }
 
-  // The step to go back to; `current` (and, when the step crosses a load, `current_file`) is kept for the way back.
-  // Call only when can_undo() / can_redo().
-  HistoryStep undo(const Scene& current, const SceneFile& current_file);
-  HistoryStep redo(const Scene& current, const SceneFile& current_file);
+  // The step to go back to; `current` (and, when the step crosses a load, what `current_file` gives: called only then,
+  // since it copies the workbench) is kept for the way back. Call only when can_undo() / can_redo().
+  using FileOf = std::function<SceneFile()>;
+  HistoryStep undo(const Scene& current, const FileOf& current_file);
+  HistoryStep redo(const Scene& current, const FileOf& current_file);
   void clear();
 
  private:
   void push(HistoryStep step);
   static HistoryStep take(std::vector<HistoryStep>& from, std::vector<HistoryStep>& to, const Scene& current,
-                          const SceneFile& current_file);
+                          const FileOf& current_file);
   std::vector<HistoryStep> undo_, redo_;
   std::string open_merge_;
   static constexpr size_t kLimit = 200;  // entries kept; the oldest go first

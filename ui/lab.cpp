@@ -257,13 +257,13 @@ void Lab::replay() {
 void Lab::undo() {
   if (in_hand) {  // putting the ball back where it was picked up
     in_hand = false;
-    if (history.can_undo()) take_step(history.undo(scene, current_file()));
+    if (history.can_undo()) take_step(history.undo(scene, [this] { return current_file(); }));
     scene_changed();
     return;
   }
   if (!history.can_undo()) return say(MessageKind::Note, "nothing to undo");
   const std::string what = history.undo_label();
-  HistoryStep previous = history.undo(scene, current_file());
+  HistoryStep previous = history.undo(scene, [this] { return current_file(); });
   if (shot && !previous.file) ghost = trails(shot->sim().time());
   take_step(std::move(previous));
   shot.reset();
@@ -308,7 +308,7 @@ void Lab::redo() {
   if (!history.can_redo()) return say(MessageKind::Note, "nothing to redo");
   if (history.redo_label() == "shot") return shoot();  // shooting again records the shot anew
   const std::string what = history.redo_label();
-  take_step(history.redo(scene, current_file()));
+  take_step(history.redo(scene, [this] { return current_file(); }));
   shot.reset();
   playing = false;
   view_time = 0;

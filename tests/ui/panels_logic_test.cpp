@@ -21,21 +21,36 @@ Scene named(const std::string& name) {
   return s;
 }
 
+// What a plain edit's undo or redo is handed for the current file: it must not be asked for (it copies the workbench).
+History::FileOf not_asked(int& asked) {
+  return [&asked] {
+    ++asked;
+    return SceneFile{};
+  };
+}
+
+History::FileOf file(SceneFile f) {
+  return [f] { return f; };
+}
+
 TEST(History, UndoRedoWalkTheEditsInOrder) {
   History h;
+  int asked = 0;
   h.record("move 1", named("a"));
   h.record("remove 2", named("b"));
   EXPECT_EQ(h.undo_label(), "remove 2");
-  EXPECT_EQ(h.undo(named("c"), {}).scene.name, "b");
-  EXPECT_EQ(h.undo(named("b"), {}).scene.name, "a");
+  EXPECT_EQ(h.undo(named("c"), not_asked(asked)).scene.name, "b");
+  EXPECT_EQ(h.undo(named("b"), not_asked(asked)).scene.name, "a");
   EXPECT_FALSE(h.can_undo());
-  EXPECT_EQ(h.redo(named("a"), {}).scene.name, "b");
-  EXPECT_EQ(h.redo(named("b"), {}).scene.name, "c");
+  EXPECT_EQ(h.redo(named("a"), not_asked(asked)).scene.name, "b");
+  EXPECT_EQ(h.redo(named("b"), not_asked(asked)).scene.name, "c");
   EXPECT_FALSE(h.can_redo());
+  EXPECT_EQ(asked, 0);
 }
 
 TEST(History, AGestureIsOneEntryAndANewEditClearsRedo) {
   History h;
+  int asked = 0;
   h.record("aim", named("before drag"), "aim");
   h.record("aim", named("mid drag"), "aim");
   h.record("aim", named("late drag"), "aim");
@@ -43,27 +58,31 @@ TEST(History, AGestureIsOneEntryAndANewEditClearsRedo) {
   h.seal();
   h.record("aim", named("second drag"), "aim");
   EXPECT_EQ(h.size(), 2u);
-  h.undo(named("now"), {});
+  h.undo(named("now"), not_asked(asked));
   EXPECT_TRUE(h.can_redo());
   h.record("move cue", named("x"));
   EXPECT_FALSE(h.can_redo());
-  EXPECT_EQ(h.undo(named("y"), {}).scene.name, "x");
-  EXPECT_EQ(h.undo(named("x"), {}).scene.name, "before drag");
+  EXPECT_EQ(h.undo(named("y"), not_asked(asked)).scene.name, "x");
+  EXPECT_EQ(h.undo(named("x"), not_asked(asked)).scene.name, "before drag");
+  EXPECT_EQ(asked, 0);
 }
 
-// A load's entry carries the file it replaced, and its redo entry the file that was current at the undo.
+// A load's entry carries the file it replaced, and its redo entry the file that was current at the undo; only a step
+// across a load asks for the current file.
 TEST(History, ALoadStepCarriesItsFileBothWays) {
   History h;
+  int asked = 0;
   h.record("move 1", named("a"));
   h.record_load("open break.json", named("b"), {"cut.json", named("cut as loaded"), {}});
-  HistoryStep back = h.undo(named("break"), {"break.json", named("break as loaded"), {}});
+  HistoryStep back = h.undo(named("break"), file({"break.json", named("break as loaded"), {}}));
   EXPECT_EQ(back.scene.name, "b");
   ASSERT_TRUE(back.file);
   EXPECT_EQ(back.file->path, "cut.json");
   EXPECT_EQ(back.file->loaded.name, "cut as loaded");
-  EXPECT_FALSE(h.undo(named("b"), {"cut.json", named("cut as loaded"), {}}).file);  // a plain edit's step has none
-  EXPECT_FALSE(h.redo(named("a"), {}).file);
-  HistoryStep again = h.redo(named("b"), {"cut.json", named("cut as loaded"), {}});
+  EXPECT_FALSE(h.undo(named("b"), not_asked(asked)).file);  // a plain edit's step has none
+  EXPECT_FALSE(h.redo(named("a"), not_asked(asked)).file);
+  EXPECT_EQ(asked, 0);
+  HistoryStep again = h.redo(named("b"), file({"cut.json", named("cut as loaded"), {}}));
   EXPECT_EQ(again.scene.name, "break");
   ASSERT_TRUE(again.file);
   EXPECT_EQ(again.file->path, "break.json");
@@ -150,6 +169,14 @@ TEST(Files, AtomicWriteReplacesWholeAndLeavesNoTemporaries) {
   EXPECT_EQ(typed_path("/", "/data/shots"), "/");
   if (const char* home = std::getenv("HOME"); home && *home) {
     EXPECT_EQ(typed_path("~/d.json", "/data/shots"), (std::filesystem::path(home) / "d.json").lexically_normal().string());
+    // With HOME unset (a desktop entry started with env -i) "~" is still the account's home, not a folder named "~".
+    const std::string saved = home;
+    unsetenv("HOME");
+    const std::string account = home_folder();
+    const std::string typed = typed_path("~/d.json", "/data/shots");
+    setenv("HOME", saved.c_str(), 1);
+    ASSERT_FALSE(account.empty());
+    EXPECT_EQ(typed, (std::filesystem::path(account) / "d.json").lexically_normal().string());
   }
   std::filesystem::remove_all(dir);
 }
