@@ -281,6 +281,7 @@ int run_gui(const GuiOptions& options) {
         status_line(lab, layout.view, frame_seconds, slept);
         lab.await_prediction();
         lab.report_prediction();
+        lab.finish_pocket_aim();
         draw_overlay(lab, viewport, ImGui::GetBackgroundDrawList());
 
         // The side panels' background (they draw none), then the view clears its own part.

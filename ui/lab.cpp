@@ -438,7 +438,7 @@ void Lab::finish_playing() {
 
 bool Lab::animating() const {
   const bool tracing = log_job_.valid() && log_job_.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
-  return playing || predicting() || tracing || margin.busy() || measured.fit.busy();
+  return playing || predicting() || tracing || margin.busy() || measured.fit.busy() || checking_pockets();
 }
 
 bool Lab::contact_on_screen() const {

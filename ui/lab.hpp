@@ -18,6 +18,7 @@
 #include "ui/layout.hpp"
 #include "ui/margin_view.hpp"
 #include "ui/measured_view.hpp"
+#include "ui/pocket_checks.hpp"
 #include "ui/predictor.hpp"
 #include "ui/settings.hpp"
 #include "ui/shot.hpp"
@@ -126,6 +127,10 @@ class Lab {
   void aim_at(const Vec3& point);         // the cue towards a point on the table
   void aim_at_ball(int i);                // full-ball aim at ball i's centre
   void aim_for_pocket(int step);          // cycles through the pockets the aimed-at ball can be cut into
+  // Once a frame: P's answer, when its check has finished since (with `block`, waited for: scripts and tests).
+  void finish_pocket_aim(bool block = false);
+  bool checking_pockets() const { return pocket_wait_.has_value(); }
+  double pocket_wait_seconds = 4e-3;  // s: P waits this long for its check within the frame (a cut's is done by then)
   void nudge_aim(double degrees);
   void nudge_speed(double mps);
   void set_cue(const CueStrike& cue, const std::string& what);  // any other cue change, merged per `what`
@@ -148,11 +153,20 @@ class Lab {
   void restore(Workbench bench);     // kept shots, A/B, target and measured shot as a load's undo brings them back
   bool editable(const char* what);
   bool fits(int i, const Vec3& p) const;
+  void choose_pocket(std::vector<PocketAim> aims, int object, int step);  // lab_edit.cpp, aim_for_pocket's end
   void show(double t);
   void start_shot(const Scene& start);
   void pause_on_events(double from, double to);
   void finish_playing();
 
+  PocketChecks pocket_checks_;
+  struct PocketWait {  // P pressed, its check not back yet
+    std::string key;   // PocketChecks::key_of
+    int object = -1;
+    int steps = 0;     // the presses' steps, added up
+    double aim = 0;    // rad, the cue's at the last press: an aim turned since then is the user's, not P's to change
+  };
+  std::optional<PocketWait> pocket_wait_;
   Predictor predictor_;
   long wanted_ = -1;
   double last_turn_deg_ = kAimStepDeg;  // the last aim key's step: the guessed next aims repeat it first

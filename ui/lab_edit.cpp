@@ -52,14 +52,46 @@ void Lab::aim_at_ball(int i) {
 }
 
 // Cycles through the pockets the aimed-at ball (or the one nearest the aim) can be cut into: those the shot drops it
-// in at the current speed and spin (each checked by simulating it), else all of them; and says which it is.
+// in at the current speed and spin (each checked by simulating it), else all of them; and says which it is. The
+// check runs off the UI thread (pocket_checks.hpp): a quick one (a cut) is waited for, a long one (a full rack) lands
+// in a later frame (finish_pocket_aim), presses meanwhile adding up.
 void Lab::aim_for_pocket(int step) {
   if (!scene.cue) return say(MessageKind::Refused, "tick the cue strike first: the pockets are aimed with it");
   const int object = pocket_object(scene);
   if (object < 0) return say(MessageKind::Refused, "no object ball to aim at a pocket");
-  auto aims = pocket_aims(scene, table_model.pockets, scene_ball(scene, scene.cue->ball), object);
-  if (aims.empty()) return say(MessageKind::Refused, "no pocket can be reached from here with a cut under 85 degrees");
-  check_drops(scene, object, aims);
+  const int cue = scene_ball(scene, scene.cue->ball);
+  if (pocket_aims(scene, table_model.pockets, cue, object).empty())
+    return say(MessageKind::Refused, "no pocket can be reached from here with a cut under 85 degrees");
+  std::string key = PocketChecks::key_of(scene, object);
+  if (!pocket_wait_ || pocket_wait_->key != key) pocket_wait_ = PocketWait{std::move(key), object, 0};
+  pocket_wait_->steps += step;
+  pocket_wait_->aim = scene.cue->aim;
+  pocket_checks_.request(pocket_wait_->key, scene, table_model.pockets, cue, object);
+  if (pocket_checks_.wait(pocket_wait_->key, pocket_wait_seconds)) return finish_pocket_aim();
+  say(MessageKind::Note, "checking which pockets drop the " + scene.balls[object].spec.id + " ...");
+}
+
+void Lab::finish_pocket_aim(bool block) {
+  pocket_checks_.poll();
+  if (!pocket_wait_) return;
+  // Balls moved, the speed, spin or aim changed meanwhile: that answer is not for this shot.
+  if (!scene.cue || scene.cue->aim != pocket_wait_->aim ||
+      PocketChecks::key_of(scene, pocket_wait_->object) != pocket_wait_->key) {
+    pocket_wait_.reset();
+    return;
+  }
+  if (block) pocket_checks_.wait(pocket_wait_->key, -1);
+  auto aims = pocket_checks_.answer(pocket_wait_->key);
+  if (!aims) return;
+  const PocketWait done = *pocket_wait_;
+  pocket_wait_.reset();
+  choose_pocket(std::move(*aims), done.object, done.steps);
+}
+
+// P's choice once the drops are known: `step` pockets on from the one aimed at now, among those that drop when any
+// does.
+void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step) {
+  if (aims.empty()) return;
   if (aims.front().drops)  // only those that drop are offered, when any does
     aims.erase(std::find_if(aims.begin(), aims.end(), [](const PocketAim& a) { return !a.drops; }), aims.end());
   // The pocket after the one aimed at now (the closest heading), easiest cut first.
@@ -68,8 +100,10 @@ void Lab::aim_for_pocket(int step) {
     if (std::abs(std::remainder(aims[k].aim - scene.cue->aim, 2 * M_PI)) <
         std::abs(std::remainder(aims[now].aim - scene.cue->aim, 2 * M_PI)))
       now = k;
+  // Off every pocket, the first press snaps to the nearest one and the rest step on from there.
   const bool on_one = std::abs(std::remainder(aims[now].aim - scene.cue->aim, 2 * M_PI)) < 1e-9;
-  const size_t next = on_one ? (now + aims.size() + step) % aims.size() : now;
+  const long n = static_cast<long>(aims.size()), by = on_one ? step : step - (step > 0) + (step < 0);
+  const size_t next = static_cast<size_t>(((static_cast<long>(now) + by) % n + n) % n);
   CueStrike cue = *scene.cue;
   cue.aim = aims[next].aim;
   set_cue(cue, "aim");

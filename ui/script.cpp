@@ -83,6 +83,7 @@ bool Script::edit(ScriptHost& host, const std::string& cmd, std::istringstream& 
     lab.aim_at_ball(i);
   } else if (cmd == "pocket") {
     lab.aim_for_pocket(1);
+    lab.finish_pocket_aim(true);
   } else if (cmd == "place") {  // place ID X Z: as a drag of the ball
     const int i = scene_ball(lab.scene, word(in));
     const double x = number(in), z = number(in);
