@@ -41,17 +41,21 @@ std::vector<DirEntry> list_scene_dir(const std::string& dir) {
 
 std::string home_folder() {
   if (const char* home = std::getenv("HOME"); home && *home) return home;
-  const passwd* user = getpwuid(getuid());  // HOME unset (a service, env -i): the account's own
-  return user && user->pw_dir ? user->pw_dir : "";
+  // HOME unset (a service, env -i): the account's own, looked up once (the dialogs ask every frame).
+  static const std::string account = [] {
+    const passwd* user = getpwuid(getuid());
+    return std::string(user && user->pw_dir ? user->pw_dir : "");
+  }();
+  return account;
 }
 
 std::string typed_path(const std::string& typed, const std::string& dir) {
   const size_t from = typed.find_first_not_of(" \t"), to = typed.find_last_not_of(" \t");
   if (from == std::string::npos) return "";
   fs::path p = typed.substr(from, to - from + 1);
-  const std::string home = home_folder();
-  if (!home.empty() && (p == "~" || p.string().rfind("~/", 0) == 0))
-    p = fs::path(home) / p.string().substr(std::min<size_t>(2, p.string().size()));
+  if (p == "~" || p.string().rfind("~/", 0) == 0)
+    if (const std::string home = home_folder(); !home.empty())
+      p = fs::path(home) / p.string().substr(std::min<size_t>(2, p.string().size()));
   if (p.is_relative()) p = fs::path(dir) / p;
   p = p.lexically_normal();
   if (p.filename().empty() && p.has_relative_path()) p = p.parent_path();  // "/home/u/" is the folder "/home/u"

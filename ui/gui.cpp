@@ -279,9 +279,9 @@ int run_gui(const GuiOptions& options) {
         if (std::string note = take_slider_note(); !note.empty()) lab.say(MessageKind::Refused, std::move(note));
         message_banner(lab, layout.view);
         status_line(lab, layout.view, frame_seconds, slept);
+        lab.finish_pocket_aim();  // before the wait: P's new aim gets its paths in this frame too
         lab.await_prediction();
         lab.report_prediction();
-        lab.finish_pocket_aim();
         draw_overlay(lab, viewport, ImGui::GetBackgroundDrawList());
 
         // The side panels' background (they draw none), then the view clears its own part.

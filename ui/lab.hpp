@@ -153,7 +153,7 @@ class Lab {
   void restore(Workbench bench);     // kept shots, A/B, target and measured shot as a load's undo brings them back
   bool editable(const char* what);
   bool fits(int i, const Vec3& p) const;
-  void choose_pocket(std::vector<PocketAim> aims, int object, int step);  // lab_edit.cpp, aim_for_pocket's end
+  void choose_pocket(std::vector<PocketAim> aims, int object, int step, int first);  // lab_edit.cpp
   void show(double t);
   void start_shot(const Scene& start);
   void pause_on_events(double from, double to);
@@ -164,6 +164,7 @@ class Lab {
     std::string key;   // PocketChecks::key_of
     int object = -1;
     int steps = 0;     // the presses' steps, added up
+    int first = 0;     // the first press's step
     double aim = 0;    // rad, the cue's at the last press: an aim turned since then is the user's, not P's to change
   };
   std::optional<PocketWait> pocket_wait_;

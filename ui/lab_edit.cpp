@@ -63,7 +63,7 @@ void Lab::aim_for_pocket(int step) {
   if (pocket_aims(scene, table_model.pockets, cue, object).empty())
     return say(MessageKind::Refused, "no pocket can be reached from here with a cut under 85 degrees");
   std::string key = PocketChecks::key_of(scene, object);
-  if (!pocket_wait_ || pocket_wait_->key != key) pocket_wait_ = PocketWait{std::move(key), object, 0};
+  if (!pocket_wait_ || pocket_wait_->key != key) pocket_wait_ = PocketWait{std::move(key), object, 0, step};
   pocket_wait_->steps += step;
   pocket_wait_->aim = scene.cue->aim;
   pocket_checks_.request(pocket_wait_->key, scene, table_model.pockets, cue, object);
@@ -74,8 +74,8 @@ void Lab::aim_for_pocket(int step) {
 void Lab::finish_pocket_aim(bool block) {
   pocket_checks_.poll();
   if (!pocket_wait_) return;
-  // Balls moved, the speed, spin or aim changed meanwhile: that answer is not for this shot.
-  if (!scene.cue || scene.cue->aim != pocket_wait_->aim ||
+  // A shot started, or balls moved, the speed, spin or aim changed meanwhile: that answer is not for this shot.
+  if (shot || !scene.cue || scene.cue->aim != pocket_wait_->aim ||
       PocketChecks::key_of(scene, pocket_wait_->object) != pocket_wait_->key) {
     pocket_wait_.reset();
     return;
@@ -85,12 +85,12 @@ void Lab::finish_pocket_aim(bool block) {
   if (!aims) return;
   const PocketWait done = *pocket_wait_;
   pocket_wait_.reset();
-  choose_pocket(std::move(*aims), done.object, done.steps);
+  choose_pocket(std::move(*aims), done.object, done.steps, done.first);
 }
 
 // P's choice once the drops are known: `step` pockets on from the one aimed at now, among those that drop when any
-// does.
-void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step) {
+// does; off every pocket, the first press (`first`) snaps to the nearest one and the others step on from there.
+void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step, int first) {
   if (aims.empty()) return;
   if (aims.front().drops)  // only those that drop are offered, when any does
     aims.erase(std::find_if(aims.begin(), aims.end(), [](const PocketAim& a) { return !a.drops; }), aims.end());
@@ -100,9 +100,8 @@ void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step) {
     if (std::abs(std::remainder(aims[k].aim - scene.cue->aim, 2 * M_PI)) <
         std::abs(std::remainder(aims[now].aim - scene.cue->aim, 2 * M_PI)))
       now = k;
-  // Off every pocket, the first press snaps to the nearest one and the rest step on from there.
   const bool on_one = std::abs(std::remainder(aims[now].aim - scene.cue->aim, 2 * M_PI)) < 1e-9;
-  const long n = static_cast<long>(aims.size()), by = on_one ? step : step - (step > 0) + (step < 0);
+  const long n = static_cast<long>(aims.size()), by = on_one ? step : step - first;
   const size_t next = static_cast<size_t>(((static_cast<long>(now) + by) % n + n) % n);
   CueStrike cue = *scene.cue;
   cue.aim = aims[next].aim;

@@ -25,7 +25,11 @@ void PocketChecks::start(Job job) {
   running_key_ = job.key;
   running_ = std::async(std::launch::async, [job = std::move(job)] {
     std::vector<PocketAim> aims = pocket_aims(job.scene, job.pockets, job.cue, job.object);
-    check_drops(job.scene, job.object, aims);
+    try {
+      check_drops(job.scene, job.object, aims);
+    } catch (const std::exception&) {  // no thread for a pocket's shot, no memory: the answer says none drops
+      for (PocketAim& a : aims) a.drops = false;
+    }
     return aims;
   });
 }
@@ -65,10 +69,5 @@ bool PocketChecks::wait(const std::string& key, double seconds) {
 }
 
 void PocketChecks::poll() { collect(); }
-
-bool PocketChecks::busy() const {
-  return (running_.valid() && running_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) ||
-         queued_.has_value();
-}
 
 }  // namespace shotlab

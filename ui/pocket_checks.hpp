@@ -27,8 +27,7 @@ class PocketChecks {
   std::optional<std::vector<PocketAim>> answer(const std::string& key);
   // Waits up to `seconds` (< 0: as long as it takes) for the answer for `key`; false if it is not there by then.
   bool wait(const std::string& key, double seconds);
-  void poll();        // once a frame: a finished check kept, the queued one started
-  bool busy() const;  // a check is running or queued
+  void poll();  // once a frame: a finished check kept, the queued one started
 
  private:
   struct Job {

@@ -174,9 +174,12 @@ TEST_F(LabTest, PocketAimsOfALongCheckComeInALaterFrame) {
   lab.aim_for_pocket(1);
   EXPECT_EQ(lab.scene.cue->aim, twice);
   // An aim turned by hand while the check runs is the user's: the answer no longer applies.
-  CueStrike slower = *lab.scene.cue;
-  slower.speed *= 0.9;
-  lab.set_cue(slower, "speed");
+  auto new_speed = [&](double factor) {
+    CueStrike cue = *lab.scene.cue;
+    cue.speed *= factor;
+    lab.set_cue(cue, "speed");
+  };
+  new_speed(0.9);
   const double before = lab.scene.cue->aim;
   lab.aim_for_pocket(1);
   ASSERT_TRUE(lab.checking_pockets());
@@ -184,6 +187,34 @@ TEST_F(LabTest, PocketAimsOfALongCheckComeInALaterFrame) {
   lab.finish_pocket_aim(true);
   EXPECT_FALSE(lab.checking_pockets());
   EXPECT_NEAR(lab.scene.cue->aim, before + M_PI / 180, 1e-12);
+  // Off every pocket, P then Shift+P while the check runs end where they end pressed one at a time: the nearest
+  // pocket, then the one before it.
+  new_speed(0.9);
+  const double off = lab.scene.cue->aim;
+  lab.aim_for_pocket(1);
+  ASSERT_TRUE(lab.checking_pockets());
+  lab.aim_for_pocket(-1);
+  lab.finish_pocket_aim(true);
+  const double mixed = lab.scene.cue->aim;
+  CueStrike back = *lab.scene.cue;
+  back.aim = off;
+  lab.set_cue(back, "aim");
+  lab.aim_for_pocket(1);
+  ASSERT_FALSE(lab.checking_pockets());
+  const double nearest = lab.scene.cue->aim;
+  lab.aim_for_pocket(-1);
+  EXPECT_EQ(mixed, lab.scene.cue->aim);
+  EXPECT_NE(mixed, nearest);
+  // A shot started before the answer comes: the aim stays, and no note claims a new one.
+  new_speed(0.9);
+  const double shot_aim = lab.scene.cue->aim;
+  lab.aim_for_pocket(1);
+  ASSERT_TRUE(lab.checking_pockets());
+  lab.shoot();
+  lab.finish_pocket_aim(true);
+  EXPECT_FALSE(lab.checking_pockets());
+  EXPECT_EQ(lab.scene.cue->aim, shot_aim);
+  EXPECT_EQ(lab.message.find("aimed "), std::string::npos) << lab.message;
 }
 
 // Issue 28, item 6: a click on the object ball aims at it and moves nothing.

@@ -7,6 +7,9 @@
 #include <fstream>
 #include <sstream>
 
+#include <pwd.h>
+#include <unistd.h>
+
 #include "ui/files.hpp"
 #include "ui/history.hpp"
 #include "ui/layout.hpp"
@@ -167,6 +170,7 @@ TEST(Files, AtomicWriteReplacesWholeAndLeavesNoTemporaries) {
   EXPECT_EQ(typed_path("   ", "/data/shots"), "");
   EXPECT_EQ(typed_path("sub/", "/data/shots"), "/data/shots/sub");  // a folder, as Up expects it
   EXPECT_EQ(typed_path("/", "/data/shots"), "/");
+  std::filesystem::remove_all(dir);
   if (const char* home = std::getenv("HOME"); home && *home) {
     EXPECT_EQ(typed_path("~/d.json", "/data/shots"), (std::filesystem::path(home) / "d.json").lexically_normal().string());
     // With HOME unset (a desktop entry started with env -i) "~" is still the account's home, not a folder named "~".
@@ -175,10 +179,10 @@ TEST(Files, AtomicWriteReplacesWholeAndLeavesNoTemporaries) {
     const std::string account = home_folder();
     const std::string typed = typed_path("~/d.json", "/data/shots");
     setenv("HOME", saved.c_str(), 1);
+    if (getpwuid(getuid()) == nullptr) GTEST_SKIP() << "this account has no entry in the password database";
     ASSERT_FALSE(account.empty());
     EXPECT_EQ(typed, (std::filesystem::path(account) / "d.json").lexically_normal().string());
   }
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
