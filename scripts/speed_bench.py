@@ -49,19 +49,22 @@ def measure(build, core, runs, plain=False, paths=None, rigid=False):
 
 
 def census(build, core):
-    """[(scene, kind, {steps, rhs, redone, rejected, limited, wall_us})]: one run of each scene counted, ten timed."""
+    """({"census": [(scene, kind, {steps, rhs, redone, rejected, limited, wall_us})], "phase": [(scene, phase,
+    {steps, rhs, wall_us})]}: one run of each scene counted, ten timed; by the kind of island and by what the step
+    resolves."""
     tool = os.path.join(build, "tests", "benchmarks", "shot_speed")
     text = subprocess.run(["taskset", "-c", str(core), tool, "--rounds", "1", "--census"] + [os.path.join(ROOT, "presets", s) for s in SCENES],
                           check=True, capture_output=True, text=True).stdout
-    out = []
+    out = {"census": [], "phase": []}
     for line in text.splitlines():
-        if " census " not in line:
-            continue
-        scene, rest = line.split(" census ", 1)
-        kind, counts = rest.split(" steps ")
-        f = ("steps " + counts).split()
-        out.append((os.path.basename(scene), kind, {k: float(n) if k == "wall_us" else int(n)
-                                                    for k, n in zip(f[0::2], f[1::2])}))
+        for tag in out:
+            if f" {tag} " not in line:
+                continue
+            scene, rest = line.split(f" {tag} ", 1)
+            kind, counts = rest.split(" steps ")
+            f = ("steps " + counts).split()
+            out[tag].append((os.path.basename(scene), kind, {k: float(n) if k == "wall_us" else int(n)
+                                                             for k, n in zip(f[0::2], f[1::2])}))
     return out
 
 
@@ -159,10 +162,18 @@ def main():
               "| scene | island | steps | right-hand sides | ended at a change | rejected trials | in a rate-limited band "
               "| wall ms (share) |",
               "|---|---|---|---|---|---|---|---|"]
-    rows = census(a.build, a.core)
+    counted = census(a.build, a.core)
+    rows = counted["census"]
     total = {s: sum(c["wall_us"] for t, _, c in rows if t == s) for s in SCENES}
     lines += [f"| {s} | {k} | {c['steps']} | {c['rhs']} | {c['redone']} | {c['rejected']} | {c['limited']} | "
               f"{c['wall_us'] / 1e3:.3f} ({100 * c['wall_us'] / total[s]:.0f} %) |" for s, k, c in rows]
+    lines += ["", "The same steps by what they resolve, told by what touches at the step's end: a ball-ball contact, a "
+              "cushion (or its jaw), a pocket (its liner, or a ball in its hole), else the bed alone (the hop a ball "
+              "takes after a hit, its landings and its settling onto the cloth); closed-form steps, which also carry "
+              "most frame ends (a lone ball rolls across many frames), apart:", "",
+              "| scene | phase | steps | right-hand sides | wall ms (share) |", "|---|---|---|---|---|"]
+    lines += [f"| {s} | {k} | {c['steps']} | {c['rhs']} | {c['wall_us'] / 1e3:.3f} "
+              f"({100 * c['wall_us'] / total[s]:.0f} %) |" for s, k, c in counted["phase"]]
     lines += ["", "What the cost follows: this build on the same shots with one number changed, the integrator's "
               "tolerance (abs_tol = rel_tol) or the friction rate limit (docs/model.md#rate-limit; a change of the model, "
               f"not only of its accuracy), in {a.sweep_rounds} rounds that alternate the variants:", "",

@@ -3,8 +3,9 @@
 // Rounds alternate the scenes; each scene's median and fastest wall time, its steps, rejected steps and right-hand
 // sides (the same in every round; redone: accepted trials done again to end where a law changes), and a digest of the end state (to tell that two builds ran the same physics) are
 // printed, one line a scene. Run it pinned to one core (scripts/speed_bench.py does). With --census, one more run
-// of each scene counts its steps and right-hand sides by the kind of island that took them, and ten more share out
-// the wall time between the kinds. With --rigid the scenes run on the rigid model (ContactModel::Rigid); first_ms is
+// of each scene counts its steps and right-hand sides by the kind of island that took them and by the phase a step
+// resolves (phase_of), and ten more share out the wall time between them. With --rigid the scenes run on the rigid
+// model (ContactModel::Rigid); first_ms is
 // the first round's time, which works out the restitution table's knots the process has not met yet.
 //   shot_speed [--rounds N] [--plain] [--rigid] [--census] SCENE...
 #include <algorithm>
@@ -62,14 +63,36 @@ struct Census {
 };
 constexpr int kCensusTimed = 10;
 
+// What a step resolves, told by what touches at its end (a contact's steps are short): a ball-ball contact, a
+// cushion (or its jaw), a pocket (its liner, or a ball in its hole), else the bed alone (a hop after a hit, its
+// landings, the settling onto the cloth); steps at one right-hand side are closed form.
+std::string phase_of(const shotlab::StepView& v, long rhs) {
+  if (rhs <= 1) return "closed form";
+  bool ball = false, cushion = false, pocket = false;
+  for (const shotlab::Contact& c : shotlab::contacts(v.model, v.state)) {
+    if (c.other_ball >= 0) {
+      ball = true;
+      continue;
+    }
+    const std::string& name = v.model.colliders[c.collider].name;
+    if (name.rfind("cushion", 0) == 0) cushion = true;
+    else if (name != "bed") pocket = true;
+  }
+  for (int k = 0; k < v.state.ball_count(); ++k)
+    pocket = pocket || (v.state.in_play[k] && v.state.x[9 * k + 1] < 0.5 * v.model.balls[k].radius);
+  return ball ? "ball-ball contact" : cushion ? "cushion" : pocket ? "pocket" : "bed alone (hops, landings, settling)";
+}
+
 void census(const std::string& file, const shotlab::Prepared& prepared) {
-  std::map<std::string, Census> count;
+  std::map<std::string, Census> count, by_phase;
+  std::vector<std::string> phases;  // each step's phase_of, in the order run 0 met them (every run takes the same steps)
   constexpr uint8_t kLimited = shotlab::kSlipLimited | shotlab::kRollLimited | shotlab::kSpinLimited;
   for (int run = 0; run <= kCensusTimed; ++run) {  // run 0 counts, the others time
     shotlab::Prepared p = prepared;
     shotlab::Simulation sim(std::move(p.model), std::move(p.state));
     std::map<const shotlab::Stats*, shotlab::Stats> seen;  // each island's counts at its last step
     auto since = Clock::now();
+    size_t step = 0;
     sim.set_observer([&](const shotlab::StepView& v) {
       const auto now = Clock::now();
       shotlab::Stats& last = seen[&v.stats];
@@ -79,9 +102,14 @@ void census(const std::string& file, const shotlab::Prepared& prepared) {
                                : rhs <= 1       ? "lone, closed form"
                                                 : "lone, integrated";
       Census& c = count[kind];
+      if (run == 0) phases.push_back(phase_of(v, rhs));
+      Census& ph = by_phase[phases.at(step++)];
       if (run > 0) {
         c.wall_ms += std::chrono::duration<double, std::milli>(now - since).count() / kCensusTimed;
+        ph.wall_ms += std::chrono::duration<double, std::milli>(now - since).count() / kCensusTimed;
       } else {
+        ph.steps += 1;
+        ph.rhs += rhs;
         c.steps += 1;
         c.rhs += rhs;
         c.redone += v.stats.redone_steps > last.redone_steps;
@@ -101,6 +129,9 @@ void census(const std::string& file, const shotlab::Prepared& prepared) {
   for (const auto& [kind, c] : count)
     std::printf("%s census %s steps %ld rhs %ld redone %ld rejected %ld limited %ld wall_us %.0f\n", file.c_str(),
                 kind.c_str(), c.steps, c.rhs, c.redone, c.rejected, c.limited, 1e3 * c.wall_ms);
+  for (const auto& [name, c] : by_phase)
+    std::printf("%s phase %s steps %ld rhs %ld wall_us %.0f\n", file.c_str(), name.c_str(), c.steps, c.rhs,
+                1e3 * c.wall_ms);
 }
 
 }  // namespace
