@@ -62,6 +62,13 @@ std::string typed_path(const std::string& typed, const std::string& dir) {
   return p.string();
 }
 
+std::string scene_file_path(const std::string& typed, const std::string& dir) {
+  std::string path = typed_path(typed, dir);
+  std::error_code ec;
+  if (!path.empty() && fs::path(path).extension().empty() && !fs::is_directory(path, ec)) path += ".json";
+  return path;
+}
+
 bool inside(const std::string& path, const std::string& dir) {
   std::error_code ec;
   const fs::path p = fs::weakly_canonical(path, ec);

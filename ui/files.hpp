@@ -30,6 +30,10 @@ std::string home_folder();
 // folder, which the user does not see), "~" is the home folder; surrounding spaces are dropped.
 std::string typed_path(const std::string& typed, const std::string& dir);
 
+// The scene file Save as writes for a typed path (typed_path): ".json" added to a name without an extension, so that
+// the file browser, which lists .json scenes, shows it.
+std::string scene_file_path(const std::string& typed, const std::string& dir);
+
 // Whether `path` lies inside folder `dir` (after resolving both): shipped presets are not overwritten by Save.
 bool inside(const std::string& path, const std::string& dir);
 

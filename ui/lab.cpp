@@ -249,7 +249,7 @@ void Lab::shoot() {
 }
 
 void Lab::replay() {
-  if (!shot) return;
+  if (!shot) return say(MessageKind::Note, "no shot to replay yet: S or Space shoots");
   start_shot(shot->start());
   playing = shot != nullptr;
 }

@@ -142,7 +142,7 @@ class Lab {
   void pick_up_cue_ball();                // ball in hand
   void place_cue_ball(const Vec3& at, bool drop);  // follows the pointer; `drop` puts it down
   void setup_break();                     // rack, cue ball in hand behind the head string, a cue strike
-  void set_target(const Vec3& at) { target = Vec3{at.x, 0, at.z}; }
+  void set_target(const Vec3& at);        // on the bed inside the cushions (refused elsewhere)
   std::optional<double> target_miss() const;  // m from the cue ball's rest position (or predicted one) to the target
   void keep_shot();
 
@@ -168,6 +168,11 @@ class Lab {
     double aim = 0;    // rad, the cue's at the last press: an aim turned since then is the user's, not P's to change
   };
   std::optional<PocketWait> pocket_wait_;
+  struct PocketAimed {  // the ball P last aimed at a pocket, and the aim it set
+    std::string ball;
+    double aim = 0;
+  };
+  std::optional<PocketAimed> pocket_aimed_;
   Predictor predictor_;
   long wanted_ = -1;
   double last_turn_deg_ = kAimStepDeg;  // the last aim key's step: the guessed next aims repeat it first

@@ -57,9 +57,12 @@ void Lab::aim_at_ball(int i) {
 // in a later frame (finish_pocket_aim), presses meanwhile adding up.
 void Lab::aim_for_pocket(int step) {
   if (!scene.cue) return say(MessageKind::Refused, "tick the cue strike first: the pockets are aimed with it");
-  const int object = pocket_object(scene);
-  if (object < 0) return say(MessageKind::Refused, "no object ball to aim at a pocket");
   const int cue = scene_ball(scene, scene.cue->ball);
+  int object = pocket_object(scene);
+  // While the aim is the one P set, P goes on with that ball: its line to a pocket may meet another ball first.
+  if (pocket_aimed_ && scene.cue->aim == pocket_aimed_->aim)
+    if (const int kept = scene_ball(scene, pocket_aimed_->ball); kept >= 0 && kept != cue) object = kept;
+  if (object < 0) return say(MessageKind::Refused, "no object ball to aim at a pocket");
   if (pocket_aims(scene, table_model.pockets, cue, object).empty())
     return say(MessageKind::Refused, "no pocket can be reached from here with a cut under 85 degrees");
   std::string key = PocketChecks::key_of(scene, object);
@@ -106,6 +109,7 @@ void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step, int f
   CueStrike cue = *scene.cue;
   cue.aim = aims[next].aim;
   set_cue(cue, "aim");
+  pocket_aimed_ = PocketAimed{scene.balls[object].spec.id, scene.cue->aim};
   char speed[32];
   std::snprintf(speed, sizeof speed, "%.2f m/s", scene.cue->speed);
   say(MessageKind::Note, "aimed " + scene.balls[object].spec.id + " at " + aims[next].pocket + " (cut " +
@@ -113,6 +117,12 @@ void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step, int f
                              (aims[next].drops ? std::string("drops at ") + speed + ")"
                                                : std::string("does not drop at ") + speed +
                                                      ": more speed or another pocket)"));
+}
+
+void Lab::set_target(const Vec3& at) {
+  if (scene.table && (std::abs(at.x) > scene.table->length / 2 || std::abs(at.z) > scene.table->width / 2))
+    return say(MessageKind::Refused, "the target goes on the cloth, inside the cushions");
+  target = Vec3{at.x, 0, at.z};
 }
 
 CueStrike turned(const CueStrike& cue, double degrees) {

@@ -112,6 +112,7 @@ void arrow(ImDrawList* d, const Viewport& vp, const Vec3& from, const Vec3& to, 
 // frame rate far under the display's on a software renderer. A solid run is then drawn simplified (a ball's path is
 // straight between hits but where spin bends it).
 constexpr float kTrailPixels = 2.0f, kDashPixels = 6.0f;
+constexpr double kShownForce = 5e-3;  // N: a contact force under this is drawn as none (it would read "0 N")
 
 // Appends p to a run of screen points, replacing the run's last point while it is within `spacing` of the one before:
 // the run always ends at the latest point.
@@ -206,14 +207,14 @@ void vectors(ImDrawList* d, const Viewport& vp, const Lab& lab, Labels& labels) 
   if (!v.forces) return;
   const Model& model = lab.shot ? lab.shot->sim().model() : lab.table_model;
   for (const Contact& c : contacts(model, f.state)) {
-    if (!notable(model, c)) continue;
+    if (!notable(model, c) || c.force.normal < kShownForce) continue;  // rack balls touching, pressing nothing
     const double len = 0.03 * std::log1p(c.force.normal);
     arrow(d, vp, c.point, c.point + unit_or_zero(c.force.force) * len, IM_COL32(255, 60, 60, 255), 2.5f);
     const auto s = vp.project(c.point);
     if (!s) continue;
     d->AddCircleFilled(v2(*s), 3.5f, IM_COL32(255, 60, 60, 255));
     char text[32];
-    std::snprintf(text, sizeof text, "%.0f N", c.force.normal);
+    std::snprintf(text, sizeof text, c.force.normal < 10 ? "%.2g N" : "%.0f N", c.force.normal);
     labels.add(kForce, v2(*s), ImVec2(static_cast<float>(s->x) + 6, static_cast<float>(s->y) + 4), text,
                IM_COL32(255, 120, 120, 255));
   }

@@ -113,14 +113,23 @@ void save_as_popup(Lab& lab, std::string& typed, const std::string& folder) {
   ImGui::TextUnformatted("File (a .json scene):");
   ImGui::SetNextItemWidth(em(420));
   const bool enter = ImGui::InputText("##saveas", &typed, ImGuiInputTextFlags_EnterReturnsTrue);
-  const std::string path = typed_path(typed, folder);
+  mark("save path");
+  const std::string path = scene_file_path(typed, folder);
   std::error_code ec;
+  const bool folder_typed = !path.empty() && fs::is_directory(path, ec);
   const bool exists = !path.empty() && fs::exists(path, ec);
   const bool preset = inside(path, lab.data_root + "/presets");
-  if (preset) ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "that is a shipped preset: choose another name");
+  const bool blocked = path.empty() || preset || folder_typed;
+  if (folder_typed) ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "that is a folder: add a file name");
+  else if (preset) ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "that is a shipped preset: choose another name");
   else if (exists) ImGui::TextColored(ImVec4(1, 0.8f, 0.4f, 1), "a file of that name exists: Save replaces it");
-  ImGui::BeginDisabled(path.empty() || preset);
-  if (ImGui::Button(exists ? "Replace" : "Save") || (enter && !path.empty() && !preset)) {
+  if (!path.empty() && !folder_typed) {
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + em(420));  // a long path wraps under the box, not past the window
+    ImGui::TextDisabled("saves %s", path.c_str());
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::BeginDisabled(blocked);
+  if (ImGui::Button(exists ? "Replace" : "Save") || (enter && !blocked)) {
     save_to(lab, path);
     ImGui::CloseCurrentPopup();
   }

@@ -42,7 +42,11 @@ void transport_buttons(Lab& lab) {
   mark("Step");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("step forward one frame of simulated time (.)");
   same_line_if_fits("Replay");
+  ImGui::BeginDisabled(!lab.shot);
   if (ImGui::Button("Replay")) lab.replay();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(lab.shot ? "play the shot again from its start (R)" : "no shot yet: S or Space shoots");
+  ImGui::EndDisabled();
   same_line_if_fits("Undo");
   ImGui::BeginDisabled(!lab.history.can_undo() && !lab.in_hand);
   if (ImGui::Button("Undo")) lab.undo();
@@ -107,7 +111,8 @@ void tool_buttons(Lab& lab) {
                {Tool::Move, "Move balls", "drag a ball to move it; shift+click the cloth adds one (also Ctrl+drag in Aim)"},
                {Tool::Target, "Target", "click where the cue ball should stop: the miss shows after the shot"}};
   for (const auto& t : tools) {
-    if (ImGui::RadioButton(t.name, lab.tool == t.tool)) lab.tool = t.tool;
+    // "##tool": the Aim section's header has the label "Aim" too; one ID for both left this button dead.
+    if (ImGui::RadioButton((std::string(t.name) + "##tool").c_str(), lab.tool == t.tool)) lab.tool = t.tool;
     mark(std::string("tool ") + t.name);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.tip);
     ImGui::SameLine();

@@ -165,6 +165,7 @@ json state_json(const Lab& lab, const ScreenInfo& screen) {
          {"margin", margin_json(lab)},
          {"measured", measured_json(lab)}};
   if (const auto miss = lab.target_miss()) j["target_miss"] = *miss;
+  if (lab.target) j["target"] = {lab.target->x, lab.target->z};
   if (lab.scene.table && screen.viewport) {
     const double hx = lab.scene.table->length / 2, hz = lab.scene.table->width / 2;
     json corners = json::array();

@@ -217,6 +217,58 @@ TEST_F(LabTest, PocketAimsOfALongCheckComeInALaterFrame) {
   EXPECT_EQ(lab.message.find("aimed "), std::string::npos) << lab.message;
 }
 
+// P keeps to the ball it aimed while the aim is its own: the next pocket's line may meet another ball first, and
+// Shift+P then still comes back to the same ball and pocket (a user trial on a rack saw P jump from ball to ball).
+TEST_F(LabTest, PocketAimKeepsItsBall) {
+  load("cut.json");
+  CueStrike slow = *lab.scene.cue;
+  slow.speed = 0.3;  // none drops: P offers every pocket
+  lab.set_cue(slow, "speed");
+  lab.aim_at_ball(1);
+  lab.aim_for_pocket(1);
+  lab.finish_pocket_aim(true);
+  const double a = lab.scene.cue->aim;
+  ASSERT_EQ(lab.message.rfind("aimed 1 at ", 0), 0u) << lab.message;
+  // The pocket the next press goes to, and a ball put on the line to its ghost ball, clear of the line aimed now.
+  const auto aims = pocket_aims(lab.scene, lab.table_model.pockets, 0, 1);
+  ASSERT_GE(aims.size(), 2u);
+  size_t k = 0;
+  while (k < aims.size() && std::abs(std::remainder(aims[k].aim - a, 2 * M_PI)) > 1e-9) ++k;
+  ASSERT_LT(k, aims.size());
+  Scene probe = lab.scene;
+  probe.cue->aim = aims[(k + 1) % aims.size()].aim;
+  const Vec3 from = ball("cue"), ghost = aim_line(probe)->ghost;
+  const Vec3 block = from + 0.75 * (ghost - from);
+  const Vec3 along_a{std::cos(a), 0, -std::sin(a)};  // heading(): atan2(-dz, dx)
+  const Vec3 off = block - from - glm::dot(block - from, along_a) * along_a;
+  const double r = lab.scene.balls[0].spec.radius;
+  ASSERT_GT(glm::length(off), 2 * r + 1e-3) << "the blocker would sit on the line aimed now";
+  lab.add_ball(block);
+  ASSERT_EQ(lab.scene.balls.size(), 3u) << lab.message;
+  lab.aim_for_pocket(1);
+  lab.finish_pocket_aim(true);
+  ASSERT_EQ(aim_line(lab.scene)->hit, 2) << "the new line meets the blocker first";
+  EXPECT_EQ(lab.message.rfind("aimed 1 at ", 0), 0u) << lab.message;
+  lab.aim_for_pocket(-1);
+  lab.finish_pocket_aim(true);
+  EXPECT_EQ(lab.scene.cue->aim, a);
+  EXPECT_EQ(lab.message.rfind("aimed 1 at ", 0), 0u) << lab.message;
+}
+
+// A user trial set a target in the grey beyond the rails and read "missed by 116.5 cm": the target goes on the
+// cloth, inside the cushions, and a click elsewhere says so. Replay without a shot says how to shoot.
+TEST_F(LabTest, TargetGoesOnTheClothAndReplayNeedsAShot) {
+  load("cut.json");
+  lab.set_target({0.3, 0, -0.2});
+  ASSERT_TRUE(lab.target);
+  lab.set_target({0.3, 0, 0.9});  // past the front cushion (the bed is 1.27 m wide)
+  EXPECT_EQ(lab.target->z, -0.2);
+  EXPECT_NE(lab.message.find("on the cloth"), std::string::npos) << lab.message;
+  lab.replay();
+  EXPECT_FALSE(lab.shot);
+  EXPECT_NE(lab.message.find("no shot to replay"), std::string::npos) << lab.message;
+}
+
 // Issue 28, item 6: a click on the object ball aims at it and moves nothing.
 TEST_F(LabTest, AimingAtABallDoesNotMoveIt) {
   load("cut.json");

@@ -170,6 +170,11 @@ TEST(Files, AtomicWriteReplacesWholeAndLeavesNoTemporaries) {
   EXPECT_EQ(typed_path("   ", "/data/shots"), "");
   EXPECT_EQ(typed_path("sub/", "/data/shots"), "/data/shots/sub");  // a folder, as Up expects it
   EXPECT_EQ(typed_path("/", "/data/shots"), "/");
+  // Save as adds .json to a bare name (the browser lists .json scenes), not to a name with its own extension.
+  EXPECT_EQ(scene_file_path("my draw", "/data/shots"), "/data/shots/my draw.json");
+  EXPECT_EQ(scene_file_path("b.json", "/data/shots"), "/data/shots/b.json");
+  EXPECT_EQ(scene_file_path("notes.txt", "/data/shots"), "/data/shots/notes.txt");
+  EXPECT_EQ(scene_file_path(dir.string(), "/data/shots"), dir.string());  // a folder stays a folder (Save refuses it)
   std::filesystem::remove_all(dir);
   if (const char* home = std::getenv("HOME"); home && *home) {
     EXPECT_EQ(typed_path("~/d.json", "/data/shots"), (std::filesystem::path(home) / "d.json").lexically_normal().string());
