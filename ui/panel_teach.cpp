@@ -129,7 +129,12 @@ void momentum_bars(const Lab& lab) {
   }
   bars.push_back({"total", glm::length(total), IM_COL32(255, 255, 255, 255)});
   scale = std::max(scale, glm::length(total));
-  ImGui::TextWrapped("Momentum (kg m/s), total (%.3f, %.3f) along x, z", total.x, total.z);
+  auto shown = [](double v) { return std::abs(v) < 5e-4 ? 0.0 : v; };  // no "-0.000" at rest
+  // The pair on a line of its own: wrapping breaks after a '.', inside a number.
+  ImGui::TextWrapped("Momentum (kg m/s), total along x, z:");
+  ImGui::SameLine();
+  if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize("(-0.000, -0.000)").x) ImGui::NewLine();
+  ImGui::Text("(%.3f, %.3f)", shown(total.x), shown(total.z));
   bar_chart("momentum", bars, scale, "kg m/s");
 }
 

@@ -155,8 +155,12 @@ void same_line_if_checkbox_fits(const char* next) {
                     ImGui::CalcTextSize(next, nullptr, true).x);
 }
 
-void bar_chart(const char* id, const std::vector<Bar>& bars, double scale, const char* unit) {
-  if (bars.empty() || !(scale > 0)) return;
+void bar_chart(const char* id, const std::vector<Bar>& shown, double scale, const char* unit) {
+  if (shown.empty() || !(scale > 0)) return;
+  // Round-off (a billionth of the scale and less: 1e-16 J of height at rest) reads and draws as 0.
+  std::vector<Bar> bars = shown;
+  for (Bar& b : bars)
+    if (std::abs(b.value) < 1e-9 * scale) b.value = 0;
   const bool signed_values = std::any_of(bars.begin(), bars.end(), [](const Bar& b) { return b.value < 0; });
   float label_w = 0;
   for (const Bar& b : bars) label_w = std::max(label_w, ImGui::CalcTextSize(b.label.c_str()).x);
