@@ -168,10 +168,12 @@ class Lab {
     double aim = 0;    // rad, the cue's at the last press: an aim turned since then is the user's, not P's to change
   };
   std::optional<PocketWait> pocket_wait_;
-  struct PocketAimed {  // the ball P last aimed at a pocket, and the aim it set
+  struct PocketAimed {  // the ball P last aimed at a pocket, the aim it set and the note it gave
     std::string ball;
     double aim = 0;
+    std::string note;
   };
+  static constexpr const char* kPocketAim = "pocket aim";  // P's entry in the undo list
   std::optional<PocketAimed> pocket_aimed_;
   Predictor predictor_;
   long wanted_ = -1;

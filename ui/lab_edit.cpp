@@ -32,6 +32,8 @@ void Lab::set_cue(const CueStrike& cue, const std::string& what) {
   if (!scene.cue || !editable("aiming")) return;
   history.record(what, scene, "cue:" + what);
   scene.cue = cue;
+  // P's note names the aim, cut and speed it chose: another change of the cue makes it stale.
+  if (what != kPocketAim && pocket_aimed_ && message == pocket_aimed_->note) say(MessageKind::None, "");
   scene_changed();
 }
 
@@ -108,8 +110,7 @@ void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step, int f
   const size_t next = static_cast<size_t>(((static_cast<long>(now) + by) % n + n) % n);
   CueStrike cue = *scene.cue;
   cue.aim = aims[next].aim;
-  set_cue(cue, "aim");
-  pocket_aimed_ = PocketAimed{scene.balls[object].spec.id, scene.cue->aim};
+  set_cue(cue, kPocketAim);
   char speed[32];
   std::snprintf(speed, sizeof speed, "%.2f m/s", scene.cue->speed);
   say(MessageKind::Note, "aimed " + scene.balls[object].spec.id + " at " + aims[next].pocket + " (cut " +
@@ -117,6 +118,7 @@ void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step, int f
                              (aims[next].drops ? std::string("drops at ") + speed + ")"
                                                : std::string("does not drop at ") + speed +
                                                      ": more speed or another pocket)"));
+  pocket_aimed_ = PocketAimed{scene.balls[object].spec.id, scene.cue->aim, message};
 }
 
 void Lab::set_target(const Vec3& at) {

@@ -253,6 +253,9 @@ TEST_F(LabTest, PocketAimKeepsItsBall) {
   lab.finish_pocket_aim(true);
   EXPECT_EQ(lab.scene.cue->aim, a);
   EXPECT_EQ(lab.message.rfind("aimed 1 at ", 0), 0u) << lab.message;
+  // Its note names the cut: an aim turned by hand makes it stale, and it goes.
+  lab.nudge_aim(kAimStepDeg);
+  EXPECT_EQ(lab.message, "");
 }
 
 // A user trial set a target in the grey beyond the rails and read "missed by 116.5 cm": the target goes on the
