@@ -37,6 +37,8 @@ ImVec2 v2(const glm::dvec2& p) { return {static_cast<float>(p.x), static_cast<fl
 // spot of its wanted one and the spots around its anchor, or the least covered when none is free. Each has a dark
 // backing so that it reads over trails and cloth.
 class Labels {
+  static constexpr float kHiddenShare = 0.35f;  // of a label's area covered at its best spot: it is left out
+
  public:
   explicit Labels(const ImRect& view) : view_(view) {}
   void add(int priority, ImVec2 anchor, ImVec2 wanted, std::string text, ImU32 colour) {
@@ -65,6 +67,9 @@ class Labels {
         if (covered < least) least = covered, best = r;
         if (covered == 0) break;
       }
+      // Mostly hidden wherever it goes (a rack seen from afar): left out rather than stacked unreadably on the
+      // labels before it, which matter more (they come first).
+      if (least > kHiddenShare * best.GetWidth() * best.GetHeight()) continue;
       taken.push_back(best);
       mark_rect("label " + std::to_string(taken.size()) + " " + it.text,
                 Rect{best.Min.x, best.Min.y, best.Max.x - best.Min.x, best.Max.y - best.Min.y});
