@@ -20,6 +20,14 @@ struct StepSpan {
   // closed-form step's; else none).
   std::vector<BandTail> tails;
   std::vector<Swing> swings;
+  // Balls that left play inside the span (Island::settle). x1 holds each frozen where it left, from `time` on; before
+  // then it moves on the step's own end values, kept here, as it did.
+  struct Exit {
+    int ball;
+    double time;  // s
+    double x1[kBallDofs], f1[kBallDofs];
+  };
+  std::vector<Exit> exits;
 
   // State at t in [t0, t1], written to out (resized).
   void interpolate(double t, StateVector& out) const {
@@ -56,6 +64,11 @@ struct StepSpan {
       if (in_range(tail.ball)) tail.apply(t - t0, out.data() + kBallDofs * tail.ball);
     for (const Swing& swing : swings)
       if (in_range(swing.ball)) swing.apply(t - t0, out.data() + kBallDofs * swing.ball);
+    for (const Exit& e : exits) {
+      if (!in_range(e.ball)) continue;
+      for (size_t k = 0, j = kBallDofs * static_cast<size_t>(e.ball); k < kBallDofs; ++k, ++j)
+        out[j] = t < e.time ? h00 * x0[j] + h10 * f0[j] + h01 * e.x1[k] + h11 * e.f1[k] : x1[j];
+    }
   }
 };
 

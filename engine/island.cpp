@@ -101,6 +101,7 @@ void Island::restart() {
   span_.x0 = span_.x1;
   span_.f0 = span_.f1;
   span_.t0 = span_.t1;
+  span_.exits.clear();
   stepper_->reset();
   integ_.x = span_.x1;
   integ_.time = span_.t1;
@@ -124,9 +125,10 @@ std::optional<FreePath> Island::free_path(double t, double horizon) {
 
 bool Island::rewind(double t) {
   if (t >= span_.t1) return true;
-  span_.x1 = span_.x0;
+  span_.x1 = span_.x0;  // a ball that left play in the step is back where it started it, in play (start_)
   span_.f1 = span_.f0;
   span_.t1 = span_.t0;
+  span_.exits.clear();
   copy_flags(start_, integ_);
   integ_.x = span_.x1;
   integ_.time = span_.t1;
@@ -253,6 +255,7 @@ void Island::commit(double t) {
   span_.x0.swap(span_.x1);
   span_.f0.swap(f_start_);
   span_.t0 = span_.t1;
+  span_.exits.clear();
   span_.x1.swap(trial_.x1);
   span_.f1.swap(trial_.f1);
   span_.tails.swap(trial_.tails);
@@ -270,8 +273,12 @@ void Island::settle(double t, bool recorded) {
   std::vector<Exit> exits;
   detector_.scan(span_, integ_, dynamics_.plan(), recorded ? &end_record_ : nullptr, events_, exits);
   StateVector at;
+  std::vector<StepSpan::Exit> left;
   for (const Exit& e : exits) {
     span_.interpolate(e.time, at);
+    StepSpan::Exit& kept = left.emplace_back(StepSpan::Exit{e.ball, e.time, {}, {}});
+    std::copy_n(span_.x1.begin() + kBallDofs * e.ball, kBallDofs, kept.x1);
+    std::copy_n(span_.f1.begin() + kBallDofs * e.ball, kBallDofs, kept.f1);
     std::erase_if(span_.tails, [&](const BandTail& tail) { return tail.ball == e.ball; });
     std::erase_if(span_.swings, [&](const Swing& swing) { return swing.ball == e.ball; });
     integ_.in_play[e.ball] = 0;
@@ -282,17 +289,13 @@ void Island::settle(double t, bool recorded) {
   const bool regime_changed = regimes_.update(integ_, span_.x1, t - span_.t0);
   if (exits.empty() && !regime_changed) return;
   // The system lost or froze bodies, or woke them: the integrator starts afresh from the step's end. The finished
-  // step's interpolant stays for the caller's clock, with the exited balls frozen in it.
+  // step's interpolant stays for the caller's clock, an exited ball on its path until it left, frozen from then on.
   const StepSpan finished = span_;
   restart();
   span_.x0 = finished.x0;
   span_.f0 = finished.f0;
   span_.t0 = finished.t0;
-  for (const Exit& e : exits)
-    for (int k = 0; k < kBallDofs; ++k) {
-      span_.x0[kBallDofs * e.ball + k] = span_.x1[kBallDofs * e.ball + k];
-      span_.f0[kBallDofs * e.ball + k] = 0.0;
-    }
+  span_.exits = std::move(left);
 }
 
 // Constant acceleration over the step to t1 (the island's right-hand side does not change, time_to_band_edge):
