@@ -175,11 +175,29 @@ ShotGoal parse_goal(const std::string& text) {
   return g;
 }
 
+namespace {
+// The goal's ball in `scene` (its index), its pocket checked against the table's: InputError naming what is missing.
+int goal_ball(const Scene& scene, const ShotGoal& goal) {
+  if (!scene.cue) throw InputError("the scene has no cue strike: a margin is that of a cue strike");
+  const int ball = ball_index(scene, goal.ball);
+  if (ball < 0) throw InputError("--goal: the scene has no ball " + describe(nlohmann::json(goal.ball)));
+  if (goal.kind == ShotGoal::Pocket && !goal.pocket.empty()) {
+    const std::vector<Pocket> pockets = prepare(scene).model.pockets;
+    std::string names;
+    for (const Pocket& p : pockets) {
+      if (p.name == goal.pocket) return ball;
+      names += (names.empty() ? "" : ", ") + p.name;
+    }
+    throw InputError("--goal: the table has no pocket " + describe(nlohmann::json(goal.pocket)) +
+                     (names.empty() ? " (it has none)" : "; its pockets: " + names));
+  }
+  return ball;
+}
+}  // namespace
+
 MarginResult shot_margin(const Scene& scene, const MarginOptions& o, const std::function<void(size_t, size_t)>& progress,
                          const std::atomic<bool>* cancel) {
-  if (!scene.cue) throw InputError("the scene has no cue strike: a margin is that of a cue strike");
-  const int ball = ball_index(scene, o.goal.ball);
-  if (ball < 0) throw InputError("--goal: the scene has no ball " + describe(nlohmann::json(o.goal.ball)));
+  const int ball = goal_ball(scene, o.goal);
   const Judge judge{o.goal, ball};
   MarginResult r;
   for (const InitialBall& b : scene.balls) r.ball_ids.push_back(b.spec.id);
@@ -236,9 +254,7 @@ MarginResult shot_margin(const Scene& scene, const MarginOptions& o, const std::
 MarginMap margin_map(const Scene& scene, const MarginOptions& o, int aims, int speeds, double aim_half_range_deg,
                      double speed_half_range_pct, const std::function<void(size_t, size_t)>& progress,
                      const std::atomic<bool>* cancel) {
-  if (!scene.cue) throw InputError("the scene has no cue strike: a margin is that of a cue strike");
-  const int ball = ball_index(scene, o.goal.ball);
-  if (ball < 0) throw InputError("--goal: the scene has no ball " + describe(nlohmann::json(o.goal.ball)));
+  const int ball = goal_ball(scene, o.goal);
   if (aims < 1 || speeds < 1 || o.samples < 1) throw InputError("--map: at least one cell and one sample per cell");
   const Judge judge{o.goal, ball};
   MarginMap m;

@@ -49,6 +49,13 @@ def main():
             fail(f'a goal naming no ball: status {bad.returncode}, {bad.stderr}')
         if open(out).read() != 'kept':
             fail('a refused margin changed its --out file')
+        # A misspelt pocket (a user trial's: front-right for right-front) is refused, not judged as a miss.
+        bad = subprocess.run([shotlab, 'margin', cut, '--goal', 'pocket:1@pocket-front-right', '--out', out],
+                             capture_output=True, text=True, timeout=60)
+        if bad.returncode != 1 or 'no pocket "pocket-front-right"' not in bad.stderr or 'pocket-right-front' not in bad.stderr:
+            fail(f'a goal naming no pocket: status {bad.returncode}, {bad.stderr}')
+        if open(out).read() != 'kept':
+            fail('a margin refused for its pocket changed its --out file')
     print('margin: ok')
 
 
