@@ -59,6 +59,7 @@ void Lab::aim_at_ball(int i) {
 // in a later frame (finish_pocket_aim), presses meanwhile adding up.
 void Lab::aim_for_pocket(int step) {
   if (!scene.cue) return say(MessageKind::Refused, "tick the cue strike first: the pockets are aimed with it");
+  if (!editable("aiming at a pocket")) return;  // not a note claiming an aim that set_cue refused
   const int cue = scene_ball(scene, scene.cue->ball);
   int object = pocket_object(scene);
   // While the aim is the one P set, P goes on with that ball: its line to a pocket may meet another ball first.

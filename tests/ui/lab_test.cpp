@@ -215,6 +215,11 @@ TEST_F(LabTest, PocketAimsOfALongCheckComeInALaterFrame) {
   EXPECT_FALSE(lab.checking_pockets());
   EXPECT_EQ(lab.scene.cue->aim, shot_aim);
   EXPECT_EQ(lab.message.find("aimed "), std::string::npos) << lab.message;
+  // And P while the shot is shown is refused like any edit, without a check.
+  lab.aim_for_pocket(1);
+  EXPECT_FALSE(lab.checking_pockets());
+  EXPECT_EQ(lab.scene.cue->aim, shot_aim);
+  EXPECT_NE(lab.message.find("A shot is shown"), std::string::npos) << lab.message;
 }
 
 // P keeps to the ball it aimed while the aim is its own: the next pocket's line may meet another ball first, and
