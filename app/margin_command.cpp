@@ -89,7 +89,7 @@ void add_margin_command(CLI::App& app) {
   cmd->add_option("--tip-sd", o->tip_sd, "Tip offset error, mm (side and height each)");
   cmd->add_option("--elevation-sd", o->elevation_sd, "Elevation error, degrees");
   cmd->add_option("--samples", o->samples, "Replays (default 200; per cell with --map)");
-  cmd->add_option("--seed", o->seed, "Seed of the noise (default 1)");
+  cmd->add_option("--seed", o->seed, "Seed of the noise (default 1)")->check(kNotNegative);
   cmd->add_option("-j,--jobs", o->jobs, "Threads (default: one per core)")->check(CLI::Range(0, 1024));
   cmd->add_option("--set", o->overrides, "Override a scene value: PATH=VALUE");
   cmd->add_option("--map", o->map, "Also a map of success over aim x speed cells around the scene's, e.g. 40x20");

@@ -76,8 +76,9 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("scene", o->scene, "Scene file (JSON)")->required();
   cmd->add_option("--vary", o->vary, "PATH=VALUES: a list a,b,c, a JSON array, or a range lo:hi:n (lo:hi with --samples)")
       ->required();
-  cmd->add_option("--samples", o->samples, "Random sampling: this many runs instead of the full grid");
-  cmd->add_option("--seed", o->seed, "Seed of the random sampling (default 1)");
+  cmd->add_option("--samples", o->samples, "Random sampling: this many runs instead of the full grid")
+      ->check(kNotNegative);
+  cmd->add_option("--seed", o->seed, "Seed of the random sampling (default 1)")->check(kNotNegative);
   cmd->add_option("-j,--jobs", o->jobs, "Threads (default: one per core)")->check(CLI::Range(0, 1024));
   cmd->add_option("--set", o->overrides, "Override a scene value in every run: PATH=VALUE");
   cmd->add_option("--duration", o->duration, "Simulated time per run in seconds (default: the scene's); runs stop at rest");

@@ -1,5 +1,9 @@
 #include "shotlab/simulation.hpp"
 
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
 #include "rigid_world.hpp"
 #include "world.hpp"
 
@@ -18,8 +22,17 @@ std::unique_ptr<Runner> runner_for(Model model, State initial) {
 Simulation::Simulation(Model model, State initial) : world_(runner_for(std::move(model), std::move(initial))) {}
 Simulation::~Simulation() = default;
 
-Status Simulation::advance(double dt) { return world_->advance(dt); }
-Status Simulation::advance_on(double dt) { return world_->advance_on(dt); }
+namespace {
+// The clock only runs forward, by a finite time: the dense output of the last step cannot go back past its start.
+double checked_dt(double dt) {
+  if (!(dt >= 0) || !std::isfinite(dt))
+    throw std::invalid_argument("Simulation::advance: dt must be a finite time >= 0 s, got " + std::to_string(dt));
+  return dt;
+}
+}  // namespace
+
+Status Simulation::advance(double dt) { return world_->advance(checked_dt(dt)); }
+Status Simulation::advance_on(double dt) { return world_->advance_on(checked_dt(dt)); }
 double Simulation::time() const { return world_->time(); }
 const State& Simulation::state() const { return world_->state(); }
 const Model& Simulation::model() const { return world_->model(); }

@@ -86,6 +86,7 @@ struct PySweep {
     return s;
   }
   std::vector<std::string> lines(size_t begin, std::optional<size_t> end, int jobs) const {
+    if (jobs < 0) throw py::value_error("jobs: 0 (one thread per core) or more, got " + std::to_string(jobs));
     std::vector<std::string> out;
     py::gil_scoped_release release;  // the engine runs while other Python threads (Dask's) do
     sweep->run(begin, end.value_or(sweep->size()), jobs, [&](size_t, const std::string& line) { out.push_back(line); });
@@ -111,7 +112,6 @@ PYBIND11_MODULE(_core, m) {
            py::arg("overrides") = std::vector<std::string>{},
            "A simulation of a scene: a file path, JSON text or a dict; overrides as PATH=VALUE strings")
       .def("advance", [](PySimulation& s, double dt) {
-        if (!(dt >= 0)) throw py::value_error("dt: must be a time >= 0 s");
         const Status status = s.sim().advance(dt);
         if (status != Status::Ok) throw std::runtime_error(s.sim().diagnostic());
       }, py::arg("dt"), "Moves the clock by dt seconds; raises RuntimeError with the diagnostic if the run stops")

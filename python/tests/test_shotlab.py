@@ -65,6 +65,9 @@ def test_errors_are_exceptions_that_name_the_field():
         shotlab.Simulation(STUN, ["materials.ball_cloth.frction=0.3"])
     with pytest.raises(ValueError):
         shotlab.Simulation(STUN).advance(-1)
+    for endless in (float("inf"), float("nan")):  # a user trial's advance(inf) left the clock at inf
+        with pytest.raises(ValueError, match="finite"):
+            shotlab.Simulation(STUN).advance(endless)
     with pytest.raises(ValueError, match="cannot open"):
         shotlab.run("/nonexistent/scene.json")
 

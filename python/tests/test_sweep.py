@@ -83,6 +83,8 @@ def test_bad_sweeps_are_input_errors():
         shotlab.Sweep(CUT, ["cue.speed=1:2"])
     with pytest.raises(shotlab.InputError, match="more than"):
         shotlab.Sweep(CUT, ["cue.speed=0:1:100000", "cue.aim_deg=0:1:1000"])
+    with pytest.raises(ValueError, match="jobs"):  # the command refuses --jobs -1 too
+        shotlab.sweep(CUT, ["cue.speed=1,2"], jobs=-1)
 
 
 def test_a_sweep_pickles_to_the_same_rows():
