@@ -31,17 +31,20 @@ const char* transition_kind(Motion from, Motion to) {
     case Motion::Sliding: return "sliding";
     case Motion::Airborne: return "airborne";
     case Motion::Pocketed: return "pocketed";
+    case Motion::OffTable: return "off_table";
   }
   return "?";
 }
 
 const char* motion_name(Motion m) {
-  static constexpr const char* names[] = {"stationary", "spinning", "rolling", "sliding", "airborne", "pocketed"};
+  static constexpr const char* names[] = {"stationary", "spinning", "rolling", "sliding", "airborne", "pocketed",
+                                          "off_table"};
   return names[static_cast<int>(m)];
 }
 
 Motion classify(const Model& model, const ModelIndex& index, const State& state, const double* x, int i) {
-  if (!state.in_play[i]) return Motion::Pocketed;
+  if (!state.in_play[i])
+    return model.pocket_under(position(x, i), model.balls[i].radius) ? Motion::Pocketed : Motion::OffTable;
   const double r = model.balls[i].radius;
   const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
   Vec3 n{0.0};
@@ -358,13 +361,10 @@ void EventDetector::scan(const StepSpan& span, const State& state, const StepCon
     if (span.x1[9 * i + 1] >= -r) continue;
     const double t = bisect(span.t0, span.t1, [&](double s) { return ball_at(s, i)[9 * i + 1] < -r; });
     const Vec3 p = position(ball_at(t, i), i);
-    std::string kind = "off_table", where;
-    for (const Pocket& pk : model_.pockets) {
-      const Vec3 d = p - pk.center;
-      if (d.x * d.x + d.z * d.z < (pk.radius + r) * (pk.radius + r)) kind = "pocketed", where = pk.name;
-    }
-    events.push_back({t, kind, where.empty() ? std::vector<std::string>{model_.balls[i].id}
-                                             : std::vector<std::string>{model_.balls[i].id, where}});
+    const Pocket* pocket = model_.pocket_under(p, r);
+    events.push_back({t, pocket ? "pocketed" : "off_table",
+                      pocket ? std::vector<std::string>{model_.balls[i].id, pocket->name}
+                             : std::vector<std::string>{model_.balls[i].id}});
     exits.push_back({i, t});
   }
 

@@ -115,6 +115,8 @@ void Island::write(double t, State& world) {
     std::copy_n(scratch_.begin() + kBallDofs * k, kBallDofs, world.x.begin() + kBallDofs * balls_[k]);
     copy_ball(flags, static_cast<int>(k), world, balls_[k], false);
   }
+  for (const StepSpan::Exit& e : span_.exits)  // out of play from the moment it left, not from the step's end
+    if (t >= e.time) world.in_play[balls_[e.ball]] = 0;
 }
 
 std::optional<FreePath> Island::free_path(double t, double horizon) {

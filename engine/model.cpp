@@ -67,4 +67,12 @@ void use_path(Options& options, SolverPath path) {
   options.sleep_time = fast ? kDefaultSleepTime : 0.0;
 }
 
+const Pocket* Model::pocket_under(const Vec3& p, double r) const {
+  for (const Pocket& pk : pockets) {
+    const Vec3 d = p - pk.center;
+    if (d.x * d.x + d.z * d.z < (pk.radius + r) * (pk.radius + r)) return &pk;
+  }
+  return nullptr;
+}
+
 }  // namespace shotlab

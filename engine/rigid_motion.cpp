@@ -43,9 +43,9 @@ Track bed_track(const BedLaw& law, double t0, const Vec3& p, const Vec3& v_in, c
   return t;
 }
 
-Track out_track(double t0, const Vec3& p) {
+Track out_track(double t0, const Vec3& p, Motion how) {
   Track t;
-  t.t0 = t0, t.p = p, t.kind = Motion::Pocketed;
+  t.t0 = t0, t.p = p, t.kind = how;
   return t;
 }
 
@@ -56,7 +56,7 @@ BallState at(const BedLaw& law, const Track& track, double t) {
   // The spin about the vertical falls linearly to zero in every kind (docs/model.md#spin-friction).
   const double wy = std::abs(track.w.y) - law.spin_decel() * s;
   k.w.y = wy > 0 ? std::copysign(wy, track.w.y) : 0.0;
-  if (track.kind == Motion::Pocketed) k.v = k.w = Vec3{0.0};
+  if (out_of_play(track.kind)) k.v = k.w = Vec3{0.0};
   return k;
 }
 

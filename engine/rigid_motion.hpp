@@ -47,7 +47,7 @@ struct BallState {
 // the kind ends. v.y is taken as 0 (the bed holds the ball).
 Track bed_track(const BedLaw& law, double t0, const Vec3& p, const Vec3& v, const Vec3& w);
 // A pocketed (or off-table) ball: frozen at p from t0.
-Track out_track(double t0, const Vec3& p);
+Track out_track(double t0, const Vec3& p, Motion how);  // how: Pocketed or OffTable
 // Where the ball is at time t in [t0, ends] of its track.
 BallState at(const BedLaw& law, const Track& track, double t);
 // The slip of the cloth contact (m/s): u = v + R y^ x w.

@@ -130,7 +130,10 @@ RigidWorld::RigidWorld(Model model, State initial) : model_(std::move(model)), s
     laws_.push_back({b.radius, -model_.options.gravity.y, cloth.friction, cloth.rolling_resistance, cloth.spin_friction});
     tracks_.push_back(state_.in_play[i] ? bed_track(laws_[i], state_.time, position(state_.x, i),
                                                     velocity(state_.x, i), spin(state_.x, i))
-                                        : out_track(state_.time, position(state_.x, i)));
+                                        : out_track(state_.time, position(state_.x, i),
+                                                    model_.pocket_under(position(state_.x, i), b.radius)
+                                                        ? Motion::Pocketed
+                                                        : Motion::OffTable));
   }
   own_.assign(n, {kNever, Kind::Change, -1});
   pairs_.assign(static_cast<size_t>(n) * n, kNever);
@@ -143,7 +146,7 @@ RigidWorld::RigidWorld(Model model, State initial) : model_(std::move(model)), s
 
 RigidWorld::Next RigidWorld::own_next(int i) const {
   const Track& t = tracks_[i];
-  if (t.kind == Motion::Pocketed || t.kind == Motion::Stationary || t.kind == Motion::Spinning)
+  if (out_of_play(t.kind) || t.kind == Motion::Stationary || t.kind == Motion::Spinning)
     return {t.ends, Kind::Change, -1};
   // A track that outlasts the search's horizon (no rolling resistance) is taken up again there and searched anew.
   const double h = std::min(t.ends - t.t0, kFarthest);
@@ -169,7 +172,7 @@ RigidWorld::Next RigidWorld::own_next(int i) const {
 double RigidWorld::pair_next(int i, int j) const {
   const Track &a = tracks_[i], &b = tracks_[j];
   const auto still = [](const Track& t) { return t.kind != Motion::Rolling && t.kind != Motion::Sliding; };
-  if (a.kind == Motion::Pocketed || b.kind == Motion::Pocketed || (still(a) && still(b))) return kNever;
+  if (out_of_play(a.kind) || out_of_play(b.kind) || (still(a) && still(b))) return kNever;
   const double t0 = std::max(a.t0, b.t0);
   const double h = std::min({a.ends, b.ends, t0 + kFarthest}) - t0;
   const Parabola pa = parabola(laws_[i], a, t0), pb = parabola(laws_[j], b, t0);
@@ -243,7 +246,8 @@ void RigidWorld::handle(int i, const Next& next) {
     case Kind::Pocket:
     case Kind::Edge: {
       const bool pocket = next.kind == Kind::Pocket;
-      tracks_[i] = out_track(t, Vec3{k.p.x, -model_.balls[i].radius, k.p.z});  // below the bed, as the soft model leaves it
+      // Below the bed, as the soft model leaves it.
+      tracks_[i] = out_track(t, Vec3{k.p.x, -model_.balls[i].radius, k.p.z}, pocket ? Motion::Pocketed : Motion::OffTable);
       state_.in_play[i] = 0;
       events_.push_back({t, pocket ? "pocketed" : "off_table",
                          pocket ? std::vector<std::string>{id, model_.pockets[next.other].name}
@@ -299,14 +303,14 @@ Status RigidWorld::advance_on(double dt) {  // dt checked by Simulation
 
 bool RigidWorld::at_rest() const {
   for (const Track& t : tracks_)
-    if (t.kind != Motion::Stationary && t.kind != Motion::Pocketed) return false;
+    if (t.kind != Motion::Stationary && !out_of_play(t.kind)) return false;
   return true;
 }
 
 std::vector<std::vector<int>> RigidWorld::island_balls() const {
   std::vector<std::vector<int>> out;
   for (int i = 0; i < static_cast<int>(tracks_.size()); ++i)
-    if (tracks_[i].kind != Motion::Stationary && tracks_[i].kind != Motion::Pocketed) out.push_back({i});
+    if (tracks_[i].kind != Motion::Stationary && !out_of_play(tracks_[i].kind)) out.push_back({i});
   return out;
 }
 

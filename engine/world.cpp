@@ -197,7 +197,7 @@ bool World::at_rest() const {
     for (int i : island->balls()) {
       if (state_.sleeping(i)) continue;  // frozen at rest
       const Motion m = motion(i);
-      if (m != Motion::Stationary && m != Motion::Pocketed) return false;
+      if (m != Motion::Stationary && !out_of_play(m)) return false;
     }
   return true;
 }

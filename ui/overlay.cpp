@@ -23,7 +23,8 @@ ImU32 motion_color(Motion m, float alpha) {
     case Motion::Airborne: return IM_COL32(255, 60, 220, a);
     case Motion::Spinning: return IM_COL32(255, 240, 60, a);
     case Motion::Stationary: return IM_COL32(200, 200, 200, a);
-    case Motion::Pocketed: return IM_COL32(90, 90, 90, a);
+    case Motion::Pocketed:
+    case Motion::OffTable: return IM_COL32(90, 90, 90, a);
   }
   return IM_COL32(255, 255, 255, a);
 }

@@ -33,7 +33,7 @@ std::string table_csv(const Lab& lab) {
     const BallMotion b = ball_motion(m, f.state, i);
     out << f.time << ",\"" << lab.scene.balls[i].spec.id << "\"," << p.x << ',' << p.y << ',' << p.z << ',' << v.x << ','
         << v.y << ',' << v.z << ',' << w.x << ',' << w.y << ',' << w.z << ',' << b.translation + b.rotation << ','
-        << (f.state.in_play[i] ? motion_name(f.motion[i]) : "pocketed") << '\n';
+        << motion_name(f.motion[i]) << '\n';
   }
   return out.str();
 }
@@ -59,7 +59,7 @@ void ball_table(Lab& lab) {
     ImGui::TableNextColumn();
     const Motion mo = i < static_cast<int>(f.motion.size()) ? f.motion[i] : Motion::Stationary;
     ImGui::PushStyleColor(ImGuiCol_Text, motion_color(mo));
-    ImGui::TextUnformatted(f.state.in_play[i] ? motion_name(mo) : "pocketed");
+    ImGui::TextUnformatted(motion_name(mo));
     ImGui::PopStyleColor();
     ImGui::TableNextColumn();
     const double v = glm::length(velocity(f.state.x, i));  // under the rest speed the engine counts it stopped

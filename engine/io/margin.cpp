@@ -65,12 +65,12 @@ struct Judge {
       const std::string pocket = pocket_of(sim, goal.ball);
       return !pocket.empty() && (goal.pocket.empty() || pocket == goal.pocket);
     }
-    if (sim.motion(ball) == Motion::Pocketed || !sim.state().in_play[ball]) return false;
+    if (!sim.state().in_play[ball]) return false;
     const Vec3 p = position(sim.state().x, ball);
     return std::hypot(p.x - goal.x, p.z - goal.z) <= goal.radius;
   }
   // true once the outcome cannot change: a pocket goal's ball has dropped.
-  bool decided(const Simulation& sim) const { return goal.kind == ShotGoal::Pocket && sim.motion(ball) == Motion::Pocketed; }
+  bool decided(const Simulation& sim) const { return goal.kind == ShotGoal::Pocket && out_of_play(sim.motion(ball)); }
 };
 
 // One replay. to_rest: run until every ball rests (for end positions); else stop once the goal is decided.

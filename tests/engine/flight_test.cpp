@@ -52,12 +52,15 @@ TEST(Flight, ABallLeavingPlayMovesOnItsPathUntilItLeaves) {
                         {"balls", {{{"id", "b"}, {"position", {1.0, 0.15, 0.0}}, {"velocity", {2.0, 1.0, 0.0}}}}}};
   auto sim = simulate(scene(doc));
   std::vector<std::pair<double, Vec3>> seen;
+  std::vector<Motion> motions;
   while (sim->time() < 1.0) {
     ASSERT_EQ(sim->advance(1e-3), Status::Ok) << sim->diagnostic();
     seen.emplace_back(sim->time(), position(sim->state().x, 0));
+    motions.push_back(sim->motion(0));
   }
   const double left = event_time(*sim, "off_table", "b");
   ASSERT_LT(left, 0.9) << "the ball leaves play within the second";
+  EXPECT_EQ(sim->motion(0), Motion::OffTable) << "over the rail, not into a pocket (a user trial read \"pocketed\")";
   EXPECT_LT(sim->stats().steps, 40) << "the flight is a few closed-form steps";
   const Vec3 frozen = seen.back().second;
   for (size_t k = 1; k < seen.size(); ++k) {
@@ -66,6 +69,7 @@ TEST(Flight, ABallLeavingPlayMovesOnItsPathUntilItLeaves) {
       EXPECT_LT(glm::length(p - seen[k - 1].second), 0.01) << "at t = " << t << " s, before it leaves at " << left;
     } else {
       EXPECT_EQ(p, frozen) << "at t = " << t << " s, after it left at " << left;
+      EXPECT_EQ(motions[k], Motion::OffTable) << "at t = " << t << " s, after it left at " << left;
     }
   }
 }

@@ -5,8 +5,10 @@
 
 namespace shotlab {
 
-enum class Motion { Stationary, Spinning, Rolling, Sliding, Airborne, Pocketed };
+// Pocketed and OffTable: out of play, through a pocket or over a rail.
+enum class Motion { Stationary, Spinning, Rolling, Sliding, Airborne, Pocketed, OffTable };
 const char* motion_name(Motion m);
+inline bool out_of_play(Motion m) { return m == Motion::Pocketed || m == Motion::OffTable; }
 
 struct Event {
   double time;                      // s

@@ -100,6 +100,9 @@ struct Model {
 
   const ContactMaterial& material(const std::string& name) const;
   int ball_index(const std::string& id) const;  // -1 when absent
+  // The pocket a ball of radius r (m) that left play at centre p went through: its centre within a radius of the
+  // hole's edge, in the bed's plane; nullptr for a ball that went off the table.
+  const Pocket* pocket_under(const Vec3& p, double r) const;
 };
 
 // A model with the standard materials and no bodies.
