@@ -456,8 +456,8 @@ Trails Lab::trails(double until) const {
   for (const Frame& f : frames) {
     if (f.time > until) break;
     for (size_t i = 0; i < out.size(); ++i) {
-      if (!f.state.in_play[i] && !out[i].empty() && out[i].back().motion == Motion::Pocketed) continue;
-      const PathPoint p{position(f.state.x, i), f.state.in_play[i] ? f.motion[i] : Motion::Pocketed};
+      if (!f.state.in_play[i] && !out[i].empty() && out_of_play(out[i].back().motion)) continue;
+      const PathPoint p{position(f.state.x, i), f.motion[i]};
       if (out[i].empty() || glm::length(p.position - out[i].back().position) > kTrailSpacing || p.motion != out[i].back().motion)
         out[i].push_back(p);
     }

@@ -261,7 +261,7 @@ void margin_scatter(ImDrawList* d, const Viewport& vp, const Lab& lab) {
   const int goal = scene_ball(lab.scene, e->options.goal.ball), cue = scene_ball(lab.scene, lab.scene.cue->ball);
   for (const MarginSample& s : e->result.samples)
     for (const int b : {cue, goal}) {
-      if (b < 0 || b >= static_cast<int>(s.end_x.size()) || s.pocketed[b]) continue;
+      if (b < 0 || b >= static_cast<int>(s.end_x.size()) || s.left[b]) continue;
       const double r = lab.scene.balls[b].spec.radius;
       const auto p = vp.project(Vec3{s.end_x[b], r, s.end_z[b]});
       if (!p) continue;

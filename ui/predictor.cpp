@@ -162,7 +162,7 @@ std::optional<Prediction> Predictor::predict(const Scene& scene, double limit, l
     const auto start = std::chrono::steady_clock::now();
     auto sample = [&] {
       for (int i = 0; i < sim.state().ball_count(); ++i)
-        if (sim.state().in_play[i] || out.paths[i].empty() || out.paths[i].back().motion != Motion::Pocketed)
+        if (sim.state().in_play[i] || out.paths[i].empty() || !out_of_play(out.paths[i].back().motion))
           out.paths[i].push_back({position(sim.state().x, i), sim.motion(i)});
     };
     sample();

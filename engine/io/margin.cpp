@@ -93,6 +93,7 @@ MarginSample replay(const Scene& scene, const MarginOptions& o, const Judge& jud
       const Vec3 p = position(sim.state().x, i);
       s.end_x.push_back(p.x), s.end_z.push_back(p.z);
       s.pocketed.push_back(sim.motion(i) == Motion::Pocketed);
+      s.left.push_back(out_of_play(sim.motion(i)));
     }
   } catch (const std::exception& e) {  // a stroke the scene refuses (a tip offset off the ball): a failed replay
     s.status = "error", s.reason = e.what();

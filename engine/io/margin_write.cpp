@@ -42,8 +42,8 @@ json scatter(const MarginResult& r) {
     for (const MarginSample& s : r.samples) {
       if (s.end_x.size() <= b) continue;
       xs.push_back(s.end_x[b]), zs.push_back(s.end_z[b]), ok.push_back(s.success);
-      if (s.pocketed[b]) {
-        ++dropped;
+      if (s.left[b]) {  // the spread is of the balls that stayed on the table
+        dropped += s.pocketed[b];
         continue;
       }
       ++n, sx += s.end_x[b], sz += s.end_z[b], sxx += s.end_x[b] * s.end_x[b], szz += s.end_z[b] * s.end_z[b];

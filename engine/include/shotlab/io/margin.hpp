@@ -47,7 +47,8 @@ struct MarginSample {
   std::string status = "ok";        // ok, error, limit or the engine's stop; its reason
   std::string reason;
   std::vector<double> end_x, end_z;  // each ball's end position, m (the scene's ball order)
-  std::vector<bool> pocketed;
+  std::vector<bool> pocketed;  // each ball: into a pocket
+  std::vector<bool> left;      // each ball: out of play, into a pocket or over a rail
 };
 
 struct MarginOptions {
