@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
+#include <string>
 
 #include "ui/files.hpp"
 #include "ui/panels.hpp"
@@ -130,11 +132,16 @@ void momentum_bars(const Lab& lab) {
   bars.push_back({"total", glm::length(total), IM_COL32(255, 255, 255, 255)});
   scale = std::max(scale, glm::length(total));
   auto shown = [](double v) { return std::abs(v) < 5e-4 ? 0.0 : v; };  // no "-0.000" at rest
-  // The pair on a line of its own: wrapping breaks after a '.', inside a number.
-  ImGui::TextWrapped("Momentum (kg m/s), total along x, z:");
-  ImGui::SameLine();
-  if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize("(-0.000, -0.000)").x) ImGui::NewLine();
-  ImGui::Text("(%.3f, %.3f)", shown(total.x), shown(total.z));
+  // One line where it fits, else the pair on a line of its own: wrapping breaks after a '.', inside a number.
+  char pair[64];
+  std::snprintf(pair, sizeof pair, "(%.3f, %.3f)", shown(total.x), shown(total.z));
+  const std::string line = std::string("Momentum (kg m/s), total along x, z: ") + pair;
+  if (ImGui::CalcTextSize(line.c_str()).x <= ImGui::GetContentRegionAvail().x) {
+    ImGui::TextUnformatted(line.c_str());
+  } else {
+    ImGui::TextWrapped("Momentum (kg m/s), total along x, z:");
+    ImGui::TextUnformatted(pair);
+  }
   bar_chart("momentum", bars, scale, "kg m/s");
 }
 
