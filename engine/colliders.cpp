@@ -1,5 +1,7 @@
 #include "shotlab/colliders.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace shotlab {
@@ -24,6 +26,12 @@ Penetration from_point(const Vec3& p, double r, const Vec3& q, double rc) {
   // A centre exactly on the core has no defined normal; any direction is as good, up is the least surprising.
   const Vec3 n = dist > 0 ? d / dist : kUp;
   return {r + rc - dist, n};
+}
+
+// The horizontal unit direction of an arc wall's end: its middle turned by the half angle, towards the side
+// (-toward.z, 0, toward.x) when sign is +1.
+Vec3 arc_end(const ArcWall& s, double sign) {
+  return std::cos(s.half_angle) * s.toward + sign * std::sin(s.half_angle) * Vec3{-s.toward.z, 0.0, s.toward.x};
 }
 
 struct Probe {
@@ -63,6 +71,28 @@ struct Probe {
     const double t = len2 > 0 ? std::clamp(glm::dot(p - s.a, ab) / len2, 0.0, 1.0) : 0.0;
     return from_point(p, r, s.a + t * ab, s.radius);
   }
+  // The wall's point nearest the centre: along the radius within the arc, else on the end face nearer the centre
+  // (the arcs' nearest points are the ends then). A centre inside the solid goes out through the nearest of its inner,
+  // outer, top and bottom faces.
+  std::optional<Penetration> operator()(const ArcWall& s) const {
+    const double reach = r + within, outer = s.radius + s.thickness;
+    const Vec3 d{p.x - s.center.x, 0.0, p.z - s.center.z};
+    const double rho = glm::length(d);
+    if (rho > outer + reach || p.y < s.bottom - reach || p.y > s.top + reach) return std::nullopt;
+    const Vec3 e = rho > 0 ? d / rho : s.toward;
+    const double y = std::clamp(p.y, s.bottom, s.top);
+    const Vec3 axis{s.center.x, y, s.center.z};
+    if (glm::dot(e, s.toward) >= std::cos(s.half_angle)) {
+      const double q = std::clamp(rho, s.radius, outer);
+      if (q != rho || y != p.y) return from_point(p, r, axis + q * e, 0.0);
+      const double faces[4] = {rho - s.radius, outer - rho, s.top - p.y, p.y - s.bottom};
+      const Vec3 normals[4] = {-e, e, kUp, -kUp};
+      const auto k = std::min_element(faces, faces + 4) - faces;
+      return Penetration{r + faces[k], normals[k]};
+    }
+    const Vec3 end = arc_end(s, glm::dot(e, Vec3{-s.toward.z, 0.0, s.toward.x}) < 0 ? -1.0 : 1.0);
+    return from_point(p, r, axis + std::clamp(glm::dot(d, end), s.radius, outer) * end, 0.0);
+  }
 };
 
 }  // namespace
@@ -85,6 +115,20 @@ Bounds bounds(const Shape& shape) {
     const Vec3 c[4] = {s->origin, s->origin + s->u, s->origin + s->v, s->origin + s->u + s->v};
     Bounds b{c[0], c[0]};
     for (const Vec3& q : c) b.lo = glm::min(b.lo, q), b.hi = glm::max(b.hi, q);
+    return b;
+  }
+  if (const auto* s = std::get_if<ArcWall>(&shape)) {
+    // The ends' corners, and the outer face's farthest points along x and z where the arc takes them in.
+    Bounds b{Vec3{inf}, Vec3{-inf}};
+    auto take = [&](const Vec3& dir, double radius) {
+      const Vec3 q = s->center + radius * dir;
+      b.lo = glm::min(b.lo, q), b.hi = glm::max(b.hi, q);
+    };
+    const double outer = s->radius + s->thickness;
+    for (const double sign : {-1.0, 1.0}) take(arc_end(*s, sign), s->radius), take(arc_end(*s, sign), outer);
+    for (const Vec3& dir : {Vec3{1, 0, 0}, Vec3{-1, 0, 0}, Vec3{0, 0, 1}, Vec3{0, 0, -1}})
+      if (glm::dot(dir, s->toward) >= std::cos(s->half_angle)) take(dir, outer);
+    b.lo.y = s->bottom, b.hi.y = s->top;
     return b;
   }
   return {Vec3{-inf}, Vec3{inf}};

@@ -51,6 +51,30 @@ void overlapping_pairs(const Model& model, const ModelIndex& index, const State&
 
 namespace {
 
+// s: the longest a point at horizontal offset d (m) from an axis, moving at v, stays within `radius` of it on a
+// straight path; +inf if it does not move across.
+double time_in_circle(const Vec3& d, const Vec3& v, double radius) {
+  const double A = v.x * v.x + v.z * v.z, B = 2 * (d.x * v.x + d.z * v.z), C = d.x * d.x + d.z * d.z - radius * radius;
+  if (A == 0) return std::numeric_limits<double>::infinity();
+  const double q = std::sqrt(std::max(0.0, B * B - 4 * A * C));
+  return B > 0 ? -2 * C / (B + q) : (q - B) / (2 * A);
+}
+
+// s: a lower bound on when a ball (as for collider_closing_time) closes `gap` (m) to an arc wall, `margin` of it past
+// touching. D, the distance to the wall, falls at most at |v|. Every point of the wall lies between the cylinders of
+// radius `radius` and `radius + thickness` about its axis: from inside the inner one the ball's centre first has to
+// leave the cylinder of radius `radius - r + margin` (its path bent by at most a h^2 / 2 within the horizon h), from
+// outside the outer one reach that cylinder, widened by r, whose distance is convex.
+double arc_wall_closing_time(const ArcWall& wall, const Vec3& p, double r, const Vec3& v, double gap, double margin,
+                             double a, double horizon) {
+  const double anyway = closing_time(gap, glm::length(v), a);
+  const Vec3 d{p.x - wall.center.x, 0.0, p.z - wall.center.z};
+  const double rho = glm::length(d), outside = rho - wall.radius - wall.thickness - r;
+  if (outside > 0) return std::max(anyway, closing_time(margin + outside, -glm::dot(v, d) / rho, a));
+  const double inside = wall.radius - r + margin - 0.5 * a * horizon * horizon;
+  return rho < inside ? std::max(anyway, time_in_circle(d, v, inside)) : anyway;
+}
+
 // s: a lower bound on when a ball (centre p, radius r, velocity v, acceleration at most a) closes `gap` (m) to a
 // collider it misses by -pen.depth, within `horizon` (docs/model.md#step-cap). Its distance D to the collider changes
 // at D' = v.n now (n = pen.normal, D's gradient), and D'' >= -a: D is linear for a plane (also over its holes' edges
@@ -58,9 +82,12 @@ namespace {
 // distance to the rim circle, concave along the rim by at most 1 / (rho - D): D'' >= -(V^2 / (rho - D) + a), V the
 // speed bound, while the centre keeps rho - D above half its value now; the later of that bound and the 1-Lipschitz
 // one (D falls at most at |v|) holds. With |v| everywhere a ball moving along a cushion, or falling past a pocket's
-// rim, would approach it in ever smaller steps.
+// rim, would approach it in ever smaller steps. An arc wall is not convex (its nearest point may lie behind a ball
+// that crosses towards its far side): arc_wall_closing_time.
 double collider_closing_time(const Shape& shape, const Vec3& p, double r, const Vec3& v, const Penetration& pen,
                              double gap, double a, double horizon) {
+  if (const auto* wall = std::get_if<ArcWall>(&shape))
+    return arc_wall_closing_time(*wall, p, r, v, gap, gap + pen.depth, a, horizon);
   const double rate = glm::dot(v, pen.normal);
   const Hole* hole = hole_over(shape, p);
   if (!hole) return closing_time(gap, -rate, a);

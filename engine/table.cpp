@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 namespace shotlab {
@@ -47,6 +48,7 @@ void set_table_materials(TableKind kind, Model& m) {
   }
   m.materials[kBallCloth] = cloth;
   m.materials[kBallCushion] = cushion;
+  if (has_pockets(kind)) m.materials[kBallPocket] = default_ball_pocket();
 }
 
 const char* table_kind_name(TableKind kind) {
@@ -75,7 +77,56 @@ void add_jaw(Model& m, const std::string& name, const Vec3& end, const Vec3& out
   m.colliders.push_back({name, Capsule{a, a + t.jaw_length * outward, t.cushion_radius}, kBallCushion});
 }
 
+// The wall around a pocket's hole (docs/model.md#pockets): the rail's lined body, from below the lowest ball still in
+// play (one leaves once its centre is a radius below the bed) up to the rail's top. It leaves open the arc that faces
+// the mouth: the rays from the hole's centre to the cushion ends (the mouth's half width `half_mouth`, the hole's
+// centre `beyond` past the mouth's middle), widened on each side by the arc a ball's radius spans on the rim and 5
+// degrees more, so that a ball coming through the mouth at bed level meets neither the wall nor its ends before it is
+// over the hole. None if that leaves no wall.
+void add_pocket_back(std::vector<Collider>& backs, const Pocket& pocket, const Vec3& outward, double half_mouth,
+                     double beyond, const TableSpec& t) {
+  constexpr double kBackThickness = 0.02;  // m
+  const double ball_arc = 2 * std::asin(std::min(1.0, t.ball_radius / (2 * pocket.radius)));
+  const double half_angle = std::numbers::pi - std::atan2(half_mouth, beyond) - ball_arc - 5.0 * std::numbers::pi / 180;
+  if (half_angle <= 0) return;
+  backs.push_back({pocket.name + "-back",
+                   ArcWall{pocket.center, pocket.radius, kBackThickness, outward, half_angle, -3 * t.ball_radius,
+                           rail_top(t)},
+                   kBallPocket});
+}
+
+// The six pockets, their holes in the bed and their backs. A ball drops once its centre is over the hole, i.e.
+// pocket_shelf beyond the mouth. Corner mouths run diagonally with their midpoint corner_mouth/(2 sqrt 2) inside the
+// corner along each axis; the hole centre lies shelf + radius beyond it along the diagonal. Side mouths lie on the
+// nose line.
+std::vector<Collider> add_pockets(Model& m, const TableSpec& t, std::vector<Hole>& holes) {
+  m.materials.emplace(kBallPocket, default_ball_pocket());  // kept when set_table_materials set it or a scene did
+  const double hx = t.length / 2, hz = t.width / 2, beyond = t.pocket_shelf + t.pocket_radius;
+  const double c = (beyond - t.corner_mouth / 2) / std::sqrt(2.0);  // corner hole centre beyond each nose line
+  const double d = 1 / std::sqrt(2.0);
+  struct Mouth {
+    std::string name;
+    Vec3 centre, outward;
+    double half_width;
+  };
+  const std::array<Mouth, 6> mouths{{{"pocket-left-back", at(-hx - c, -hz - c), at(-d, -d), t.corner_mouth / 2},
+                                     {"pocket-right-back", at(hx + c, -hz - c), at(d, -d), t.corner_mouth / 2},
+                                     {"pocket-left-front", at(-hx - c, hz + c), at(-d, d), t.corner_mouth / 2},
+                                     {"pocket-right-front", at(hx + c, hz + c), at(d, d), t.corner_mouth / 2},
+                                     {"pocket-side-back", at(0, -hz - beyond), at(0, -1), t.side_mouth / 2},
+                                     {"pocket-side-front", at(0, hz + beyond), at(0, 1), t.side_mouth / 2}}};
+  std::vector<Collider> backs;
+  for (const Mouth& mouth : mouths) {
+    m.pockets.push_back({mouth.name, mouth.centre, t.pocket_radius});
+    holes.push_back({mouth.centre, t.pocket_radius});
+    add_pocket_back(backs, m.pockets.back(), mouth.outward, mouth.half_width, beyond, t);
+  }
+  return backs;
+}
+
 }  // namespace
+
+double rail_top(const TableSpec& t) { return t.nose_height + t.cushion_radius + 0.004; }
 
 // The resting ball's centre (height R), its contact point (height h) and the capsule's axis lie on one line, tilted
 // by asin((h - R) / R) above the horizontal; the contact point is on the nose line.
@@ -90,23 +141,7 @@ void add_table(Model& m, const TableSpec& t) {
   const bool pockets = has_pockets(t.kind);
   m.balls_leave_below_bed = true;
   std::vector<Hole> holes;
-  if (pockets) {
-    // A ball drops once its centre is over the hole, i.e. pocket_shelf beyond the mouth. Corner mouths run
-    // diagonally with their midpoint corner_mouth/(2 sqrt 2) inside the corner along each axis; the hole centre lies
-    // shelf + radius beyond it along the diagonal. Side mouths lie on the nose line.
-    const double beyond = t.pocket_shelf + t.pocket_radius;
-    const double c = (beyond - t.corner_mouth / 2) / std::sqrt(2.0);  // corner hole centre beyond each nose line
-    const std::array<std::pair<std::string, Vec3>, 6> centres{{{"pocket-left-back", at(-hx - c, -hz - c)},
-                                                               {"pocket-right-back", at(hx + c, -hz - c)},
-                                                               {"pocket-left-front", at(-hx - c, hz + c)},
-                                                               {"pocket-right-front", at(hx + c, hz + c)},
-                                                               {"pocket-side-back", at(0, -hz - beyond)},
-                                                               {"pocket-side-front", at(0, hz + beyond)}}};
-    for (const auto& [name, centre] : centres) {
-      m.pockets.push_back({name, centre, t.pocket_radius});
-      holes.push_back({centre, t.pocket_radius});
-    }
-  }
+  const std::vector<Collider> backs = pockets ? add_pockets(m, t, holes) : std::vector<Collider>{};  // appended last
   // The bed reaches rail_width beyond the noses; past it a ball falls off the table.
   m.colliders.push_back({"bed",
                          BoundedPlane{at(-hx - rw, hz + rw), Vec3{t.length + 2 * rw, 0, 0}, Vec3{0, 0, -(t.width + 2 * rw)},
@@ -144,6 +179,7 @@ void add_table(Model& m, const TableSpec& t) {
       add_jaw(m, r.name + "-jaw-b", r.b, r.outward, t);
     }
   }
+  m.colliders.insert(m.colliders.end(), backs.begin(), backs.end());
 }
 
 }  // namespace shotlab

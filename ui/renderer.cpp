@@ -277,7 +277,7 @@ void Renderer::draw_scene(const Scene& scene, const Model& model) {
 void Renderer::draw_table(const TableSpec& t, const Model& model) {
   const glm::vec3 cloth{0.05f, 0.42f, 0.22f}, rubber{0.04f, 0.34f, 0.17f}, wood{0.36f, 0.2f, 0.09f};
   const double hx = t.length / 2, hz = t.width / 2, rw = t.rail_width;
-  const double rail_in = 0.05, rail_top = t.nose_height + t.cushion_radius + 0.004;
+  const double rail_in = 0.05, rail_top = shotlab::rail_top(t);
   // Cushion rubber from each cushion collider's nose back to the rail.
   for (const Collider& c : model.colliders) {
     const auto* cap = std::get_if<Capsule>(&c.shape);
@@ -328,6 +328,20 @@ void Renderer::draw_colliders(const Model& model) {
                                   ? glm::normalize(glm::dvec3{-along.z, 0, along.x}) : glm::dvec3{1, 0, 0};
       draw(cube_, slab(cap->a, cap->b, side, -cap->radius, cap->radius, cap->a.y - cap->radius, cap->a.y + cap->radius),
            grey, 0, 1);
+    } else if (const auto* w = std::get_if<ArcWall>(&c.shape)) {
+      // In slabs of at most 10 degrees, each from the outer face's chord inward by the thickness (so that no gaps
+      // open between them on the outside).
+      const int n = std::max(1, static_cast<int>(std::ceil(w->half_angle / 0.0873)));
+      const glm::dvec3 side{-w->toward.z, 0, w->toward.x}, axis{w->center.x, 0, w->center.z};
+      auto at = [&](int k) {
+        const double a = w->half_angle * (2.0 * k / n - 1);
+        return std::cos(a) * w->toward + std::sin(a) * side;
+      };
+      for (int k = 0; k < n; ++k) {
+        const glm::dvec3 e0 = at(k), e1 = at(k + 1), out = glm::normalize(e0 + e1);
+        const double outer = w->radius + w->thickness;
+        draw(cube_, slab(axis + outer * e0, axis + outer * e1, out, -w->thickness, 0, w->bottom, w->top), grey, 0, 1);
+      }
     } else if (const auto* bp = std::get_if<BoundedPlane>(&c.shape)) {
       glm::dmat4 m(1.0);
       m[0] = glm::dvec4(bp->u, 0);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -76,6 +77,18 @@ std::vector<Hole> read_holes(const JsonNode& n) {
   return holes;
 }
 
+ArcWall read_arc_wall(const JsonNode& n) {
+  Vec3 toward = n["toward"].vec3();
+  toward.y = 0;
+  if (glm::length(toward) == 0) n["toward"].fail("must have a horizontal part (x or z not zero)");
+  const double half = n["half_angle_deg"].angle_degrees();
+  if (!(half > 0 && half <= std::numbers::pi)) n["half_angle_deg"].fail("must be more than 0 and at most 180");
+  const double bottom = n["bottom"].number(), top = n["top"].number();
+  if (!(top > bottom)) n["top"].fail("must be above bottom");
+  return ArcWall{n["center"].vec3(), n["radius"].positive(), n["thickness"].positive(), glm::normalize(toward),
+                 half, bottom, top};
+}
+
 Collider read_collider(const JsonNode& n, const Model& model) {
   Collider c;
   const std::string type = n["type"].string();
@@ -96,8 +109,10 @@ Collider read_collider(const JsonNode& n, const Model& model) {
     c.shape = StaticSphere{n["center"].vec3(), n["radius"].positive()};
   } else if (type == "capsule") {
     c.shape = Capsule{n["a"].vec3(), n["b"].vec3(), n["radius"].positive()};
+  } else if (type == "arc_wall") {
+    c.shape = read_arc_wall(n);
   } else {
-    n["type"].fail("unknown collider type '" + type + "' (plane, bounded_plane, sphere, capsule)");
+    n["type"].fail("unknown collider type '" + type + "' (plane, bounded_plane, sphere, capsule, arc_wall)");
   }
   n.finish();
   return c;
@@ -231,7 +246,7 @@ Scene parse_scene(const json& doc, const std::string& source) {
       read_material(m[item.key()], s.model.materials[item.key()]);
       const ContactMaterial& read = s.model.materials[item.key()];
       if (!known && read.stiffness == 0)
-        m[item.key()].fail("a new material needs a stiffness (the standard ones are ball_ball, ball_cloth, ball_cushion)");
+        m[item.key()].fail("a new material needs a stiffness (the standard ones are ball_ball, ball_cloth, ball_cushion; a table with pockets adds ball_pocket)");
       if (item.key() != kBallBall && read.friction_law == FrictionLaw::SpeedDependent)
         m[item.key()]["friction_law"].fail("speed_dependent is for ball_ball only (the bed's closed forms assume a constant coefficient)");
     }

@@ -1,6 +1,7 @@
 // Writing a scene file: the inverse of parse_scene (scene_json.cpp), every field it reads written back; a rack that
 // is as its spec generates it is written as the spec, so a saved scene keeps its seed and jitter.
 #include <cmath>
+#include <numbers>
 
 #include "shotlab/io/atomic_file.hpp"
 #include "shotlab/io/scene_json.hpp"
@@ -49,6 +50,11 @@ struct ColliderJson {
   }
   json operator()(const Capsule& s) const {
     return {{"type", "capsule"}, {"a", vec(s.a)}, {"b", vec(s.b)}, {"radius", s.radius}};
+  }
+  json operator()(const ArcWall& s) const {
+    return {{"type", "arc_wall"}, {"center", vec(s.center)}, {"radius", s.radius}, {"thickness", s.thickness},
+            {"toward", vec(s.toward)}, {"half_angle_deg", s.half_angle * 180 / std::numbers::pi},
+            {"bottom", s.bottom}, {"top", s.top}};
   }
 };
 

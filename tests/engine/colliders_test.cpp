@@ -79,6 +79,77 @@ TEST(Colliders, CapsuleMiddleAndEnds) {
 }
 
 
+// An arc wall around the y axis: inner radius 0.065, outer 0.085, within 120 degrees of +x, from y = -0.09 to 0.05.
+const ArcWall kWall{{0, 0, 0}, 0.065, 0.02, {1, 0, 0}, 120 * M_PI / 180, -0.09, 0.05};
+
+TEST(Colliders, ArcWallFaces) {
+  const auto inner = penetration(kWall, {0.05, 0.02, 0}, r);  // in the hole: the inner face, 0.015 away
+  EXPECT_NEAR(inner->depth, r - 0.015, 1e-12);
+  expect_vec(inner->normal, {-1, 0, 0});
+  const auto outer = penetration(kWall, {0.1, 0, 0}, r);  // behind it: the outer face
+  EXPECT_NEAR(outer->depth, r - 0.015, 1e-12);
+  expect_vec(outer->normal, {1, 0, 0});
+  const auto top = penetration(kWall, {0.075, 0.07, 0}, r);  // over it: the top, 0.02 below
+  EXPECT_NEAR(top->depth, r - 0.02, 1e-12);
+  expect_vec(top->normal, {0, 1, 0});
+  // 10 degrees past the end at +120 degrees (towards +z), 0.075 from the axis: the end face, 0.075 sin 10 deg away.
+  const double a = 130 * M_PI / 180;
+  const auto end = penetration(kWall, {0.075 * std::cos(a), 0, 0.075 * std::sin(a)}, r);
+  EXPECT_NEAR(end->depth, r - 0.075 * std::sin(10 * M_PI / 180), 1e-12);
+  expect_vec(end->normal, {std::cos(a + M_PI / 2 - 10 * M_PI / 180), 0, std::sin(a + M_PI / 2 - 10 * M_PI / 180)});
+  const auto within = penetration(kWall, {0.07, 0, 0}, r);  // inside the solid: out through the inner face, 5 mm off
+  EXPECT_NEAR(within->depth, r + 0.005, 1e-12);
+  expect_vec(within->normal, {-1, 0, 0});
+  EXPECT_FALSE(penetration(kWall, {0.3, 0, 0}, r, 0.01));  // farther than asked about
+}
+
+TEST(Colliders, ArcWallBounds) {
+  const Bounds b = bounds(kWall);  // the ends at +-120 degrees, and +x, +z, -z on the outer face
+  expect_vec(b.lo, {-0.5 * 0.085, -0.09, -0.085});
+  expect_vec(b.hi, {0.085, 0.05, 0.085});
+}
+
+// The depth is r less the distance to the nearest point of the wall's surface, found by brute force over its six
+// faces sampled every 0.25 mm and 0.25 degrees across (exactly up and down the tall ones), for points all around it: in the hole, behind, above, below, past the
+// ends, in the open arc.
+TEST(Colliders, ArcWallDepthIsTheDistanceToItsSurface) {
+  std::vector<Vec3> surface;
+  const double ri = kWall.radius, ro = ri + kWall.thickness, h = kWall.half_angle, step = 0.00025;
+  auto at = [&](double rho, double angle, double y) { return Vec3{rho * std::cos(angle), y, rho * std::sin(angle)}; };
+  const int angles = static_cast<int>(2 * h / (0.25 * M_PI / 180));
+  for (int k = 0; k <= angles; ++k) {
+    const double angle = -h + 2 * h * k / angles;
+    for (double y = kWall.bottom; y <= kWall.top + 1e-12; y += 0.002)
+      surface.push_back(at(ri, angle, y)), surface.push_back(at(ro, angle, y));
+    for (double rho = ri; rho <= ro + 1e-12; rho += step)
+      surface.push_back(at(rho, angle, kWall.top)), surface.push_back(at(rho, angle, kWall.bottom));
+  }
+  for (const double angle : {-h, h})
+    for (double rho = ri; rho <= ro + 1e-12; rho += step)
+      for (double y = kWall.bottom; y <= kWall.top + 1e-12; y += 0.002) surface.push_back(at(rho, angle, y));
+  int checked = 0;
+  for (const double rho : {0.0, 0.02, 0.05, 0.07, 0.1, 0.12})
+    for (int k = 0; k < 24; ++k)
+      for (const double y : {-0.12, 0.0, 0.04, 0.08}) {
+        const Vec3 p = at(rho, k * M_PI / 12 + 0.1, y);
+        const auto pen = penetration(kWall, p, r);
+        double nearest = 1e9;
+        for (const Vec3& q : surface) {
+          // The vertical sampling is coarse on the tall faces: measure across them exactly at p's clamped height.
+          Vec3 d = p - q;
+          if (q.y > kWall.bottom && q.y < kWall.top) d.y = p.y - std::clamp(p.y, kWall.bottom, kWall.top);
+          nearest = std::min(nearest, glm::length(d));
+        }
+        const bool inside = rho > ri && rho < ro && y > kWall.bottom && y < kWall.top &&
+                            std::cos(k * M_PI / 12 + 0.1) > std::cos(h);
+        if (inside) continue;  // in the solid: out through the nearest face, checked in ArcWallFaces
+        ++checked;
+        EXPECT_NEAR(r - pen->depth, nearest, 4e-4) << "rho " << rho << ", angle step " << k << ", y " << y;
+        EXPECT_LE(r - pen->depth, nearest + 1e-12) << "rho " << rho << ", angle step " << k << ", y " << y;
+      }
+  EXPECT_GT(checked, 500);
+}
+
 // ModelIndex's clear column (model_index.hpp): a ball inside it is probed against the plane-like colliders only. On a
 // pool table, near_colliders must still find every collider the plain probe of each finds, wherever the ball is:
 // mid-table, at a cushion's nose, in a pocket's jaws, over a hole, off the table. Where the bed is probed as a level

@@ -55,6 +55,14 @@ struct BadInput {
   std::string field, problem;
 };
 
+// An arc wall collider with one field replaced by `field` (a JSON member).
+std::string arc_wall(const std::string& field) {
+  nlohmann::json wall = {{"type", "arc_wall"}, {"center", {0, 0, 0}}, {"radius", 0.065}, {"thickness", 0.02},
+                         {"toward", {1, 0, 0}}, {"half_angle_deg", 120}, {"bottom", -0.09}, {"top", 0.05}};
+  wall.update(nlohmann::json::parse("{" + field + "}"));
+  return wall.dump();
+}
+
 TEST(SceneFile, BadInputNamesFileFieldAndProblem) {
   const BadInput cases[] = {
       {"malformed.json", R"({"balls": [)", "", "malformed JSON"},
@@ -77,6 +85,11 @@ TEST(SceneFile, BadInputNamesFileFieldAndProblem) {
       {"missing.json", R"({"balls": [{"position": [0, 1, 0]}]})", "balls[0].id", "missing required field"},
       {"rod.json", R"({"balls": [)" + kBall + R"(], "rods": [{"ball": "zz", "anchor": [0, 1, 0]}]})", "rods[0].ball",
        "no ball with id 'zz'"},
+      {"wall_up.json", R"({"colliders": [)" + arc_wall(R"("toward": [0, 1, 0])") + "]}", "colliders[0].toward",
+       "horizontal part"},
+      {"wall_angle.json", R"({"colliders": [)" + arc_wall(R"("half_angle_deg": 0)") + "]}",
+       "colliders[0].half_angle_deg", "more than 0"},
+      {"wall_top.json", R"({"colliders": [)" + arc_wall(R"("top": -0.2)") + "]}", "colliders[0].top", "above bottom"},
   };
   for (const BadInput& c : cases) {
     const std::string msg = load_error(c.name, c.text);
@@ -118,6 +131,20 @@ TEST(SceneFile, SaveAndLoadGiveTheSameScene) {
     save_scene(path, s);
     EXPECT_EQ(scene_to_json(load_scene(path)), scene_to_json(s)) << name;
   }
+}
+
+// A scene's own arc wall comes back from its file as it was written (to the last bit of its numbers).
+TEST(SceneFile, AnArcWallSurvivesSaveAndLoad) {
+  const std::string path = temp_file("wall.json", R"({"colliders": [)" + arc_wall(R"("half_angle_deg": 115.25)") +
+                                                      R"(], "balls": [)" + kBall + "]}");
+  const Scene s = load_scene(path);
+  ASSERT_EQ(s.model.colliders.size(), 1u);
+  const auto* wall = std::get_if<ArcWall>(&s.model.colliders[0].shape);
+  ASSERT_NE(wall, nullptr);
+  EXPECT_NEAR(wall->half_angle, 115.25 * M_PI / 180, 1e-15);
+  const std::string again = (test_dir() / "wall_again.json").string();
+  save_scene(again, s);
+  EXPECT_EQ(scene_to_json(load_scene(again)), scene_to_json(s));
 }
 
 TEST(SceneFile, FailedSaveLeavesTheOldFileAlone) {

@@ -53,7 +53,20 @@ struct Capsule {
   double radius;
 };
 
-using Shape = std::variant<Plane, BoundedPlane, StaticSphere, Capsule>;
+// A wall standing on an arc around a vertical axis (y up): the solid between the radii `radius` and
+// `radius + thickness` from the axis through `center`, within `half_angle` of the horizontal unit direction `toward`,
+// from height `bottom` to `top`. A table puts one around the back of each pocket's hole (docs/model.md#pockets): its
+// inner face stops a ball that crosses the hole, its outer face one that comes from behind.
+struct ArcWall {
+  Vec3 center;          // a point of the axis (its height is not used)
+  double radius;        // m, of the inner face
+  double thickness;     // m
+  Vec3 toward;          // unit, horizontal: the middle of the arc
+  double half_angle;    // rad, in (0, pi]
+  double bottom, top;   // m, heights (y)
+};
+
+using Shape = std::variant<Plane, BoundedPlane, StaticSphere, Capsule, ArcWall>;
 
 struct Collider {
   std::string name;      // "bed", "cushion-3", ... used in events and diagnostics

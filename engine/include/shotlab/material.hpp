@@ -53,5 +53,6 @@ struct ContactMaterial {
 ContactMaterial default_ball_ball();
 ContactMaterial default_ball_cloth();
 ContactMaterial default_ball_cushion();
+ContactMaterial default_ball_pocket();  // a pocket's back, which tables with pockets add (table.hpp)
 
 }  // namespace shotlab

@@ -85,6 +85,7 @@ void use_path(Options& options, SolverPath path);
 inline const std::string kBallBall = "ball_ball";
 inline const std::string kBallCloth = "ball_cloth";
 inline const std::string kBallCushion = "ball_cushion";
+inline const std::string kBallPocket = "ball_pocket";  // not standard: tables with pockets add it (table.hpp)
 
 struct Model {
   std::vector<BallSpec> balls;

@@ -38,15 +38,19 @@ struct NoseAxis {
 };
 NoseAxis nose_axis(const TableSpec& spec);
 
+// m above the bed: the top of the rails and of the pockets' backs, 4 mm over the cushion rubber's.
+double rail_top(const TableSpec& spec);
+
 // Sets the cloth (ball_cloth) and cushion (ball_cushion) a table type comes with, from measurements of that game
 // (docs/model.md#parameters): pool the defaults; snooker Mathavan et al.'s cloth and cushion; carom a slow-rolling
-// heated cloth and a livelier cushion.
+// heated cloth and a livelier cushion. Tables with pockets also get the pockets' backs (ball_pocket).
 void set_table_materials(TableKind kind, Model& model);
 // N s/m: the snooker cushion's damping for restitution 0.98 at 1 m/s (a 0.1406 kg ball), the carom cushion's for 0.9
 // (0.21 kg), both at the default cushion stiffness.
 inline constexpr double kSnookerCushionDamping = 3.4624482939371672, kCaromCushionDamping = 23.632250567796799;
 
-// Appends the table's colliders (materials ball_cloth and ball_cushion) and pockets to the model.
+// Appends the table's colliders and pockets to the model: the bed (ball_cloth), the cushions and jaws (ball_cushion)
+// and, last, each pocket's back (ball_pocket, added to the materials unless the model has it; docs/model.md#pockets).
 void add_table(Model& model, const TableSpec& spec);
 
 }  // namespace shotlab
