@@ -25,7 +25,7 @@ struct SweepOptions {
   std::optional<double> duration;
   double timeout = 60;     // s of wall time per run
   size_t max_events = 100'000;
-  std::string out;         // empty: standard output
+  std::string out;         // empty or "-": standard output
   bool quiet = false;
 };
 
@@ -41,7 +41,8 @@ int sweep(const SweepOptions& o) {
   if (!(o.timeout > 0)) throw InputError("--timeout: must be a number of seconds above 0");
   SweepSettings settings{o.overrides, o.duration, {o.timeout, o.max_events, {}}};
   const Sweep sweep(read_scene_file(o.scene), o.scene, plan_sweep(axes, o.samples, o.seed), settings);
-  std::unique_ptr<AtomicFile> file = o.out.empty() ? nullptr : std::make_unique<AtomicFile>(o.out);
+  const bool to_stdout = o.out.empty() || o.out == "-";
+  std::unique_ptr<AtomicFile> file = to_stdout ? nullptr : std::make_unique<AtomicFile>(o.out);
   auto write = [&](const std::string& text) {
     if (file) file->write(text);
     else std::cout << text << std::flush;
@@ -57,7 +58,7 @@ int sweep(const SweepOptions& o) {
   sweep.run(0, sweep.size(), o.jobs, on_row, progress_bar(!o.quiet), &interrupted);
   std::signal(SIGINT, previous);
   if (interrupted) {
-    std::cerr << "\nshotlab: sweep interrupted; " << (o.out.empty() ? "the rows so far are above" : o.out + " left as it was") << "\n";
+    std::cerr << "\nshotlab: sweep interrupted; " << (to_stdout ? "the rows so far are above" : o.out + " left as it was") << "\n";
     return 130;
   }
   if (file) file->commit();
@@ -84,7 +85,7 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--duration", o->duration, "Simulated time per run in seconds (default: the scene's); runs stop at rest");
   cmd->add_option("--timeout", o->timeout, "Wall seconds one run may take before it is cut (its row says so); default 60");
   cmd->add_option("--max-events", o->max_events, "Events one run may record before it is cut; default 100000");
-  cmd->add_option("--out", o->out, "Write the rows to this CSV file (default: standard output)");
+  cmd->add_option("--out", o->out, "Write the rows to this CSV file (default, or -: standard output)");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress bar, no summary");
   cmd->callback([o] {
     int code = 1;

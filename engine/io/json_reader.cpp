@@ -1,6 +1,9 @@
 #include "shotlab/io/json_reader.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <vector>
 
 namespace shotlab {
 
@@ -19,13 +22,42 @@ std::string describe(const nlohmann::json& v) {
   }
 }
 
+namespace {
+
+// Whether two field names are at most two single-letter edits apart (insert, delete, replace, swap neighbours;
+// ignoring case): a misspelling worth pointing out.
+bool near_miss(const std::string& a, const std::string& b) {
+  constexpr size_t kEdits = 2;
+  if (a == b || (a.size() > b.size() ? a.size() - b.size() : b.size() - a.size()) > kEdits) return false;
+  auto same = [](char x, char y) {
+    return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+  };
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (size_t i = 1; i <= a.size(); ++i)
+    for (size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + !same(a[i - 1], b[j - 1])});
+      if (i > 1 && j > 1 && same(a[i - 1], b[j - 2]) && same(a[i - 2], b[j - 1]))
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()] <= kEdits;
+}
+
+}  // namespace
+
 JsonNode::JsonNode(const nlohmann::json& j, std::string source, std::string path)
     : j_(&j), source_(std::move(source)), path_(std::move(path)), used_(std::make_shared<std::set<std::string>>()) {}
 
 void JsonNode::finish() const {
   if (!j_->is_object()) return;
   for (const auto& item : j_->items())
-    if (!used_->count(item.key())) JsonNode(item.value(), source_, child_path(item.key())).fail("unknown field");
+    if (!used_->count(item.key())) {
+      std::string hint;
+      for (const std::string& known : *used_)
+        if (hint.empty() && near_miss(item.key(), known)) hint = " (did you mean '" + known + "'?)";
+      JsonNode(item.value(), source_, child_path(item.key())).fail("unknown field" + hint);
+    }
 }
 
 std::string JsonNode::child_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
@@ -40,7 +72,13 @@ JsonNode JsonNode::operator[](const std::string& key) const {
   if (!j_->is_object()) fail("must be an object");
   used_->insert(key);
   const auto it = j_->find(key);
-  if (it == j_->end()) JsonNode(*j_, source_, child_path(key)).fail("missing required field");
+  if (it == j_->end()) {
+    std::string hint;
+    for (const auto& item : j_->items())
+      if (hint.empty() && !used_->count(item.key()) && near_miss(item.key(), key))
+        hint = " (is '" + item.key() + "' a misspelling of it?)";
+    JsonNode(*j_, source_, child_path(key)).fail("missing required field" + hint);
+  }
   return JsonNode(*it, source_, child_path(key));
 }
 

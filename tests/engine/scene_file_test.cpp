@@ -83,6 +83,10 @@ TEST(SceneFile, BadInputNamesFileFieldAndProblem) {
        "finite"},
       {"short_vector.json", R"({"balls": [{"id": "a", "position": [0, 1]}]})", "balls[0].position", "3 numbers"},
       {"missing.json", R"({"balls": [{"position": [0, 1, 0]}]})", "balls[0].id", "missing required field"},
+      {"misspelt.json", R"({"balls": [{"id": "a", "positon": [0, 1, 0]}]})", "balls[0].position",
+       "missing required field (is 'positon' a misspelling of it?)"},
+      {"misspelt_optional.json", R"({"balls": [{"id": "a", "position": [0, 1, 0], "Mass": 0.2}]})", "balls[0].Mass",
+       "unknown field (did you mean 'mass'?)"},
       {"rod.json", R"({"balls": [)" + kBall + R"(], "rods": [{"ball": "zz", "anchor": [0, 1, 0]}]})", "rods[0].ball",
        "no ball with id 'zz'"},
       {"wall_up.json", R"({"colliders": [)" + arc_wall(R"("toward": [0, 1, 0])") + "]}", "colliders[0].toward",
@@ -195,6 +199,20 @@ TEST(Cli, BadSceneGivesMessageAndNonZeroExit) {
   EXPECT_NE(err.find(path + ": balls[0].mass: must be positive"), std::string::npos) << err;
   EXPECT_EQ(run_cli("run " + preset("sliding_to_rolling.json") + " --set integrator.method=magic", err), 1);
   EXPECT_NE(err.find("integrator.method"), std::string::npos) << err;
+}
+
+// `sweep --out -` writes the rows to standard output, as a missing --out does, not to a file named "-".
+TEST(Cli, SweepOutDashIsStandardOutput) {
+  const fs::path dir = test_dir() / "dash";
+  fs::create_directories(dir);
+  const std::string command = "cd " + dir.string() + " && " + SHOTLAB_BIN + " sweep " + preset("cut.json") +
+                              " --vary cue.speed=1,2 -q --out - > rows.csv 2> err.txt";
+  ASSERT_EQ(WEXITSTATUS(std::system(command.c_str())), 0);
+  std::ifstream rows(dir / "rows.csv");
+  int lines = 0;
+  for (std::string line; std::getline(rows, line);) lines += !line.empty();
+  EXPECT_EQ(lines, 3);  // the header and two runs
+  EXPECT_FALSE(fs::exists(dir / "-"));
 }
 
 // model.path sets every solver switch at once; a switch given beside it overrides it, wherever it stands.
