@@ -20,10 +20,18 @@ using namespace shotlab;
 
 namespace {
 
-// A scene's JSON text and the name its messages use, from a path, JSON text (starting with '{') or a dict.
+// A scene's JSON text and the name its messages use, from a path (str or os.PathLike), JSON text (starting with '{')
+// or a dict; anything else is a TypeError.
 std::pair<std::string, std::string> scene_text(const py::object& scene) {
   if (py::isinstance<py::dict>(scene))
     return {py::module_::import("json").attr("dumps")(scene).cast<std::string>(), "scene"};
+  if (py::hasattr(scene, "__fspath__")) {  // a pathlib.Path
+    const std::string path = py::str(py::module_::import("os").attr("fspath")(scene)).cast<std::string>();
+    return {read_scene_file(path), path};
+  }
+  if (py::isinstance<py::bytes>(scene) || !py::isinstance<py::str>(scene))
+    throw py::type_error("scene: a path, JSON text or a dict, got " +
+                         py::str(py::type::of(scene).attr("__name__")).cast<std::string>());
   const std::string text = scene.cast<std::string>();
   const size_t first = text.find_first_not_of(" \t\r\n");
   if (first != std::string::npos && text[first] == '{') return {text, "scene JSON"};

@@ -20,10 +20,19 @@ def _value(text):
     return text
 
 
+# Columns that hold names or messages (docs/sweep.md): text even where they read as a number (a ball called "1").
+_TEXT = {"status", "reason", "pocketed", "first_contact", "first_ball"}
+
+
+def _is_text(name):
+    return name in _TEXT or name.endswith(".motion")
+
+
 def rows(header, lines):
-    """The sweep's CSV lines as dicts keyed by the header's columns (numbers as int or float)."""
+    """The sweep's CSV lines as dicts keyed by the header's columns (numbers as int or float; names and messages as
+    text)."""
     names = next(csv.reader([header]))
-    return [dict(zip(names, map(_value, fields))) for fields in csv.reader(lines)]
+    return [{n: f if _is_text(n) else _value(f) for n, f in zip(names, fields)} for fields in csv.reader(lines)]
 
 
 def write_csv(path, header, lines):

@@ -72,6 +72,15 @@ def test_errors_are_exceptions_that_name_the_field():
         shotlab.run("/nonexistent/scene.json")
 
 
+def test_a_scene_is_a_path_text_or_a_dict_and_nothing_else():
+    import pathlib
+    cut = os.path.join(SOURCE, "presets", "cut.json")
+    assert list(shotlab.Simulation(pathlib.Path(cut)).ids) == ["cue", "1"]
+    for wrong in (None, 3, b"{}"):
+        with pytest.raises(TypeError, match="scene: a path, JSON text or a dict, got " + type(wrong).__name__):
+            shotlab.Simulation(wrong)
+
+
 def test_the_rigid_model_is_a_switch_away():
     # A developer sweeping cut shots picks the rigid model for speed and checks where it lands against the soft one.
     scene = os.path.join(SOURCE, "presets", "cut.json")

@@ -37,6 +37,14 @@ def test_a_grid_of_cloth_frictions_follows_r1():
         assert r["cue.motion"] == "rolling"
 
 
+def test_ball_names_stay_text():
+    """The cut's object ball is called "1": the columns naming it hold the text "1", the numbers stay numbers."""
+    (row,) = shotlab.sweep(CUT, ["cue.speed=2"])
+    assert row["first_ball"] == "1" and row["first_contact"] == "1"
+    assert row["pocketed"] == "1@pocket-right-front"
+    assert row["cue.speed"] == 2 and isinstance(row["steps"], int) and isinstance(row["1.x"], float)
+
+
 def test_rows_do_not_depend_on_the_number_of_threads():
     vary = ["cue.speed=1:4:4", "cue.aim_deg=-76,-75,-74"]
     one, two = (shotlab.sweep(CUT, vary, jobs=j) for j in (1, 2))
@@ -44,7 +52,7 @@ def test_rows_do_not_depend_on_the_number_of_threads():
     assert without_wall(one) == without_wall(two)
     assert [r["cue.speed"] for r in one[:4]] == [1, 1, 1, 2]  # the first --vary varies slowest
     pots = [r for r in one if r["cue.speed"] == 2 and r["cue.aim_deg"] == -75]
-    assert pots[0]["pocketed"] == "1@pocket-right-front" and pots[0]["first_ball"] == 1
+    assert pots[0]["pocketed"] == "1@pocket-right-front" and pots[0]["first_ball"] == "1"
 
 
 def test_the_command_writes_the_same_rows():
