@@ -72,12 +72,13 @@ std::string bed_and_rails_problem(const Model& model, const State& state, int be
   return "";
 }
 
-// A pocket's back (an arc wall around a pocket's hole, its inner face no nearer the axis than the rim): a ball meets
-// it only at or over the hole's edge, where the rigid model pockets it.
-bool pocket_back(const Model& model, const Shape& shape) {
-  const auto* wall = std::get_if<ArcWall>(&shape);
+// A pocket's own back as add_table builds it (named after its pocket, an arc wall standing on the hole's rim and
+// leaving the mouth open): a ball on the bed meets it only over the hole, where the rigid model has pocketed it.
+bool pocket_back(const Model& model, const Collider& c) {
+  const auto* wall = std::get_if<ArcWall>(&c.shape);
   return wall && std::any_of(model.pockets.begin(), model.pockets.end(), [&](const Pocket& p) {
-           return glm::length(horizontal(p.center - wall->center)) < 1e-9 && wall->radius >= p.radius - 1e-12;
+           return c.name == p.name + "-back" && glm::length(horizontal(p.center - wall->center)) < 1e-9 &&
+                  std::abs(wall->radius - p.radius) < 1e-9;
          });
 }
 
@@ -92,7 +93,7 @@ std::string rigid_unsupported(const Model& model, const State& state) {
   if (!shape) return "it has no flat, level bed for the balls to move on";
   const ContactMaterial& cloth = model.material(model.colliders[bed].material);
   for (size_t c = 0; c < model.colliders.size(); ++c) {
-    if (static_cast<int>(c) == bed || pocket_back(model, model.colliders[c].shape)) continue;
+    if (static_cast<int>(c) == bed || pocket_back(model, model.colliders[c])) continue;
     const auto* cap = std::get_if<Capsule>(&model.colliders[c].shape);
     if (!cap || cap->a.y != cap->b.y)
       return "collider '" + model.colliders[c].name +

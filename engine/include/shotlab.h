@@ -79,9 +79,9 @@ SHOTLAB_API shotlab_status shotlab_balls(const shotlab_sim* sim, double* positio
  * the capacity, nothing is taken (call again with room for *count). */
 SHOTLAB_API shotlab_status shotlab_events(shotlab_sim* sim, shotlab_event* events, int capacity, int* count);
 
-/* Sets a field of a material pair ("ball_ball", "ball_cloth", "ball_cushion" or a scene's own) as the scene file
- * names it: stiffness, damping, exponent, friction, rolling_resistance, spin_friction, restitution, ... The
- * simulation goes on from its current state with the new model. */
+/* Sets a field of a material pair ("ball_ball", "ball_cloth", "ball_cushion", a pocketed table's "ball_pocket" or a
+ * scene's own) as the scene file names it: stiffness, damping, exponent, friction, rolling_resistance, spin_friction,
+ * restitution, ... The simulation goes on from its current state with the new model. */
 SHOTLAB_API shotlab_status shotlab_set_material(shotlab_sim* sim, const char* pair, const char* field, double value);
 /* Strikes the ball `ball` (its id) with the cue: speed (m/s of the cue), aim (rad, 0 = +x, pi/2 = -z), tip offsets
  * side and height (ball radii), elevation (rad); the rigid-cue model with squirt (docs/model.md#cue). */

@@ -81,8 +81,9 @@ ArcWall read_arc_wall(const JsonNode& n) {
   Vec3 toward = n["toward"].vec3();
   toward.y = 0;
   if (glm::length(toward) == 0) n["toward"].fail("must have a horizontal part (x or z not zero)");
-  const double half = n["half_angle_deg"].angle_degrees();
-  if (!(half > 0 && half <= std::numbers::pi)) n["half_angle_deg"].fail("must be more than 0 and at most 180");
+  const double half_deg = n["half_angle_deg"].number();
+  if (!(half_deg > 0 && half_deg <= 180)) n["half_angle_deg"].fail("must be more than 0 and at most 180");
+  const double half = half_deg * std::numbers::pi / 180;
   const double bottom = n["bottom"].number(), top = n["top"].number();
   if (!(top > bottom)) n["top"].fail("must be above bottom");
   return ArcWall{n["center"].vec3(), n["radius"].positive(), n["thickness"].positive(), glm::normalize(toward),

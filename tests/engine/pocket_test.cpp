@@ -1,6 +1,7 @@
 // Pockets (docs/model.md#pockets): a firm pot stays down, the back of the pocket stops it, and the back stands where no
 // ball coming through the mouth along the bed can touch it before it is over the hole.
 #include <cmath>
+#include <random>
 
 #include "engine/contacts.hpp"
 #include "shotlab/restitution.hpp"
@@ -29,7 +30,7 @@ TEST(Pocket, AFirmCutStaysDown) {
         << "cue speed " << speed << " m/s";
 }
 
-// A ball rolled along the front rail into the corner pocket, 4 mm off the cushion: it crosses the hole off its axis
+// A ball rolled along the front rail into the corner pocket, 1 mm off the cushion: it crosses the hole off its axis
 // and meets the back's side, which used to be the bare rim (the ball went off the table at 1.5 m/s already).
 TEST(Pocket, ABallRunDownTheRailStaysDown) {
   for (double v : {1.5, 3.0, 4.0}) {
@@ -80,6 +81,49 @@ TEST(Pocket, TheBackStandsClearOfTheMouth) {
   }
 }
 
+// The step cap against a pocket's back (contacts.cpp, arc_wall_closing_time) is a lower bound on when a ball comes
+// contact_margin into it: a lone wall, balls started inside the cylinder within it and outside the one around it, at up
+// to 5 m/s in any direction, over horizons from 0.1 ms to 0.25 s, pushed at the full acceleration bound straight away
+// from the axis (from inside) or towards it (from outside), their paths sampled at 400 points up to the cap.
+TEST(Pocket, TheCapNeverPassesTheBack) {
+  const nlohmann::json wall_json = {{"type", "arc_wall"}, {"center", {0, 0, 0}}, {"radius", 0.065},
+                                    {"thickness", 0.02}, {"toward", {1, 0, 0}}, {"half_angle_deg", 115},
+                                    {"bottom", -0.09}, {"top", 0.05}};
+  Prepared p = prepare(scene({{"colliders", {wall_json}}, {"balls", {{{"id", "a"}, {"position", {0, kR, 0}}}}}}));
+  const ModelIndex index(p.model);
+  State& state = p.state;
+  state.rolling_on.assign(1, -1), state.sliding_on.assign(1, -1);
+  const ArcWall& wall = std::get<ArcWall>(p.model.colliders[0].shape);
+  const double margin = p.model.options.contact_margin, a = 2 * kG;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), one(0.0, 1.0);
+  int inside = 0, outside = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const bool in = trial % 2 == 0;
+    const double angle = M_PI * unit(rng);
+    const double rho = in ? 0.999 * (wall.radius - kR) * std::sqrt(one(rng))
+                          : wall.radius + wall.thickness + kR + 1e-4 + 0.1 * one(rng);
+    const Vec3 e{std::cos(angle), 0.0, std::sin(angle)};
+    const Vec3 p0 = rho * e + Vec3{0.0, 0.05 * unit(rng), 0.0};
+    const Vec3 v0 = 5.0 * one(rng) * glm::normalize(Vec3{unit(rng), unit(rng), unit(rng)} + Vec3{1e-9});
+    const double horizon = std::pow(10.0, -4 + 3.4 * one(rng));
+    const Vec3 push = (in ? a : -a) * e;
+    if (const auto pen = penetration(wall, p0, kR); pen && pen->depth > -margin) continue;
+    set_position(state.x, 0, p0);
+    set_velocity(state.x, 0, v0);
+    const double cap = std::min(horizon, collider_contact_time(p.model, index, state, state.x.data(), 0, horizon, a));
+    ++(in ? inside : outside);
+    for (int k = 1; k <= 400; ++k) {
+      const double t = cap * k / 400;
+      const auto pen = penetration(wall, p0 + v0 * t + 0.5 * t * t * push, kR);
+      ASSERT_TRUE(!pen || pen->depth < margin) << "trial " << trial << (in ? " (inside)" : " (outside)") << ": "
+                                                << pen->depth << " m in at t = " << t << " s, before the cap " << cap;
+    }
+  }
+  EXPECT_GT(inside, 9000);
+  EXPECT_GT(outside, 9000);
+}
+
 // The back's lining: restitution 0.3 for a pool ball at 1 m/s (material.cpp says so and gives the damping for it).
 TEST(Pocket, TheLiningGivesBackAThird) {
   EXPECT_NEAR(restitution_at(default_ball_pocket(), kM, 1.0), 0.3, 1e-4);
@@ -87,17 +131,25 @@ TEST(Pocket, TheLiningGivesBackAThird) {
 }
 
 // The rigid model pockets a ball as its centre crosses the rim, before the back could touch it: it runs pool tables,
-// backs and all, and says so for no other wall.
+// backs and all, and refuses any other wall, also one centred on a pocket that reaches out over the table.
 TEST(Pocket, TheRigidModelLeavesTheBackOut) {
   Scene s = load_scene(preset("cut.json"));
   s.model.options.contact = ContactModel::Rigid;
   EXPECT_EQ(pocket_of(s, "1"), "pocket-right-front");
-  s.model.colliders.push_back({"wall", ArcWall{{0, 0, 0}, 0.2, 0.02, {1, 0, 0}, 1.0, -0.1, 0.1}, kBallCushion});
-  try {
-    simulate(s);
-    ADD_FAILURE() << "a wall out on the table must be refused";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("collider 'wall'"), std::string::npos) << e.what();
+  const Prepared p = prepare(s);
+  const Pocket& pocket = p.model.pockets.front();
+  for (const Collider& wall : {Collider{"wall", ArcWall{{0, 0, 0}, 0.2, 0.02, {1, 0, 0}, 1.0, -0.1, 0.1}, kBallCushion},
+                               Collider{"wall", ArcWall{pocket.center, 1.0, 0.02, {1, 0, 0}, 0.6, -0.1, 0.1}, kBallCushion},
+                               Collider{pocket.name + "-back", ArcWall{pocket.center, 1.0, 0.02, {1, 0, 0}, 0.6, -0.1, 0.1},
+                                        kBallCushion}}) {
+    Scene with = s;
+    with.model.colliders.push_back(wall);
+    try {
+      simulate(with);
+      ADD_FAILURE() << "a wall out on the table must be refused";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("collider '" + wall.name + "'"), std::string::npos) << e.what();
+    }
   }
 }
 

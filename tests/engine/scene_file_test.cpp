@@ -93,6 +93,8 @@ TEST(SceneFile, BadInputNamesFileFieldAndProblem) {
        "horizontal part"},
       {"wall_angle.json", R"({"colliders": [)" + arc_wall(R"("half_angle_deg": 0)") + "]}",
        "colliders[0].half_angle_deg", "more than 0"},
+      {"wall_wide.json", R"({"colliders": [)" + arc_wall(R"("half_angle_deg": 400)") + "]}",
+       "colliders[0].half_angle_deg", "at most 180"},
       {"wall_top.json", R"({"colliders": [)" + arc_wall(R"("top": -0.2)") + "]}", "colliders[0].top", "above bottom"},
   };
   for (const BadInput& c : cases) {
