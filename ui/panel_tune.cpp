@@ -1,5 +1,5 @@
 // The Tuning tab (developers): what changed from the scene file (with a reset and the A/B overlay), every contact
-// parameter of the three material pairs with an elasticity control, what one collision does at a chosen impact speed
+// parameter of the material pairs (the pockets' lining too, on a table with pockets) with an elasticity control, what one collision does at a chosen impact speed
 // (measured by probe_collision on a worker thread, with its force-time curve), the world and integrator, pause on
 // events, integrator diagnostics and the per-contact inspector. Any change re-simulates the current shot.
 #include <imgui.h>
@@ -17,7 +17,10 @@ namespace shotlab {
 
 namespace {
 
-const char* const kPairs[3] = {"ball_ball", "ball_cloth", "ball_cushion"};
+const char* const kPairs[kTunedPairs] = {"ball_ball", "ball_cloth", "ball_cushion", "ball_pocket"};
+
+// Whether the scene has pair k (a table without pockets has no ball_pocket).
+bool has_pair(const Lab& lab, int k) { return lab.scene.model.materials.count(kPairs[k]) > 0; }
 
 bool same(const ContactMaterial& a, const ContactMaterial& b) {
   return a.stiffness == b.stiffness && a.damping == b.damping && a.exponent == b.exponent &&
@@ -35,15 +38,19 @@ BallSpec probe_ball(const Lab& lab) {
 void update_probes(const Lab& lab, Tuning& t) {
   if (ready(t.probe_job)) t.probes = t.probe_job.get();
   bool stale = t.probes.speed != lab.settings.impact_speed;
-  for (int k = 0; k < 3; ++k) stale |= !same(t.probes.material[k], lab.scene.model.material(kPairs[k]));
+  for (int k = 0; k < kTunedPairs; ++k)
+    stale |= has_pair(lab, k) && !same(t.probes.material[k], lab.scene.model.material(kPairs[k]));
   if (!stale || t.probe_job.valid()) return;
   ProbeReadouts next;
   next.speed = lab.settings.impact_speed;
   next.integrator = lab.scene.model.integrator;
   next.integrator.max_steps_per_call = 200000;
-  for (int k = 0; k < 3; ++k) next.material[k] = lab.scene.model.material(kPairs[k]);
-  t.probe_job = std::async(std::launch::async, [next, ball = probe_ball(lab)]() mutable {
-    for (int k = 0; k < 3; ++k) try {
+  bool present[kTunedPairs];
+  for (int k = 0; k < kTunedPairs; ++k)
+    if ((present[k] = has_pair(lab, k))) next.material[k] = lab.scene.model.material(kPairs[k]);
+  t.probe_job = std::async(std::launch::async, [next, present, ball = probe_ball(lab)]() mutable {
+    for (int k = 0; k < kTunedPairs; ++k) try {
+        if (!present[k]) continue;
         next.result[k] = probe_collision(next.material[k], ball.mass, ball.radius, next.speed, k == 0, next.integrator);
         next.valid[k] = std::isfinite(next.result[k].restitution);
       } catch (const std::exception&) {
@@ -270,9 +277,12 @@ void tune_panel(Lab& lab, Tuning& tuning) {
   const Fields f({"probe impact speed"});
   f.label("probe impact speed");
   slider("##probe speed", lab.settings.impact_speed, 0.01, 20.0, "%.2f m/s", true);
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < kTunedPairs; ++k) {
+    if (!has_pair(lab, k)) continue;
     ImGui::PushID(k);
-    if (ImGui::CollapsingHeader(kPairs[k], k == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
+    const bool open = ImGui::CollapsingHeader(kPairs[k], k == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+    mark(kPairs[k]);
+    if (open) {
       changed |= material_editor(lab, tuning, k);
       probe_readout(lab, tuning, k);
     }

@@ -17,17 +17,20 @@ namespace shotlab {
 
 // The tuning panel's collision probes and the elasticity control's solver, run on a worker thread whenever their
 // inputs change: a probe at an absurd stiffness can take a while and must not stall the window.
+// The material pairs the Tuning tab edits: ball_ball, ball_cloth, ball_cushion and, on a table with pockets,
+// ball_pocket (panel_tune.cpp names them).
+inline constexpr int kTunedPairs = 4;
 struct ProbeReadouts {
-  ContactMaterial material[3];
+  ContactMaterial material[kTunedPairs];
   double speed = -1;
   IntegratorOptions integrator;
-  CollisionProbe result[3];
-  bool valid[3] = {false, false, false};
+  CollisionProbe result[kTunedPairs];
+  bool valid[kTunedPairs] = {};
 };
 struct Tuning {
   ProbeReadouts probes;
   std::future<ProbeReadouts> probe_job;
-  double restitution[3] = {-1, -1, -1};  // the elasticity control's wanted e per pair, < 0: not set
+  double restitution[kTunedPairs] = {-1, -1, -1, -1};  // the elasticity control's wanted e per pair, < 0: not set
   std::future<std::pair<int, double>> damping_job;  // pair index and the damping that gives the wanted e
   bool busy() const;
 };

@@ -182,7 +182,11 @@ class App:
 
     def click_widget(self, state, name, fx=0.5, fy=0.5, mods=()):
         r = self.widget(state, name)
-        self.click(r["x"] + r["w"] * fx, r["y"] + r["h"] * fy, mods=mods)
+        x, y = r["x"] + r["w"] * fx, r["y"] + r["h"] * fy
+        w, h = state["window"]
+        if not check(0 <= x < w and 0 <= y < h, f"the widget '{name}' can be clicked: ({x:.0f}, {y:.0f}) in {w}x{h}"):
+            raise RuntimeError(f"widget {name} is outside the window")
+        self.click(x, y, mods=mods)
 
     def grab(self):
         """The window's pixels now (xwd), as an Image."""
@@ -498,6 +502,29 @@ def developer(binary, root, display, work):
     s = app.wait(lambda s: s["physics"]["materials"]["ball_ball"]["friction_law"] == "constant", 30,
                  "the constant law is chosen from the combo")
     check(any("friction_law" in c for c in s["physics"]["changes"]), "the law's change is listed")
+    check("ball_pocket" not in s["widgets"], "no pockets' lining on the cradle, which has no table")
+    app.close()
+    # A table with pockets: the pockets' lining is tuned like any pair, its probe reads back its restitution.
+    app = App(binary, display, work, os.path.join(root, "presets", "cut.json"))
+    s = app.state()
+    app.click_widget(s, "tab Tuning")
+    s = app.state()
+    if check("ball_pocket" in s["widgets"], "the cut's Tuning tab lists the pockets' lining"):
+        app.click_widget(s, "ball_pocket")
+        s = app.wait(lambda s: "restitution ball_pocket" in s["readouts"], 30, "the lining's probe is shown")
+        e = s["readouts"]["restitution ball_pocket"]
+        check(0.25 < e < 0.45, f"the lining gives back {e:.3f} of a head-on hit")
+        before = s["readouts"]["contact_time ball_pocket"]
+        header = app.widget(s, "ball_pocket")
+        app.scroll(header["x"] + 100, header["y"] - 100, 10)  # the lining's section is the last one: bring it up
+        s = app.state()
+        app.click_widget(s, "stiffness ball_pocket", mods=("ctrl",))
+        app.key("ctrl+a")
+        app.type("3e8")
+        app.key("Return")
+        s = app.wait(lambda s: s["readouts"].get("contact_time ball_pocket", before) != before, 30,
+                     "the lining's contact time follows its stiffness")
+        check(abs(s["physics"]["materials"]["ball_pocket"]["stiffness"] - 3e8) < 1, "the lining's stiffness is set")
     app.close()
 
 
