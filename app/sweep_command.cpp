@@ -58,7 +58,8 @@ int sweep(const SweepOptions& o) {
   sweep.run(0, sweep.size(), o.jobs, on_row, progress_bar(!o.quiet), &interrupted);
   std::signal(SIGINT, previous);
   if (interrupted) {
-    std::cerr << "\nshotlab: sweep interrupted; " << (to_stdout ? "the rows so far are above" : o.out + " left as it was") << "\n";
+    const std::string rows = to_stdout ? "the rows so far are above" : o.out + " left as it was";
+    std::cerr << "\nshotlab: sweep interrupted; " << rows << "\n";
     return 130;
   }
   if (file) file->commit();

@@ -1,7 +1,8 @@
 // The Tuning tab (developers): what changed from the scene file (with a reset and the A/B overlay), every contact
-// parameter of the material pairs (the pockets' lining too, on a table with pockets) with an elasticity control, what one collision does at a chosen impact speed
-// (measured by probe_collision on a worker thread, with its force-time curve), the world and integrator, pause on
-// events, integrator diagnostics and the per-contact inspector. Any change re-simulates the current shot.
+// parameter of the material pairs (the pockets' lining too, on a table with pockets) with an elasticity control, what
+// one collision does at a chosen impact speed (measured by probe_collision on a worker thread, with its force-time
+// curve), the world and integrator, pause on events, integrator diagnostics and the per-contact inspector. Any change
+// re-simulates the current shot.
 #include <imgui.h>
 
 #include <algorithm>

@@ -247,7 +247,8 @@ Scene parse_scene(const json& doc, const std::string& source) {
       read_material(m[item.key()], s.model.materials[item.key()]);
       const ContactMaterial& read = s.model.materials[item.key()];
       if (!known && read.stiffness == 0)
-        m[item.key()].fail("a new material needs a stiffness (the standard ones are ball_ball, ball_cloth, ball_cushion; a table with pockets adds ball_pocket)");
+        m[item.key()].fail("a new material needs a stiffness (the standard ones are ball_ball, ball_cloth, "
+                           "ball_cushion; a table with pockets adds ball_pocket)");
       if (item.key() != kBallBall && read.friction_law == FrictionLaw::SpeedDependent)
         m[item.key()]["friction_law"].fail("speed_dependent is for ball_ball only (the bed's closed forms assume a constant coefficient)");
     }

@@ -110,8 +110,8 @@ TEST(Colliders, ArcWallBounds) {
 }
 
 // The depth is r less the distance to the nearest point of the wall's surface, found by brute force over its six
-// faces sampled every 0.25 mm and 0.25 degrees across (exactly up and down the tall ones), for points all around it: in the hole, behind, above, below, past the
-// ends, in the open arc.
+// faces sampled every 0.25 mm and 0.25 degrees across (exactly up and down the tall ones), for points all around it:
+// in the hole, behind, above, below, past the ends, in the open arc.
 TEST(Colliders, ArcWallDepthIsTheDistanceToItsSurface) {
   std::vector<Vec3> surface;
   const double ri = kWall.radius, ro = ri + kWall.thickness, h = kWall.half_angle, step = 0.00025;

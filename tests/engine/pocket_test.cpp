@@ -138,10 +138,11 @@ TEST(Pocket, TheRigidModelLeavesTheBackOut) {
   EXPECT_EQ(pocket_of(s, "1"), "pocket-right-front");
   const Prepared p = prepare(s);
   const Pocket& pocket = p.model.pockets.front();
-  for (const Collider& wall : {Collider{"wall", ArcWall{{0, 0, 0}, 0.2, 0.02, {1, 0, 0}, 1.0, -0.1, 0.1}, kBallCushion},
-                               Collider{"wall", ArcWall{pocket.center, 1.0, 0.02, {1, 0, 0}, 0.6, -0.1, 0.1}, kBallCushion},
-                               Collider{pocket.name + "-back", ArcWall{pocket.center, 1.0, 0.02, {1, 0, 0}, 0.6, -0.1, 0.1},
-                                        kBallCushion}}) {
+  const ArcWall out_on_table{{0, 0, 0}, 0.2, 0.02, {1, 0, 0}, 1.0, -0.1, 0.1};
+  const ArcWall over_the_table{pocket.center, 1.0, 0.02, {1, 0, 0}, 0.6, -0.1, 0.1};  // centred on the pocket
+  for (const Collider& wall : {Collider{"wall", out_on_table, kBallCushion},
+                               Collider{"wall", over_the_table, kBallCushion},
+                               Collider{pocket.name + "-back", over_the_table, kBallCushion}}) {
     Scene with = s;
     with.model.colliders.push_back(wall);
     try {
