@@ -60,19 +60,39 @@ double time_in_circle(const Vec3& d, const Vec3& v, double radius) {
   return B > 0 ? -2 * C / (B + q) : (q - B) / (2 * A);
 }
 
+// s: a lower bound on when a ball whose centre is rho < inner (m) from an arc wall's axis (horizontal offset d, velocity
+// v) leaves the cylinder of radius `inner`, its horizontal acceleration at most `across` (m/s^2), within `horizon`.
+// Up to any h the path strays from the straight one by at most across h^2 / 2, so the centre stays within the
+// cylinder shrunk by that much until min(h, the straight path's time in it); the best h is where the two meet, found
+// by bisection on log h from `floor`, a bound already known.
+double time_inside_arc(const Vec3& d, const Vec3& v, double rho, double inner, double across, double horizon,
+                       double floor) {
+  auto leave = [&](double h) {
+    const double radius = inner - 0.5 * across * h * h;
+    return rho < radius ? time_in_circle(d, v, radius) : 0.0;
+  };
+  double best = std::max(floor, leave(horizon));
+  if (best >= horizon || !(best > 0)) return best;
+  for (double lo = best, hi = horizon, k = 0; k < 8; ++k) {
+    const double h = std::sqrt(lo * hi), t = leave(h);
+    best = std::max(best, std::min(h, t));
+    (t >= h ? lo : hi) = h;
+  }
+  return best;
+}
+
 // s: a lower bound on when a ball (as for collider_closing_time) closes `gap` (m) to an arc wall, `margin` of it past
 // touching. D, the distance to the wall, falls at most at |v|. Every point of the wall lies between the cylinders of
 // radius `radius` and `radius + thickness` about its axis: from inside the inner one the ball's centre first has to
-// leave the cylinder of radius `radius - r + margin` (its path bent by at most a h^2 / 2 within the horizon h), from
-// outside the outer one reach that cylinder, widened by r, whose distance is convex.
+// leave the cylinder of radius `radius - r + margin` (time_inside_arc), from outside the outer one reach that
+// cylinder, widened by r, whose distance is convex.
 double arc_wall_closing_time(const ArcWall& wall, const Vec3& p, double r, const Vec3& v, double gap, double margin,
-                             double a, double horizon) {
-  const double anyway = closing_time(gap, glm::length(v), a);
+                             const AccelBound& a, double horizon) {
+  const double anyway = closing_time(gap, glm::length(v), a.total);
   const Vec3 d{p.x - wall.center.x, 0.0, p.z - wall.center.z};
   const double rho = glm::length(d), outside = rho - wall.radius - wall.thickness - r;
-  if (outside > 0) return std::max(anyway, closing_time(margin + outside, -glm::dot(v, d) / rho, a));
-  const double inside = wall.radius - r + margin - 0.5 * a * horizon * horizon;
-  return rho < inside ? std::max(anyway, time_in_circle(d, v, inside)) : anyway;
+  if (outside > 0) return std::max(anyway, closing_time(margin + outside, -glm::dot(v, d) / rho, a.total));
+  return time_inside_arc(d, v, rho, wall.radius - r + margin, a.across, horizon, anyway);
 }
 
 // s: a lower bound on when a ball (centre p, radius r, velocity v, acceleration at most a) closes `gap` (m) to a
@@ -85,9 +105,10 @@ double arc_wall_closing_time(const ArcWall& wall, const Vec3& p, double r, const
 // rim, would approach it in ever smaller steps. An arc wall is not convex (its nearest point may lie behind a ball
 // that crosses towards its far side): arc_wall_closing_time.
 double collider_closing_time(const Shape& shape, const Vec3& p, double r, const Vec3& v, const Penetration& pen,
-                             double gap, double a, double horizon) {
+                             double gap, const AccelBound& bound, double horizon) {
   if (const auto* wall = std::get_if<ArcWall>(&shape))
-    return arc_wall_closing_time(*wall, p, r, v, gap, gap + pen.depth, a, horizon);
+    return arc_wall_closing_time(*wall, p, r, v, gap, gap + pen.depth, bound, horizon);
+  const double a = bound.total;
   const double rate = glm::dot(v, pen.normal);
   const Hole* hole = hole_over(shape, p);
   if (!hole) return closing_time(gap, -rate, a);
@@ -176,7 +197,8 @@ double free_acceleration(const State& state, const ModelIndex& index, int i) {
 }
 
 double collider_contact_time(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
-                             double horizon, double a, StepContacts* step) {
+                             double horizon, AccelBound bound, StepContacts* step) {
+  const double a = bound.total;
   const double margin = model.options.contact_margin;
   const Vec3 p = position(x, i), v = velocity(x, i);
   const double s = glm::length(v);
@@ -186,7 +208,7 @@ double collider_contact_time(const Model& model, const ModelIndex& index, const 
   near_colliders(model, index, p, model.balls[i].radius, travel, [&](int c, const Penetration& pen) {
     if (pen.depth <= 0) {
       const double t = collider_closing_time(model.colliders[c].shape, p, model.balls[i].radius, v, pen, margin - pen.depth,
-                                             a, horizon);
+                                             bound, horizon);
       best = std::min(best, t);
       if (step && pen.depth <= -kTouch && t <= horizon) step->separated.emplace_back(i, -1 - c);
     }
@@ -212,11 +234,11 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
   // harder by third balls may start touching inside a step; the simulation then cuts the step at the onset.
   const double a_free = 2.0 * index.gravity;
   // In flight (the caller moves every ball in closed form) a ball in the full model that no rod holds touches nothing
-  // until the step's first onset, where the step ends: gravity alone accelerates it.
-  auto accel = [&](int i) {
-    const bool flies = flight && state.active(i) && !state.rolling(i) && !state.sliding(i) && index.rods_on[i] == 0;
-    return flies ? index.gravity : free_acceleration(state, index, i);
+  // until the step's first onset, where the step ends: gravity alone accelerates it, and nothing across.
+  auto flies = [&](int i) {
+    return flight && state.active(i) && !state.rolling(i) && !state.sliding(i) && index.rods_on[i] == 0;
   };
+  auto accel = [&](int i) { return flies(i) ? index.gravity : free_acceleration(state, index, i); };
   const double margin = model.options.contact_margin;
   double best = std::numeric_limits<double>::infinity();
   double vmax = 0;
@@ -224,7 +246,8 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
   for (int i = 0; i < n; ++i) {
     if (!state.active(i)) continue;  // a sleeping ball does not move towards anything
     vmax = std::max(vmax, glm::length(velocity(x, i)));
-    best = std::min(best, collider_contact_time(model, index, state, x, i, horizon, accel(i), step));
+    const double a = accel(i);
+    best = std::min(best, collider_contact_time(model, index, state, x, i, horizon, {a, flies(i) ? 0.0 : a}, step));
   }
   // Ball pairs whose x gap is within anything closable within the horizon (a sleeper does not move: only the awake
   // one closes in).

@@ -165,12 +165,20 @@ bool clear_of_contacts(const Model& model, const ModelIndex& index, const State&
 // settling onto the bed).
 double free_acceleration(const State& state, const ModelIndex& index, int i);
 
-// s: a lower bound on the time before ball i, its acceleration at most `a` (m/s^2) outside contacts, could come
+// m/s^2: bounds on a ball's acceleration outside contacts, in all and across (its horizontal part). One number bounds
+// both; a ball flying under gravity alone has none across.
+struct AccelBound {
+  double total, across;
+  AccelBound(double a) : total(a), across(a) {}  // implicit: a plain number bounds both
+  AccelBound(double total, double across) : total(total), across(across) {}
+};
+
+// s: a lower bound on the time before ball i, its acceleration bounded by `a` outside contacts, could come
 // contact_margin into a collider other than the bed it rolls or slides on (as far as a step may take it), or that far
 // over a hole's edge in that bed; +inf when nothing can within `horizon`. With `step`, lists the ball's contacts
 // in step->separated and step->pushing as time_to_possible_contact does (unsorted).
 double collider_contact_time(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
-                             double horizon, double a, StepContacts* step = nullptr);
+                             double horizon, AccelBound a, StepContacts* step = nullptr);
 
 // s: when two balls whose centres are d0 apart (m, d0 = p_i - p_j) and whose relative velocity is v (m/s) come within
 // `reach` (m) of each other on straight paths; +inf when they pass wider than that, 0 when they are that close now.

@@ -89,7 +89,7 @@ TEST(Flight, OnlyForABallThatTouchesNothing) {
 }
 
 // The step cap over a pocket (contacts.cpp, collider_closing_time): a ball whose centre is over the hole, flying under
-// gravity, comes no closer than contact_margin to the bed's rim or any other collider (the jaws, the cushions, the
+// gravity (nothing across), comes no closer than contact_margin to the bed's rim or any other collider (the jaws, the cushions, the
 // pocket's back: arc_wall_closing_time) before the time the cap gives, the path sampled exactly (the projectile's) at
 // 2000 points up to it. Starts within 2 cm of the rim, 5 mm either side of resting height, at up to 3 m/s in any
 // direction, those already touching something left out (most of the ones by the back): what the cap must get right
@@ -125,7 +125,7 @@ TEST(Flight, TheCapOverAPocketNeverPassesTheRim) {
     if (near || !penetration(shape, p0, kR)) continue;
     set_position(state.x, 0, p0);
     set_velocity(state.x, 0, v0);
-    const double cap = collider_contact_time(p.model, index, state, state.x.data(), 0, 0.05, g);
+    const double cap = collider_contact_time(p.model, index, state, state.x.data(), 0, 0.05, {g, 0.0});
     if (!(cap < 0.05)) continue;
     ++capped;
     for (int k = 0; k < 2000; ++k)

@@ -84,7 +84,8 @@ TEST(Pocket, TheBackStandsClearOfTheMouth) {
 // The step cap against a pocket's back (contacts.cpp, arc_wall_closing_time) is a lower bound on when a ball comes
 // contact_margin into it: a lone wall, balls started inside the cylinder within it and outside the one around it, at up
 // to 5 m/s in any direction, over horizons from 0.1 ms to 0.25 s, pushed at the full acceleration bound straight away
-// from the axis (from inside) or towards it (from outside), their paths sampled at 400 points up to the cap.
+// from the axis (from inside) or towards it (from outside), or flying under gravity alone (from inside, the bound
+// having nothing across), their paths sampled at 400 points up to the cap.
 TEST(Pocket, TheCapNeverPassesTheBack) {
   const nlohmann::json wall_json = {{"type", "arc_wall"}, {"center", {0, 0, 0}}, {"radius", 0.065},
                                     {"thickness", 0.02}, {"toward", {1, 0, 0}}, {"half_angle_deg", 115},
@@ -97,9 +98,9 @@ TEST(Pocket, TheCapNeverPassesTheBack) {
   const double margin = p.model.options.contact_margin, a = 2 * kG;
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> unit(-1.0, 1.0), one(0.0, 1.0);
-  int inside = 0, outside = 0;
-  for (int trial = 0; trial < 20000; ++trial) {
-    const bool in = trial % 2 == 0;
+  int inside = 0, outside = 0, flying = 0;
+  for (int trial = 0; trial < 30000; ++trial) {
+    const bool in = trial % 3 != 1, flies = trial % 3 == 2;
     const double angle = M_PI * unit(rng);
     const double rho = in ? 0.999 * (wall.radius - kR) * std::sqrt(one(rng))
                           : wall.radius + wall.thickness + kR + 1e-4 + 0.1 * one(rng);
@@ -107,21 +108,48 @@ TEST(Pocket, TheCapNeverPassesTheBack) {
     const Vec3 p0 = rho * e + Vec3{0.0, 0.05 * unit(rng), 0.0};
     const Vec3 v0 = 5.0 * one(rng) * glm::normalize(Vec3{unit(rng), unit(rng), unit(rng)} + Vec3{1e-9});
     const double horizon = std::pow(10.0, -4 + 3.4 * one(rng));
-    const Vec3 push = (in ? a : -a) * e;
+    const Vec3 push = flies ? Vec3{0.0, -kG, 0.0} : (in ? a : -a) * e;
+    const AccelBound bound = flies ? AccelBound{kG, 0.0} : AccelBound{a};
     if (const auto pen = penetration(wall, p0, kR); pen && pen->depth > -margin) continue;
     set_position(state.x, 0, p0);
     set_velocity(state.x, 0, v0);
-    const double cap = std::min(horizon, collider_contact_time(p.model, index, state, state.x.data(), 0, horizon, a));
-    ++(in ? inside : outside);
+    const double cap = std::min(horizon, collider_contact_time(p.model, index, state, state.x.data(), 0, horizon, bound));
+    ++(flies ? flying : in ? inside : outside);
+    // A flying ball's cap is exact: at the cap itself it may be contact_margin in, to rounding.
     for (int k = 1; k <= 400; ++k) {
       const double t = cap * k / 400;
       const auto pen = penetration(wall, p0 + v0 * t + 0.5 * t * t * push, kR);
-      ASSERT_TRUE(!pen || pen->depth < margin) << "trial " << trial << (in ? " (inside)" : " (outside)") << ": "
-                                                << pen->depth << " m in at t = " << t << " s, before the cap " << cap;
+      ASSERT_TRUE(!pen || pen->depth < margin + 1e-15)
+          << "trial " << trial << (flies ? " (flying)" : in ? " (inside)" : " (outside)") << ": " << pen->depth
+          << " m in at t = " << t << " s, before the cap " << cap;
     }
   }
   EXPECT_GT(inside, 9000);
   EXPECT_GT(outside, 9000);
+  EXPECT_GT(flying, 9000);
+}
+
+// The cap is also no shorter than it needs to be inside the back, where a ball leaving it used to fly off in ever
+// growing steps and close on its far side in ever smaller ones (24 steps in the cut): a ball flying across the axis at
+// 1 m/s is capped where its straight path leaves the cylinder, and one moving along the wall 5 mm inside it, pushed
+// at 2g across, at more than twice the time in which it could close those 5 mm at its speed.
+TEST(Pocket, TheCapLetsABallCrossTheHole) {
+  const nlohmann::json wall_json = {{"type", "arc_wall"}, {"center", {0, 0, 0}}, {"radius", 0.065},
+                                    {"thickness", 0.02}, {"toward", {1, 0, 0}}, {"half_angle_deg", 115},
+                                    {"bottom", -0.09}, {"top", 0.05}};
+  Prepared p = prepare(scene({{"colliders", {wall_json}}, {"balls", {{{"id", "a"}, {"position", {0, kR, 0}}}}}}));
+  const ModelIndex index(p.model);
+  State& state = p.state;
+  state.rolling_on.assign(1, -1), state.sliding_on.assign(1, -1);
+  const double inner = 0.065 - kR + p.model.options.contact_margin;
+  auto cap = [&](const Vec3& at, const Vec3& v, const AccelBound& a) {
+    set_position(state.x, 0, at);
+    set_velocity(state.x, 0, v);
+    return collider_contact_time(p.model, index, state, state.x.data(), 0, 0.25, a);
+  };
+  EXPECT_NEAR(cap({0, 0, 0}, {0, -0.5, 1.0}, {kG, 0.0}), inner / 1.0, 1e-12) << "flying across the axis";
+  const double along = cap({inner - 0.005, 0, 0}, {0, 0, 1.0}, 2 * kG);  // toward the back
+  EXPECT_GT(along, 2 * 0.005 / 1.0) << "along the wall";
 }
 
 // The back's lining: restitution 0.3 for a pool ball at 1 m/s (material.cpp says so and gives the damping for it).
