@@ -15,6 +15,7 @@
 #include <memory>
 
 #include "ui/fonts.hpp"
+#include "ui/framing.hpp"
 #include "ui/gl.hpp"
 #include "ui/keys.hpp"
 #include "ui/panels.hpp"
@@ -96,45 +97,6 @@ class Fonts {
   ImGuiStyle base_style_;
   float applied_ = -1;
 };
-
-// Scenes without a table (Newton's cradle) are framed around their balls and rod anchors.
-std::vector<Vec3> framed_points(const Scene& scene) {
-  std::vector<Vec3> points;
-  if (scene.table) {
-    const double rail = scene.table->rail_width;
-    const double hx = scene.table->length / 2 + rail, hz = scene.table->width / 2 + rail;
-    for (double sx : {-1.0, 1.0})
-      for (double sz : {-1.0, 1.0}) points.push_back({sx * hx, 0, sz * hz});
-    return points;
-  }
-  for (const InitialBall& b : scene.balls)
-    for (double s : {-1.0, 1.0}) points.push_back(b.position + Vec3{s * b.spec.radius, 0, 0});
-  for (const Rod& r : scene.model.rods)  // the whole swing: a rod's length either side of its anchor and below it
-    for (const Vec3& d : {Vec3{0, 0, 0}, Vec3{r.length, 0, 0}, Vec3{-r.length, 0, 0}, Vec3{0, -r.length, 0},
-                          Vec3{0, 0, r.length}, Vec3{0, 0, -r.length}})
-      points.push_back(r.anchor + d);
-  return points;
-}
-
-void on_scene_loaded(Camera& camera, const Scene& scene) {
-  camera.reset();
-  if (scene.table) return;
-  camera.yaw = M_PI / 2;
-  camera.pitch = 0.25;
-}
-
-// While the camera auto-fits, what is framed fills the 3D view at its current size.
-void fit_camera(Camera& camera, const Scene& scene, const Rect& view) {
-  if (!camera.auto_fit || view.w < 1 || view.h < 1) return;
-  const std::vector<Vec3> points = framed_points(scene);
-  if (points.empty()) return;
-  if (!scene.table) {
-    Vec3 lo{1e9}, hi{-1e9};
-    for (const Vec3& p : points) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    camera.target = (lo + hi) * 0.5;
-  }
-  camera.distance = camera.fit_distance(points, view.w / view.h);
-}
 
 // In replay the camera can follow the cue ball (players watching where it goes); it keeps its distance and angle.
 void follow_cue_ball(Camera& camera, const Lab& lab) {
