@@ -18,10 +18,11 @@ namespace shotlab {
 
 namespace {
 
-const char* const kPairs[kTunedPairs] = {"ball_ball", "ball_cloth", "ball_cushion", "ball_pocket"};
+// The tuned pairs, named as in model.hpp (by address: no order of initialisation to rely on).
+const std::string* const kPairs[kTunedPairs] = {&kBallBall, &kBallCloth, &kBallCushion, &kBallPocket};
 
 // Whether the scene has pair k (a table without pockets has no ball_pocket).
-bool has_pair(const Lab& lab, int k) { return lab.scene.model.materials.count(kPairs[k]) > 0; }
+bool has_pair(const Lab& lab, int k) { return lab.scene.model.materials.count(*kPairs[k]) > 0; }
 
 bool same(const ContactMaterial& a, const ContactMaterial& b) {
   return a.stiffness == b.stiffness && a.damping == b.damping && a.exponent == b.exponent &&
@@ -40,7 +41,7 @@ void update_probes(const Lab& lab, Tuning& t) {
   if (ready(t.probe_job)) t.probes = t.probe_job.get();
   bool stale = t.probes.speed != lab.settings.impact_speed;
   for (int k = 0; k < kTunedPairs; ++k)
-    stale |= has_pair(lab, k) && !same(t.probes.material[k], lab.scene.model.material(kPairs[k]));
+    stale |= has_pair(lab, k) && !same(t.probes.material[k], lab.scene.model.material(*kPairs[k]));
   if (!stale || t.probe_job.valid()) return;
   ProbeReadouts next;
   next.speed = lab.settings.impact_speed;
@@ -48,7 +49,7 @@ void update_probes(const Lab& lab, Tuning& t) {
   next.integrator.max_steps_per_call = 200000;
   bool present[kTunedPairs];
   for (int k = 0; k < kTunedPairs; ++k)
-    if ((present[k] = has_pair(lab, k))) next.material[k] = lab.scene.model.material(kPairs[k]);
+    if ((present[k] = has_pair(lab, k))) next.material[k] = lab.scene.model.material(*kPairs[k]);
   t.probe_job = std::async(std::launch::async, [next, present, ball = probe_ball(lab)]() mutable {
     for (int k = 0; k < kTunedPairs; ++k) try {
         if (!present[k]) continue;
@@ -66,14 +67,14 @@ bool elasticity(Lab& lab, Tuning& t, int k, ContactMaterial& m) {
   bool changed = false;
   if (ready(t.damping_job)) {
     const auto [pair, damping] = t.damping_job.get();
-    lab.scene.model.materials[kPairs[pair]].damping = damping;
+    lab.scene.model.materials[*kPairs[pair]].damping = damping;
     changed = true;
   }
   double e = t.restitution[k] >= 0 ? t.restitution[k] : t.probes.valid[k] ? t.probes.result[k].restitution : 0.9;
   char format[48];
   std::snprintf(format, sizeof format, "%%.3f at %.2f m/s", lab.settings.impact_speed);
   if (slider("##elasticity", e, 0.05, 0.999, format)) t.restitution[k] = e;
-  mark(std::string("elasticity ") + kPairs[k]);
+  mark(std::string("elasticity ") + *kPairs[k]);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("restitution: the share of the approach speed a head-on hit gives "
                                                 "back; sets the damping that does it (at the probe speed)");
   if (ImGui::IsItemDeactivatedAfterEdit() && !t.damping_job.valid()) {
@@ -108,7 +109,7 @@ bool friction_law_editor(const Fields& f, ContactMaterial& m) {
 }
 
 bool material_editor(Lab& lab, Tuning& t, int k) {
-  ContactMaterial& m = lab.scene.model.materials[kPairs[k]];
+  ContactMaterial& m = lab.scene.model.materials[*kPairs[k]];
   bool c = false;
   const Fields f({"elasticity e", "stiffness", "damping law", "damping", "exponent", "friction", "friction law",
                   "fast ratio", "decay", "rolling resist.", "spin friction"});
@@ -118,7 +119,7 @@ bool material_editor(Lab& lab, Tuning& t, int k) {
   std::snprintf(unit, sizeof unit, "%%.3g N/m^%g", m.exponent);
   f.label("stiffness");
   c |= slider("##stiffness", m.stiffness, 1e4, 1e12, unit, true);
-  mark(std::string("stiffness ") + kPairs[k]);
+  mark(std::string("stiffness ") + *kPairs[k]);
   int law = static_cast<int>(m.damping_law);
   f.label("damping law");
   if (ImGui::Combo("##law", &law, "linear (thesis)\0Hunt-Crossley\0")) m.damping_law = static_cast<DampingLaw>(law), c = true;
@@ -129,7 +130,7 @@ bool material_editor(Lab& lab, Tuning& t, int k) {
   c |= slider("##exponent", m.exponent, 1.0, 2.0, "%.2f");
   f.label("friction");
   c |= slider("##friction", m.friction, 0.0, 1.0, "%.3f");
-  mark(std::string("friction ") + kPairs[k]);
+  mark(std::string("friction ") + *kPairs[k]);
   if (k == 0) c |= friction_law_editor(f, m);
   f.label("rolling resist.");
   c |= slider("##rolling", m.rolling_resistance, 0.0, 0.1, "%.4f");
@@ -144,11 +145,11 @@ void probe_readout(Lab& lab, const Tuning& t, int k) {
   const CollisionProbe& p = t.probes.result[k];
   ImGui::TextColored(ImVec4(0.6f, 0.9f, 1, 1), "contact %.3f ms, penetration %.3f mm,\nrestitution %.3f, peak %.0f N",
                      p.contact_time * 1e3, p.peak_penetration * 1e3, p.restitution, p.peak_force);
-  mark(std::string("probe ") + kPairs[k]);
-  readout(std::string("contact_time ") + kPairs[k], p.contact_time);
-  readout(std::string("restitution ") + kPairs[k], p.restitution);
+  mark(std::string("probe ") + *kPairs[k]);
+  readout(std::string("contact_time ") + *kPairs[k], p.contact_time);
+  readout(std::string("restitution ") + *kPairs[k], p.restitution);
   PlotSpec spec{"probe force", "N", -1, 0, std::max(p.contact_time, 1e-9)};
-  lab_plot(lab, (std::string("probe_") + kPairs[k]).c_str(), spec, {{"normal force", IM_COL32(255, 110, 90, 255), p.time, p.force}},
+  lab_plot(lab, (std::string("probe_") + *kPairs[k]).c_str(), spec, {{"normal force", IM_COL32(255, 110, 90, 255), p.time, p.force}},
            em(110));
 }
 
@@ -281,8 +282,8 @@ void tune_panel(Lab& lab, Tuning& tuning) {
   for (int k = 0; k < kTunedPairs; ++k) {
     if (!has_pair(lab, k)) continue;
     ImGui::PushID(k);
-    const bool open = ImGui::CollapsingHeader(kPairs[k], k == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0);
-    mark(kPairs[k]);
+    const bool open = ImGui::CollapsingHeader(kPairs[k]->c_str(), k == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+    mark(*kPairs[k]);
     if (open) {
       changed |= material_editor(lab, tuning, k);
       probe_readout(lab, tuning, k);

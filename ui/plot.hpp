@@ -27,7 +27,7 @@ struct PlotSpec {
   double t0 = 0, t1 = -1;  // s: the time axis; t1 < t0: the series' extent
   bool zero_based = true;  // the value axis includes 0
   double origin = 0;       // s: the time axis's labels count from here (a collision's start), named by origin_name
-  std::string origin_name;  // "contact start": the axis reads "time since contact start"; "" for the shot's time
+  std::string origin_name = "";  // "contact start": the axis reads "time since contact start"; "" for the shot's time
 };
 
 struct PlotAction {
