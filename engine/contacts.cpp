@@ -60,8 +60,9 @@ double time_in_circle(const Vec3& d, const Vec3& v, double radius) {
   return B > 0 ? -2 * C / (B + q) : (q - B) / (2 * A);
 }
 
-// s: a lower bound on when a ball whose centre is rho < inner (m) from an arc wall's axis (horizontal offset d, velocity
-// v) leaves the cylinder of radius `inner`, its horizontal acceleration at most `across` (m/s^2), within `horizon`.
+// s: a lower bound on when a ball whose centre is rho < inner (m) from an arc wall's axis (horizontal offset d,
+// velocity v) leaves the cylinder of radius `inner`, its horizontal acceleration at most `across` (m/s^2), within
+// `horizon`.
 // Up to any h the path strays from the straight one by at most across h^2 / 2, so the centre stays within the
 // cylinder shrunk by that much until min(h, the straight path's time in it); the best h is where the two meet, found
 // by bisection on log h from `floor`, a bound already known.

@@ -149,8 +149,8 @@ void probe_readout(Lab& lab, const Tuning& t, int k) {
   readout(std::string("contact_time ") + *kPairs[k], p.contact_time);
   readout(std::string("restitution ") + *kPairs[k], p.restitution);
   PlotSpec spec{"probe force", "N", -1, 0, std::max(p.contact_time, 1e-9)};
-  lab_plot(lab, (std::string("probe_") + *kPairs[k]).c_str(), spec, {{"normal force", IM_COL32(255, 110, 90, 255), p.time, p.force}},
-           em(110));
+  lab_plot(lab, (std::string("probe_") + *kPairs[k]).c_str(), spec,
+           {{"normal force", IM_COL32(255, 110, 90, 255), p.time, p.force}}, em(110));
 }
 
 void changes_section(Lab& lab) {

@@ -89,11 +89,11 @@ TEST(Flight, OnlyForABallThatTouchesNothing) {
 }
 
 // The step cap over a pocket (contacts.cpp, collider_closing_time): a ball whose centre is over the hole, flying under
-// gravity (nothing across), comes no closer than contact_margin to the bed's rim or any other collider (the jaws, the cushions, the
-// pocket's back: arc_wall_closing_time) before the time the cap gives, the path sampled exactly (the projectile's) at
-// 2000 points up to it. Starts within 2 cm of the rim, 5 mm either side of resting height, at up to 3 m/s in any
-// direction, those already touching something left out (most of the ones by the back): what the cap must get right
-// where a ball rolls over a pocket's edge.
+// gravity (nothing across), comes no closer than contact_margin to the bed's rim or any other collider (the jaws, the
+// cushions, the pocket's back: arc_wall_closing_time) before the time the cap gives, the path sampled exactly (the
+// projectile's) at 2000 points up to it. Starts within 2 cm of the rim, 5 mm either side of resting height, at up to
+// 3 m/s in any direction, those already touching something left out (most of the ones by the back): what the cap must
+// get right where a ball rolls over a pocket's edge.
 TEST(Flight, TheCapOverAPocketNeverPassesTheRim) {
   Prepared p = prepare(load_scene(preset("cut.json")));
   const ModelIndex index(p.model);

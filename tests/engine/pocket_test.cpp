@@ -113,7 +113,8 @@ TEST(Pocket, TheCapNeverPassesTheBack) {
     if (const auto pen = penetration(wall, p0, kR); pen && pen->depth > -margin) continue;
     set_position(state.x, 0, p0);
     set_velocity(state.x, 0, v0);
-    const double cap = std::min(horizon, collider_contact_time(p.model, index, state, state.x.data(), 0, horizon, bound));
+    const double cap =
+        std::min(horizon, collider_contact_time(p.model, index, state, state.x.data(), 0, horizon, bound));
     ++(flies ? flying : in ? inside : outside);
     // A flying ball's cap is exact: at the cap itself it may be contact_margin in, to rounding.
     for (int k = 1; k <= 400; ++k) {
