@@ -74,7 +74,8 @@ double time_inside_arc(const Vec3& d, const Vec3& v, double rho, double inner, d
   };
   double best = std::max(floor, leave(horizon));
   if (best >= horizon || !(best > 0)) return best;
-  for (double lo = best, hi = horizon, k = 0; k < 8; ++k) {
+  double lo = best, hi = horizon;
+  for (int k = 0; k < 8; ++k) {
     const double h = std::sqrt(lo * hi), t = leave(h);
     best = std::max(best, std::min(h, t));
     (t >= h ? lo : hi) = h;
