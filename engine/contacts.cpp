@@ -236,7 +236,8 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
   // harder by third balls may start touching inside a step; the simulation then cuts the step at the onset.
   const double a_free = 2.0 * index.gravity;
   // In flight (the caller moves every ball in closed form) a ball in the full model that no rod holds touches nothing
-  // until the step's first onset, where the step ends: gravity alone accelerates it, and nothing across.
+  // until the step's first onset, where the step ends: gravity alone accelerates it, across only by its horizontal
+  // part (none unless gravity is tilted).
   auto flies = [&](int i) {
     return flight && state.active(i) && !state.rolling(i) && !state.sliding(i) && index.rods_on[i] == 0;
   };
@@ -249,7 +250,8 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
     if (!state.active(i)) continue;  // a sleeping ball does not move towards anything
     vmax = std::max(vmax, glm::length(velocity(x, i)));
     const double a = accel(i);
-    best = std::min(best, collider_contact_time(model, index, state, x, i, horizon, {a, flies(i) ? 0.0 : a}, step));
+    const AccelBound bound{a, flies(i) ? index.gravity_across : a};
+    best = std::min(best, collider_contact_time(model, index, state, x, i, horizon, bound, step));
   }
   // Ball pairs whose x gap is within anything closable within the horizon (a sleeper does not move: only the awake
   // one closes in).

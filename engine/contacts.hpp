@@ -166,7 +166,7 @@ bool clear_of_contacts(const Model& model, const ModelIndex& index, const State&
 double free_acceleration(const State& state, const ModelIndex& index, int i);
 
 // m/s^2: bounds on a ball's acceleration outside contacts, in all and across (its horizontal part). One number bounds
-// both; a ball flying under gravity alone has none across.
+// both; a ball flying under gravity alone has only gravity's horizontal part across (none unless it is tilted).
 struct AccelBound {
   double total, across;
   AccelBound(double a) : total(a), across(a) {}  // implicit: a plain number bounds both

@@ -59,7 +59,9 @@ void ColumnXZ::exclude(const Vec3& lo, const Vec3& hi) {
   }
 }
 
-ModelIndex::ModelIndex(const Model& model) : gravity(glm::length(model.options.gravity)) {
+ModelIndex::ModelIndex(const Model& model)
+    : gravity(glm::length(model.options.gravity)),
+      gravity_across(std::hypot(model.options.gravity.x, model.options.gravity.z)) {
   std::map<std::string, int> resolved;
   auto resolve = [&](const std::string& name) {
     const auto [it, added] = resolved.emplace(name, static_cast<int>(materials.size()));

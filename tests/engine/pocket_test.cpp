@@ -153,6 +153,37 @@ TEST(Pocket, TheCapLetsABallCrossTheHole) {
   EXPECT_GT(along, 2 * 0.005 / 1.0) << "along the wall";
 }
 
+// In a flight step (time_to_possible_contact with `flight`) a flying ball's path bends across only by gravity's
+// horizontal part: under plain gravity a ball moving along the back 5 mm inside it is capped exactly where its
+// straight path comes contact_margin in; under gravity tilted by 1 m/s^2 the cap still holds on the exact parabola.
+TEST(Pocket, AFlightStepBendsThePathByGravityAcrossAlone) {
+  for (const double tilt : {0.0, 1.0}) {
+    nlohmann::json doc = {{"colliders", {{{"type", "arc_wall"}, {"center", {0, 0, 0}}, {"radius", 0.065},
+                                          {"thickness", 0.02}, {"toward", {1, 0, 0}}, {"half_angle_deg", 115},
+                                          {"bottom", -0.09}, {"top", 0.05}}}},
+                          {"balls", {{{"id", "a"}, {"position", {0, 0, 0}}}}},
+                          {"gravity", {tilt, -kG, 0}}};
+    Prepared p = prepare(scene(doc));
+    const ModelIndex index(p.model);
+    State& state = p.state;
+    state.rolling_on.assign(1, -1), state.sliding_on.assign(1, -1), state.asleep.assign(1, 0);
+    const double margin = p.model.options.contact_margin, inner = 0.065 - kR + margin;
+    const Vec3 p0{inner - 0.005, 0, 0}, v0{0, -0.2, 1.0}, g = p.model.options.gravity;
+    set_position(state.x, 0, p0);
+    set_velocity(state.x, 0, v0);
+    BroadPhase broad;
+    const double cap = time_to_possible_contact(p.model, index, state, state.x.data(), 0.25, broad, nullptr, true);
+    if (tilt == 0) EXPECT_NEAR(cap, std::sqrt(inner * inner - p0.x * p0.x) / v0.z, 1e-12) << "the straight path's";
+    ASSERT_LT(cap, 0.25);
+    for (int k = 1; k <= 1000; ++k) {
+      const double t = cap * k / 1000;
+      const auto pen = penetration(p.model.colliders[0].shape, p0 + v0 * t + 0.5 * t * t * g, kR);
+      ASSERT_TRUE(!pen || pen->depth < margin + 1e-15) << "tilt " << tilt << ": " << pen->depth << " m in at t = " << t
+                                                      << " s, before the cap " << cap;
+    }
+  }
+}
+
 // The back's lining: restitution 0.3 for a pool ball at 1 m/s (material.cpp says so and gives the damping for it).
 TEST(Pocket, TheLiningGivesBackAThird) {
   EXPECT_NEAR(restitution_at(default_ball_pocket(), kM, 1.0), 0.3, 1e-4);
