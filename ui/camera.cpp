@@ -8,6 +8,7 @@ namespace shotlab {
 
 namespace {
 constexpr double kMaxPitch = 1.5707;  // just short of straight down, so the view matrix keeps its up vector
+constexpr double kMinDistance = 0.05, kMaxZoom = 12.0, kMaxFit = 40.0;  // m: the camera's distance to its target
 }
 
 glm::dvec3 Camera::eye() const {
@@ -34,7 +35,8 @@ void Camera::pan(double dx, double dy, double viewport_height) {
 }
 
 void Camera::zoom(double steps) {
-  distance = std::clamp(distance * std::pow(0.88, steps), 0.05, 12.0);
+  // Out to kMaxZoom, or as far as a fit had put it: the first notch never jumps closer.
+  distance = std::clamp(distance * std::pow(0.88, steps), kMinDistance, std::max(kMaxZoom, distance));
   auto_fit = false;
 }
 
@@ -48,7 +50,7 @@ void Camera::top_view() {
 
 void Camera::reset() { *this = Camera{}; }
 
-double Camera::fit_distance(const std::vector<glm::dvec3>& points, double aspect) const {
+std::optional<double> Camera::fit_distance(const std::vector<glm::dvec3>& points, double aspect) const {
   constexpr double kMargin = 0.94;  // of the half-extent of the view, on each side
   auto fits = [&](double d) {
     Camera c = *this;
@@ -60,8 +62,8 @@ double Camera::fit_distance(const std::vector<glm::dvec3>& points, double aspect
     }
     return true;
   };
-  double lo = 0.05, hi = 40.0;
-  if (!fits(hi)) return distance;
+  double lo = kMinDistance, hi = kMaxFit;
+  if (!fits(hi)) return std::nullopt;
   for (int k = 0; k < 40; ++k) {  // fitting is monotonic in the distance: bisect to a fraction of a millimetre
     const double mid = 0.5 * (lo + hi);
     (fits(mid) ? hi : lo) = mid;

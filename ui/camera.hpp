@@ -25,8 +25,9 @@ struct Camera {
   void zoom(double wheel_steps);
   void top_view();
   void reset();
-  // The distance at which every point lies inside the view of the given aspect (width / height), a margin left.
-  double fit_distance(const std::vector<glm::dvec3>& points, double aspect) const;
+  // The distance (m) at which every point lies inside the view of the given aspect (width / height), a margin left;
+  // nullopt when they do not fit within 40 m.
+  std::optional<double> fit_distance(const std::vector<glm::dvec3>& points, double aspect) const;
 };
 
 // A camera fixed to one viewport for the frame: world <-> screen. The viewport is the part of the window between

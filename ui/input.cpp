@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "ui/keys.hpp"
+#include "ui/framing.hpp"
 #include "ui/panels.hpp"
 
 namespace shotlab {
@@ -69,7 +70,7 @@ void key(Lab& lab, Camera& camera, const KeyPress& k) {
     case GLFW_KEY_LEFT_BRACKET: lab.settings.slowmo = std::max(1e-3, lab.settings.slowmo / 2); break;
     case GLFW_KEY_RIGHT_BRACKET: lab.settings.slowmo = std::min(4.0, lab.settings.slowmo * 2); break;
     case GLFW_KEY_T: camera.top_view(); break;
-    case GLFW_KEY_HOME: camera.reset(); break;
+    case GLFW_KEY_HOME: home_view(camera, lab.scene); break;
     case GLFW_KEY_DELETE: lab.remove_ball(lab.selected); break;
     case GLFW_KEY_F1: case GLFW_KEY_H: toggle(v.help); break;
     case GLFW_KEY_V: v.velocity = v.spin = !v.velocity; break;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "ui/framing.hpp"
 #include "ui/panels.hpp"
 #include "ui/pictures.hpp"
 #include "ui/widgets.hpp"
@@ -55,7 +56,7 @@ void view_section(Lab& lab, Camera& camera) {
   ImGui::Checkbox("centre of mass", &v.centre_of_mass), ImGui::SameLine(), ImGui::Checkbox("A/B compare", &v.compare);
   if (ImGui::Button("Top view (T)")) camera.top_view();
   ImGui::SameLine();
-  if (ImGui::Button("Fit table (Home)")) camera.reset();
+  if (ImGui::Button("Fit table (Home)")) home_view(camera, lab.scene);
   ImGui::SameLine();
   if (ImGui::Button("Help (H)")) v.help = true;
   float scale = lab.settings.ui_scale;

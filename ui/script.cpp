@@ -6,6 +6,7 @@
 
 #include "shotlab/io/scene_json.hpp"
 #include "ui/files.hpp"
+#include "ui/framing.hpp"
 #include "ui/panels.hpp"
 
 namespace shotlab {
@@ -154,7 +155,7 @@ bool Script::view(ScriptHost& host, const std::string& cmd, std::istringstream& 
   } else if (cmd == "camera") {
     const std::string what = word(in);
     if (what == "top") host.camera.top_view();
-    else if (what == "reset") host.camera.reset();
+    else if (what == "reset") home_view(host.camera, host.lab.scene);
     else if (what == "orbit") {  // camera orbit YAW_DEG PITCH_DEG DISTANCE [TARGET_X TARGET_Z]
       host.camera.yaw = number(in) * M_PI / 180;
       host.camera.pitch = number(in) * M_PI / 180;

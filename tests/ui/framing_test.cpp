@@ -31,7 +31,7 @@ TEST(Framing, ASceneWithoutATableShowsItsColliders) {
   const Scene s = far_colliders();
   for (const Rect& view : {Rect{330, 0, 590, 720}, Rect{300, 0, 400, 600}, Rect{330, 0, 1260, 1080}}) {
     Camera camera;
-    on_scene_loaded(camera, s);
+    home_view(camera, s);
     fit_camera(camera, s, view);
     for (const Vec3& p : {Vec3{0, 0.028575, 0}, Vec3{1.05, 0.05, 0}, Vec3{-0.83, 0.03, 0.33}, Vec3{-0.83, 0.03, -0.33}})
       EXPECT_TRUE(in_view(camera, view, p)) << "(" << p.x << ", " << p.y << ", " << p.z << ") in a " << view.w << "x"
@@ -39,13 +39,36 @@ TEST(Framing, ASceneWithoutATableShowsItsColliders) {
   }
 }
 
-// An unbounded plane frames nothing: a ball on it alone fills the view, as before colliders were framed.
-TEST(Framing, AnUnboundedPlaneFramesNothing) {
+// A floor frames nothing, unbounded or a level 200 m square: a ball on it alone fills the view.
+TEST(Framing, AFloorFramesNothing) {
   Scene s = far_colliders();
   s.model.colliders.resize(1);
+  s.model.colliders.push_back({"floor", BoundedPlane({-100, 0, -100}, {200, 0, 0}, {0, 0, 200}), kBallCloth});
   const std::vector<Vec3> points = framed_points(s);
   ASSERT_EQ(points.size(), 2u);
   EXPECT_DOUBLE_EQ(points[1].x - points[0].x, 2 * 0.028575);
+}
+
+// Colliders too far to frame (a sphere 60 m off) leave the ball framed alone, centred, instead of a view of neither.
+TEST(Framing, TooFarToFrameFallsBackToTheBalls) {
+  Scene s = far_colliders();
+  std::get<StaticSphere>(s.model.colliders[1].shape).center = {60, 0.05, 0};
+  const Rect view{330, 0, 590, 720};
+  Camera camera;
+  home_view(camera, s);
+  fit_camera(camera, s, view);
+  EXPECT_TRUE(in_view(camera, view, {0, 0.028575, 0}));
+  EXPECT_LT(camera.distance, 1.0);
+}
+
+// The first wheel notch out after a fit beyond the zoom's own limit does not jump closer.
+TEST(Framing, ZoomingOutNeverJumpsIn) {
+  Camera camera;
+  camera.distance = 20;
+  camera.zoom(-1);
+  EXPECT_GE(camera.distance, 20);
+  camera.zoom(+1);
+  EXPECT_LT(camera.distance, 20);
 }
 
 // A table frames its rails' outer corners, whatever else the scene holds.
