@@ -241,9 +241,13 @@ void Lab::start_shot(const Scene& start) {
 
 void Lab::shoot() {
   if (in_hand) in_hand = false, history.seal();  // shooting puts the ball in hand down where it is
-  if (shot) ghost = trails(shot->sim().time());
   history.record("shot", scene);
   if (message_kind != MessageKind::LoadError) say(MessageKind::None, "");
+  launch();
+}
+
+void Lab::launch() {
+  if (shot) ghost = trails(shot->sim().time());
   start_shot(scene);
   playing = shot != nullptr;
 }
@@ -306,13 +310,13 @@ void Lab::restore(Workbench bench) {
 
 void Lab::redo() {
   if (!history.can_redo()) return say(MessageKind::Note, "nothing to redo");
-  if (history.redo_label() == "shot") return shoot();  // shooting again records the shot anew
   const std::string what = history.redo_label();
   take_step(history.redo(scene, [this] { return current_file(); }));
+  say(MessageKind::Note, "redone: " + what);
+  if (what == "shot") return launch();  // the shot runs again; the redo entries after it stay
   shot.reset();
   playing = false;
   view_time = 0;
-  say(MessageKind::Note, "redone: " + what);
   scene_changed();
 }
 

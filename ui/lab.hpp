@@ -156,6 +156,7 @@ class Lab {
   void choose_pocket(std::vector<PocketAim> aims, int object, int step, int first);  // lab_edit.cpp
   void show(double t);
   void start_shot(const Scene& start);
+  void launch();  // the scene's shot starts playing; the last shot's paths stay as the ghost
   void pause_on_events(double from, double to);
   void finish_playing();
 

@@ -333,6 +333,30 @@ TEST_F(LabTest, ShotsAndEditsShareOneUndoStack) {
   EXPECT_NEAR(lab.scene.cue->aim * 180 / M_PI, -75.0, 1e-9);
 }
 
+// Undoing an aim and two shots and redoing them all brings back every step, the shots running again: redoing a shot
+// used to record it anew, which emptied the redo list after it (a user trial lost its second shot that way).
+TEST_F(LabTest, RedoingAShotKeepsTheStepsAfterIt) {
+  load("cut.json");
+  lab.nudge_aim(1.0);
+  lab.shoot();
+  lab.shoot();  // the same shot again
+  for (int k = 0; k < 3; ++k) lab.undo();
+  EXPECT_NEAR(lab.scene.cue->aim * 180 / M_PI, -75.0, 1e-9);
+  lab.redo();
+  EXPECT_FALSE(lab.shot);
+  EXPECT_NEAR(lab.scene.cue->aim * 180 / M_PI, -74.0, 1e-9);
+  for (int k = 0; k < 2; ++k) {
+    lab.redo();
+    ASSERT_TRUE(lab.shot) << "shot " << k + 1 << " runs again";
+    EXPECT_NEAR(lab.shot->start().cue->aim * 180 / M_PI, -74.0, 1e-9);
+    EXPECT_EQ(lab.message, "redone: shot");
+  }
+  EXPECT_FALSE(lab.history.can_redo());
+  lab.undo();
+  lab.undo();
+  EXPECT_TRUE(lab.history.can_redo()) << "and the way back is there again";
+}
+
 // A break in one action: rack, cue ball in hand behind the head string, a centre-ball cue strike at the apex.
 TEST_F(LabTest, SetUpBreakRacksAndGivesBallInHand) {
   load("cut.json");
