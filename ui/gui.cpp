@@ -257,7 +257,8 @@ int run_gui(const GuiOptions& options) {
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-        if (!lab.screenshot_request.empty()) write_screenshot(lab, w, h);
+        if (!lab.screenshot_request.empty() && lab.screenshot_delay > 0) --lab.screenshot_delay;
+        else if (!lab.screenshot_request.empty()) write_screenshot(lab, w, h);
         const ScreenInfo screen{w, h, layout.view, &viewport, &marks(), &readouts(), mouse.x, mouse.y, host.fps,
                                 frame_seconds * 1e3, ++frame};
         if (dump_requested.exchange(false)) write_state(lab, screen, options.dump_state);

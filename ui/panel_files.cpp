@@ -207,14 +207,17 @@ void scene_section(Lab& lab) {
 }
 
 std::string export_path(const Lab& lab, const std::string& what, const std::string& ext) {
-  const std::string dir = lab.settings.export_dir.empty() ? "." : lab.settings.export_dir;
+  // Absolute, so that the banner that names the file says where it is.
   std::error_code ec;
+  const fs::path folder = lab.settings.export_dir.empty() ? fs::path(".") : fs::path(lab.settings.export_dir);
+  const std::string dir = fs::absolute(folder, ec).lexically_normal().string();
   fs::create_directories(dir, ec);
   return unique_path(dir, (lab.scene.name.empty() ? "shotlab" : lab.scene.name) + "-" + what, ext);
 }
 
-std::optional<double> lab_plot(Lab& lab, const char* id, const PlotSpec& spec, const std::vector<PlotSeries>& series,
+std::optional<double> lab_plot(Lab& lab, const char* id, PlotSpec spec, const std::vector<PlotSeries>& series,
                                float height) {
+  spec.hover = lab.screenshot_request.empty();  // no readout in a picture of it
   const PlotAction a = plot(id, spec, series, height);
   try {
     if (a.export_csv) {
@@ -225,6 +228,7 @@ std::optional<double> lab_plot(Lab& lab, const char* id, const PlotSpec& spec, c
     if (a.export_png) {
       lab.screenshot_request = export_path(lab, spec.title, "png");
       lab.screenshot_crop = a.rect;
+      lab.screenshot_delay = 2;  // the menu that asked for it is still drawn in this frame
     }
   } catch (const std::exception& e) {
     lab.say(MessageKind::Refused, e.what());

@@ -28,13 +28,13 @@ double shot_span(const Lab& lab) {
 // The ball's speed and the speed its spin would roll it at (R times spin about the horizontal axis across the
 // travel), both along its direction of travel: the second is negative with backspin, and the lines meet where the
 // ball rolls. At rest the last direction of travel is kept (the spin's own direction before the ball ever moved).
+// Like the energy plot it shows the shot as far as it has run, the cursor at the time on screen.
 void motion_plot(Lab& lab) {
   const int i = lab.selected;
   const double r = lab.scene.balls[i].spec.radius;
   PlotSeries v{"speed v", kBlue, {}, {}}, w{"R x spin along v (< 0: backspin)", kYellow, {}, {}};
   Vec3 along{0.0};
   for (const Frame& f : lab.shot->frames()) {
-    if (f.time > lab.view_time) break;
     const Vec3 vel = velocity(f.state.x, i), rolls_at = r * glm::cross(spin(f.state.x, i), Vec3{0, 1, 0});
     const Vec3 flat{vel.x, 0, vel.z};
     if (glm::length(flat) > 1e-9) along = glm::normalize(flat);
@@ -43,9 +43,8 @@ void motion_plot(Lab& lab) {
     w.time.push_back(f.time), w.value.push_back(glm::dot(rolls_at, along));
   }
   PlotSpec spec{"ball " + lab.scene.balls[i].spec.id + ": speed and spin", "m/s", lab.view_time, 0, shot_span(lab)};
+  spec.hint = "the ball rolls without slipping where the two lines meet; below zero the spin is backspin";
   seek_to(lab, lab_plot(lab, "motion", spec, {v, w}, em(150)));
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("the ball rolls without slipping where the two lines meet; below zero the spin is backspin");
 }
 
 void energy_plot(Lab& lab) {
@@ -53,7 +52,6 @@ void energy_plot(Lab& lab) {
   PlotSeries k{"kinetic", kBlue, {}, {}}, e{"in contacts", kGreen, {}, {}}, h{"height", kPurple, {}, {}},
       t{"total", kWhite, {}, {}};
   for (const Frame& f : lab.shot->frames()) {
-    if (f.time > lab.view_time) break;
     for (PlotSeries* s : {&k, &e, &h, &t}) s->time.push_back(f.time);
     k.value.push_back(f.energy.kinetic);
     e.value.push_back(f.energy.elastic);

@@ -54,7 +54,7 @@ void message_banner(Lab& lab, const Rect& view);  // panel_play.cpp: errors and 
 void status_line(const Lab& lab, const Rect& view, double frame_seconds, bool slept);
 
 // A plot with its exports handled (files named after the scene, in the export folder); returns the picked time.
-std::optional<double> lab_plot(Lab& lab, const char* id, const PlotSpec& spec, const std::vector<PlotSeries>& series,
+std::optional<double> lab_plot(Lab& lab, const char* id, PlotSpec spec, const std::vector<PlotSeries>& series,
                                float height);
 // Where an export goes: a new file in the export folder, named after the scene and `what`.
 std::string export_path(const Lab& lab, const std::string& what, const std::string& ext);

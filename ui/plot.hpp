@@ -28,6 +28,8 @@ struct PlotSpec {
   bool zero_based = true;  // the value axis includes 0
   double origin = 0;       // s: the time axis's labels count from here (a collision's start), named by origin_name
   std::string origin_name = "";  // "contact start": the axis reads "time since contact start"; "" for the shot's time
+  std::string hint = "";         // what to look for: a last line under the pointer's readout
+  bool hover = true;             // the pointer's line and readout (off while the plot is captured as a picture)
 };
 
 struct PlotAction {
