@@ -125,6 +125,7 @@ void open_first_scene(Lab& lab, const std::string& path, const std::string& fall
   lab.settings.last_scene = last;
   lab.settings.recent = recent;
   lab.say(MessageKind::LoadError, problem + "\n(the " + lab.scene.name + " preset is open instead)");
+  lab.scene_kept = false;  // there was none to keep
 }
 
 Layout frame_layout(const Settings& s, int w, int h) {

@@ -74,6 +74,7 @@ bool Lab::load(const std::string& given) {
     return true;
   } catch (const std::exception& e) {
     say(MessageKind::LoadError, e.what());
+    scene_kept = true;
     return false;
   }
 }
@@ -92,6 +93,7 @@ bool Lab::load_measured(const std::string& path) {
     return true;
   } catch (const std::exception& e) {
     say(MessageKind::LoadError, e.what());
+    scene_kept = true;
     return false;
   }
 }

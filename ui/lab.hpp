@@ -66,6 +66,7 @@ class Lab {
   int selected = 0;             // ball index
   std::string message;
   MessageKind message_kind = MessageKind::None;
+  bool scene_kept = true;  // after a LoadError: the scene before it is still open (false: a preset opened instead)
   std::chrono::steady_clock::time_point message_since;  // when the message was set: a note goes after kNoteSeconds
                                                         // of wall time (idle frames come every half second)
   static constexpr double kNoteSeconds = 6;

@@ -277,10 +277,15 @@ void Lab::keep_shot() {
   k.trails = trails(shot->sim().time());
   k.colour = kept.empty() ? 0 : kept.back().colour + 1;
   if (const auto& c = shot->start().cue) {
-    char text[128];
-    std::snprintf(text, sizeof text, "%.2f m/s, aim %.2f deg, tip %+.2f/%+.2f R", c->speed, c->aim * 180 / M_PI,
-                  c->side, c->height);
-    k.label = text;
+    // The tip first, as a coach names the shot (a narrow panel cuts the end off); 0.005 R is where the tip widget
+    // reads 0.00.
+    char tip[64], side[32] = "", rest[64];
+    if (std::abs(c->height) < 0.005) std::snprintf(tip, sizeof tip, "centre");
+    else std::snprintf(tip, sizeof tip, "%s %.2f R", c->height > 0 ? "follow" : "draw", std::abs(c->height));
+    if (std::abs(c->side) >= 0.005)
+      std::snprintf(side, sizeof side, ", %s %.2f R", c->side > 0 ? "right" : "left", std::abs(c->side));
+    std::snprintf(rest, sizeof rest, ", %.2f m/s, aim %.1f deg", c->speed, c->aim * 180 / M_PI);
+    k.label = std::string(tip) + side + rest;
   } else {
     k.label = "shot " + std::to_string(k.colour + 1);
   }

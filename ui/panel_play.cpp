@@ -261,7 +261,8 @@ void message_banner(Lab& lab, const Rect& view) {
   ImGui::TextUnformatted(lab.message.c_str());
   ImGui::PopTextWrapPos();
   ImGui::PopStyleColor();
-  if (lab.message_kind == MessageKind::LoadError) ImGui::TextDisabled("The scene you had is still loaded.");
+  if (lab.message_kind == MessageKind::LoadError && lab.scene_kept)
+    ImGui::TextDisabled("The scene you had is still loaded.");
   if (ImGui::SmallButton("Dismiss")) lab.say(MessageKind::None, "");
   mark("Dismiss");
   if (lab.message_kind == MessageKind::EngineStop) {

@@ -41,6 +41,7 @@ void practice_section(Lab& lab) {
     ImGui::Checkbox("##visible", &lab.kept[k].visible);
     ImGui::SameLine();
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(kept_colour(lab.kept[k].colour)), "%s", lab.kept[k].label.c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", lab.kept[k].label.c_str());  // whole, where the panel cuts it
     ImGui::PopID();
   }
   ImGui::Checkbox("camera follows the cue ball", &lab.settings.view.follow_cue);

@@ -357,6 +357,20 @@ TEST_F(LabTest, RedoingAShotKeepsTheStepsAfterIt) {
   EXPECT_TRUE(lab.history.can_redo()) << "and the way back is there again";
 }
 
+// A kept shot is named by its tip first, as a coach names it (the panel cuts long labels at the end).
+TEST_F(LabTest, KeptShotsAreNamedByTheirTipFirst) {
+  load("stun.json");
+  lab.shoot();
+  lab.keep_shot();
+  lab.undo();
+  lab.scene.cue->height = 0.39, lab.scene.cue->side = -0.1;
+  lab.shoot();
+  lab.keep_shot();
+  ASSERT_EQ(lab.kept.size(), 2u);
+  EXPECT_EQ(lab.kept[0].label, "draw 0.20 R, 1.80 m/s, aim 30.0 deg");
+  EXPECT_EQ(lab.kept[1].label, "follow 0.39 R, left 0.10 R, 1.80 m/s, aim 30.0 deg");
+}
+
 // A break in one action: rack, cue ball in hand behind the head string, a centre-ball cue strike at the apex.
 TEST_F(LabTest, SetUpBreakRacksAndGivesBallInHand) {
   load("cut.json");
