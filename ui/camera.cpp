@@ -48,6 +48,8 @@ void Camera::top_view() {
   auto_fit = true;
 }
 
+bool Camera::looks_down() const { return pitch >= kMaxPitch; }
+
 void Camera::reset() { *this = Camera{}; }
 
 std::optional<double> Camera::fit_distance(const std::vector<glm::dvec3>& points, double aspect) const {

@@ -24,6 +24,7 @@ struct Camera {
   void pan(double dx_pixels, double dy_pixels, double viewport_height);
   void zoom(double wheel_steps);
   void top_view();
+  bool looks_down() const;  // straight down on the table, as the top view puts it
   void reset();
   // The distance (m) at which every point lies inside the view of the given aspect (width / height), a margin left;
   // nullopt when they do not fit within 40 m.

@@ -67,6 +67,12 @@ void home_view(Camera& camera, const Scene& scene) {
   camera.pitch = 0.25;
 }
 
+void scene_opened(Camera& camera, const Scene& scene) {
+  const bool top = camera.looks_down();
+  home_view(camera, scene);
+  if (top && scene.table) camera.top_view();
+}
+
 void fit_camera(Camera& camera, const Scene& scene, const Rect& view) {
   if (!camera.auto_fit || view.w < 1 || view.h < 1) return;
   const double aspect = view.w / view.h;

@@ -17,6 +17,8 @@ std::vector<Vec3> framed_points(const Scene& scene, bool colliders = true);
 // The view a scene opens with and Home brings back: the default over a table, a low side view without one, fitted
 // (fit_camera) from then on.
 void home_view(Camera& camera, const Scene& scene);
+// A scene opened (or a load undone): its home view, or the top view again where the user had it and it has a table.
+void scene_opened(Camera& camera, const Scene& scene);
 
 // While the camera auto-fits, what is framed fills the 3D view (the rectangle between the panels) at its size. Without
 // a table the view centres on it; colliders too far to fit leave the balls and rods framed alone.

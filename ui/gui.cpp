@@ -195,7 +195,7 @@ int run_gui(const GuiOptions& options) {
       Tuning tuning;
       MouseDrag drag;
       Pacer pacer;
-      lab.on_load = [&settings](const Scene& s) { home_view(settings.camera, s); };
+      lab.on_load = [&settings](const Scene& s) { scene_opened(settings.camera, s); };
       open_first_scene(lab, initial_scene(options, settings), options.data_root + "/presets/sliding_to_rolling.json");
       ScriptHost host{lab, settings.camera, nullptr};
       double last = glfwGetTime(), frame_seconds = 0;

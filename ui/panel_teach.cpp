@@ -102,7 +102,8 @@ void energy_bars(const Lab& lab) {
   double scale = start.kinetic + start.elastic;  // the largest motion energy of the shot spans the bars
   if (lab.shot)
     for (const Frame& fr : lab.shot->frames()) scale = std::max(scale, fr.energy.kinetic + fr.energy.elastic);
-  scale = std::max(scale, kEnergyBarFloor);
+  // A ball dropped into a pocket turns height into heat and sound beyond what ever moved: those bars fit too.
+  scale = std::max({scale, kEnergyBarFloor, std::abs(potential), std::abs(lost)});
   ImGui::TextWrapped("Energy (J): the bars add up to the energy at the start");
   bar_chart("energy", {{"moving", translation, IM_COL32(80, 170, 255, 255)},
                        {"spinning", rotation, IM_COL32(255, 220, 80, 255)},
@@ -120,7 +121,18 @@ void momentum_bars(const Lab& lab) {
   const Model& m = shown_model(lab);
   std::vector<Bar> bars;
   Vec3 total{0.0};
+  // Scaled to the shot's start too: a ball come to rest with 1e-4 kg m/s left does not fill its bar.
   double scale = kMomentumBarFloor;
+  if (lab.shot) {
+    const State& start = lab.shot->frames().front().state;
+    Vec3 start_total{0.0};
+    for (int i = 0; i < start.ball_count(); ++i) {
+      const Vec3 p = ball_motion(m, start, i).momentum;
+      start_total += p;
+      scale = std::max(scale, glm::length(p));
+    }
+    scale = std::max(scale, glm::length(start_total));
+  }
   for (int i = 0; i < f.state.ball_count(); ++i) {
     if (!f.state.in_play[i]) continue;
     const Vec3 p = ball_motion(m, f.state, i).momentum;

@@ -187,7 +187,8 @@ void bar_chart(const char* id, const std::vector<Bar>& shown, double scale, cons
     const Bar& b = bars[k];
     const float y = o.y + k * line;
     d->AddText({o.x, y}, ImGui::GetColorU32(ImGuiCol_Text), b.label.c_str());
-    const float len = std::clamp(static_cast<float>(b.value) * unit_px, -span, span);
+    const float reach = signed_values ? span / 2 : span;  // never into the values' column
+    const float len = std::clamp(static_cast<float>(b.value) * unit_px, -reach, reach);
     d->AddRectFilled({std::min(zero, zero + len), y + 2}, {std::max(zero, zero + len), y + line - 3}, b.colour);
     d->AddText({x0 + span + em(6), y}, ImGui::GetColorU32(ImGuiCol_Text), values[k].c_str());
   }

@@ -61,6 +61,19 @@ TEST(Framing, TooFarToFrameFallsBackToTheBalls) {
   EXPECT_LT(camera.distance, 1.0);
 }
 
+// A top view the user chose stays when another table opens; a scene without a table opens in its own view.
+TEST(Framing, ATopViewStaysForTheNextTable) {
+  const Scene table = load_scene(std::string(SHOTLAB_SOURCE_DIR) + "/presets/cut.json");
+  Camera camera;
+  camera.top_view();
+  scene_opened(camera, table);
+  EXPECT_TRUE(camera.looks_down());
+  scene_opened(camera, far_colliders());
+  EXPECT_FALSE(camera.looks_down());
+  scene_opened(camera, table);
+  EXPECT_FALSE(camera.looks_down()) << "the default view over a table otherwise";
+}
+
 // The first wheel notch out after a fit beyond the zoom's own limit does not jump closer.
 TEST(Framing, ZoomingOutNeverJumpsIn) {
   Camera camera;
