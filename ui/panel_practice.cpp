@@ -64,7 +64,8 @@ void view_section(Lab& lab, Camera& camera) {
   const Fields f({"UI scale"});
   f.label("UI scale");
   if (ImGui::SliderFloat("##scale", &scale, 0.75f, 2.0f, "%.2fx")) lab.settings.ui_scale = scale;
-  ImGui::Checkbox("presentation mode (F5): large fonts for a projector", &lab.settings.presentation);
+  ImGui::Checkbox("presentation mode (F5)", &lab.settings.presentation);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("large fonts for a projector");
   if (ImGui::Button("Screenshot (F12)")) lab.screenshot_request = export_path(lab, "screenshot", "png");
   ImGui::SameLine();
   ImGui::BeginDisabled(!lab.shot);
