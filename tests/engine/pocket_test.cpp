@@ -81,19 +81,27 @@ TEST(Pocket, TheBackStandsClearOfTheMouth) {
   }
 }
 
+// A lone pocket back (0.065 m inner radius, 2 cm thick, 115 degrees either side of +x, from -0.09 m to 0.05 m) and
+// one ball "a" at its axis in no regime, under `gravity` (m/s^2).
+Prepared lone_back(const Vec3& gravity = {0, -kG, 0}) {
+  const nlohmann::json wall = {{"type", "arc_wall"}, {"center", {0, 0, 0}}, {"radius", 0.065}, {"thickness", 0.02},
+                               {"toward", {1, 0, 0}}, {"half_angle_deg", 115}, {"bottom", -0.09}, {"top", 0.05}};
+  Prepared p = prepare(scene({{"colliders", {wall}},
+                              {"balls", {{{"id", "a"}, {"position", {0, kR, 0}}}}},
+                              {"gravity", {gravity.x, gravity.y, gravity.z}}}));
+  p.state.rolling_on.assign(1, -1), p.state.sliding_on.assign(1, -1), p.state.asleep.assign(1, 0);
+  return p;
+}
+
 // The step cap against a pocket's back (contacts.cpp, arc_wall_closing_time) is a lower bound on when a ball comes
 // contact_margin into it: a lone wall, balls started inside the cylinder within it and outside the one around it, at up
 // to 5 m/s in any direction, over horizons from 0.1 ms to 0.25 s, pushed at the full acceleration bound straight away
 // from the axis (from inside) or towards it (from outside), or flying under gravity alone (from inside, the bound
 // having nothing across), their paths sampled at 400 points up to the cap.
 TEST(Pocket, TheCapNeverPassesTheBack) {
-  const nlohmann::json wall_json = {{"type", "arc_wall"}, {"center", {0, 0, 0}}, {"radius", 0.065},
-                                    {"thickness", 0.02}, {"toward", {1, 0, 0}}, {"half_angle_deg", 115},
-                                    {"bottom", -0.09}, {"top", 0.05}};
-  Prepared p = prepare(scene({{"colliders", {wall_json}}, {"balls", {{{"id", "a"}, {"position", {0, kR, 0}}}}}}));
+  Prepared p = lone_back();
   const ModelIndex index(p.model);
   State& state = p.state;
-  state.rolling_on.assign(1, -1), state.sliding_on.assign(1, -1);
   const ArcWall& wall = std::get<ArcWall>(p.model.colliders[0].shape);
   const double margin = p.model.options.contact_margin, a = 2 * kG;
   std::mt19937_64 rng(7);
@@ -135,13 +143,9 @@ TEST(Pocket, TheCapNeverPassesTheBack) {
 // 1 m/s is capped where its straight path leaves the cylinder, and one moving along the wall 5 mm inside it, pushed
 // at 2g across, at more than twice the time in which it could close those 5 mm at its speed.
 TEST(Pocket, TheCapLetsABallCrossTheHole) {
-  const nlohmann::json wall_json = {{"type", "arc_wall"}, {"center", {0, 0, 0}}, {"radius", 0.065},
-                                    {"thickness", 0.02}, {"toward", {1, 0, 0}}, {"half_angle_deg", 115},
-                                    {"bottom", -0.09}, {"top", 0.05}};
-  Prepared p = prepare(scene({{"colliders", {wall_json}}, {"balls", {{{"id", "a"}, {"position", {0, kR, 0}}}}}}));
+  Prepared p = lone_back();
   const ModelIndex index(p.model);
   State& state = p.state;
-  state.rolling_on.assign(1, -1), state.sliding_on.assign(1, -1);
   const double inner = 0.065 - kR + p.model.options.contact_margin;
   auto cap = [&](const Vec3& at, const Vec3& v, const AccelBound& a) {
     set_position(state.x, 0, at);
@@ -158,15 +162,9 @@ TEST(Pocket, TheCapLetsABallCrossTheHole) {
 // straight path comes contact_margin in; under gravity tilted by 1 m/s^2 the cap still holds on the exact parabola.
 TEST(Pocket, AFlightStepBendsThePathByGravityAcrossAlone) {
   for (const double tilt : {0.0, 1.0}) {
-    nlohmann::json doc = {{"colliders", {{{"type", "arc_wall"}, {"center", {0, 0, 0}}, {"radius", 0.065},
-                                          {"thickness", 0.02}, {"toward", {1, 0, 0}}, {"half_angle_deg", 115},
-                                          {"bottom", -0.09}, {"top", 0.05}}}},
-                          {"balls", {{{"id", "a"}, {"position", {0, 0, 0}}}}},
-                          {"gravity", {tilt, -kG, 0}}};
-    Prepared p = prepare(scene(doc));
+    Prepared p = lone_back({tilt, -kG, 0});
     const ModelIndex index(p.model);
     State& state = p.state;
-    state.rolling_on.assign(1, -1), state.sliding_on.assign(1, -1), state.asleep.assign(1, 0);
     const double margin = p.model.options.contact_margin, inner = 0.065 - kR + margin;
     const Vec3 p0{inner - 0.005, 0, 0}, v0{0, -0.2, 1.0}, g = p.model.options.gravity;
     set_position(state.x, 0, p0);
