@@ -1,6 +1,7 @@
 // The left panel (players and coaches, and the teacher's presets): scene, playback, aim, practice, balls and view;
 // the help panel; the message banner; the status line.
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -190,14 +191,36 @@ void balls_section(Lab& lab) {
   if (ImGui::Checkbox("allow overlaps", &lab.scene.allow_overlap)) lab.scene_changed();
 }
 
+// The scene's notes ("What to look for"), read or edited in place: a teacher's own words for a scene made from a
+// preset, saved with it. Typing is one undo entry until Done.
+void notes_section(Lab& lab) {
+  static bool editing = false;
+  if (!editing) {
+    if (!lab.scene.description.empty()) ImGui::TextWrapped("%s", lab.scene.description.c_str());
+    if (ImGui::SmallButton(lab.scene.description.empty() ? "Add notes" : "Edit notes")) editing = true;
+    mark("Edit notes");
+    return;
+  }
+  std::string text = lab.scene.description;
+  if (ImGui::InputTextMultiline("##notes", &text, ImVec2(-FLT_MIN, em(100)))) {
+    lab.history.record("notes", lab.scene, "notes");
+    lab.scene.description = std::move(text);
+  }
+  mark("notes");
+  if (ImGui::SmallButton("Done")) {
+    editing = false;
+    lab.history.seal();
+  }
+  mark("Done");
+}
+
 }  // namespace
 
 bool left_panel(Lab& lab, Camera& camera, const Rect& where) {
   static bool shown = true;
   if (begin_side_panel("Shot lab", where, lab.settings.panels.left_open, shown)) {
     ImGui::TextWrapped("%s", lab.scene.name.c_str());
-    if (!lab.scene.description.empty() && ImGui::CollapsingHeader("What to look for", ImGuiTreeNodeFlags_DefaultOpen))
-      ImGui::TextWrapped("%s", lab.scene.description.c_str());
+    if (ImGui::CollapsingHeader("What to look for", ImGuiTreeNodeFlags_DefaultOpen)) notes_section(lab);
     if (ImGui::CollapsingHeader("Scene and files", ImGuiTreeNodeFlags_DefaultOpen)) scene_section(lab);
     if (ImGui::CollapsingHeader("Playback", ImGuiTreeNodeFlags_DefaultOpen)) playback_section(lab);
     if (ImGui::CollapsingHeader("Aim", ImGuiTreeNodeFlags_DefaultOpen)) aim_section(lab);
