@@ -85,7 +85,8 @@ void playback_section(Lab& lab) {
     }
     mark("time slider");
     const bool fine = lab.contact_on_screen();
-    ImGui::TextWrapped("t = %s%s", format_time(lab.view_time, fine).c_str(), fine ? "  (a contact: to the microsecond)" : "");
+    ImGui::TextWrapped("t = %s%s", format_time(lab.view_time, fine).c_str(),
+                       fine ? "  (a contact: to the microsecond)" : "");
     if (lab.shot->finished())
       ImGui::TextColored(lab.shot->end() == ShotEnd::Rest ? ImVec4(0.6f, 0.9f, 0.6f, 1) : ImVec4(1, 0.7f, 0.3f, 1),
                          "%s after %.2f s", end_text(*lab.shot), lab.shot->sim().time());
@@ -207,6 +208,10 @@ void notes_section(Lab& lab) {
     lab.scene.description = std::move(text);
   }
   mark("notes");
+  // The box does not wrap (ImGui 1.86): the notes as they will read, wrapped, under it.
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextDisabled("%s", lab.scene.description.c_str());
+  ImGui::PopTextWrapPos();
   if (ImGui::SmallButton("Done")) {
     editing = false;
     lab.history.seal();
