@@ -73,6 +73,7 @@ class Lab {
   std::string screenshot_request;  // PNG path: written after the next frame is drawn
   std::optional<Rect> screenshot_crop;  // only this part of the window (a plot), else all of it
   int screenshot_delay = 0;             // frames drawn before it is taken
+  std::string plot_capture;             // the plot (its id) drawn large over the window for that PNG
   std::string strobe_request;      // PNG path: a multiple exposure of the shot, drawn by the next frame
   std::function<void(const Scene&)> on_load;  // after a scene file loaded (gui.cpp frames the camera)
   MarginView margin;            // the shot margin worked out in the background (margin_view.hpp)

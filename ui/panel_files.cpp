@@ -2,6 +2,7 @@
 // preset is never overwritten: Save offers Save as), the trajectory export, and the export naming shared by the
 // plots and pictures.
 #include <imgui.h>
+#include <imgui_internal.h>  // BringWindowToDisplayFront: the plot drawn for its picture goes over the panels
 #include <imgui_stdlib.h>
 
 #include <algorithm>
@@ -215,6 +216,30 @@ std::string export_path(const Lab& lab, const std::string& what, const std::stri
   return unique_path(dir, (lab.scene.name.empty() ? "shotlab" : lab.scene.name) + "-" + what, ext);
 }
 
+namespace {
+
+// The plot asked for as a PNG, drawn again over the middle of the window at most of its size (a side panel's plot
+// is a few hundred pixels wide: too small for a slide), and the picture cropped to it and its margin.
+void draw_plot_capture(Lab& lab, const char* id, const PlotSpec& spec, const std::vector<PlotSeries>& series) {
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  const float w = 0.9f * vp->Size.x, h = std::min(0.5f * w, 0.9f * vp->Size.y);
+  ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + 0.5f * vp->Size.x, vp->Pos.y + 0.5f * vp->Size.y), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::SetNextWindowBgAlpha(1.0f);  // nothing of the panels under it shows through in the picture
+  constexpr ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
+                                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav;
+  if (ImGui::Begin("##plot capture", nullptr, flags)) {
+    ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
+    plot(id, spec, series, ImGui::GetContentRegionAvail().y);
+    const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    lab.screenshot_crop = Rect{at.x, at.y, size.x, size.y};  // the plot and a margin round it
+  }
+  ImGui::End();
+}
+
+}  // namespace
+
 std::optional<double> lab_plot(Lab& lab, const char* id, PlotSpec spec, const std::vector<PlotSeries>& series,
                                float height) {
   spec.hover = lab.screenshot_request.empty();  // no readout in a picture of it
@@ -227,12 +252,14 @@ std::optional<double> lab_plot(Lab& lab, const char* id, PlotSpec spec, const st
     }
     if (a.export_png) {
       lab.screenshot_request = export_path(lab, spec.title, "png");
-      lab.screenshot_crop = a.rect;
+      lab.screenshot_crop = a.rect;  // until the large copy below is drawn
+      lab.plot_capture = id;
       lab.screenshot_delay = 2;  // the menu that asked for it is still drawn in this frame
     }
   } catch (const std::exception& e) {
     lab.say(MessageKind::Refused, e.what());
   }
+  if (!lab.screenshot_request.empty() && lab.plot_capture == id) draw_plot_capture(lab, id, spec, series);
   return a.picked;
 }
 

@@ -52,6 +52,7 @@ void write_screenshot(Lab& lab, int window_w, int window_h) {
   const std::string path = lab.screenshot_request;
   lab.screenshot_request.clear();
   lab.screenshot_crop.reset();
+  lab.plot_capture.clear();
   if (write_window_png(path, x, y, w, h, window_h)) lab.say(MessageKind::Note, "wrote " + path);
   else lab.say(MessageKind::Refused, "cannot write " + path);
 }

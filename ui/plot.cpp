@@ -184,7 +184,9 @@ PlotAction plot(const char* id, const PlotSpec& spec, const std::vector<PlotSeri
     if (const auto t = hover(d, area, spec, series); t && active) out.picked = *t;
   if (ImGui::BeginPopupContextItem("export")) {
     out.export_csv = ImGui::MenuItem("Export CSV");
+    mark("Export CSV");
     out.export_png = ImGui::MenuItem("Export PNG");
+    mark("Export PNG");
     ImGui::EndPopup();
   }
   ImGui::PopID();

@@ -377,6 +377,40 @@ def player(binary, root, display, work):
     app.close()
 
 
+def png_size(path):
+    with open(path, "rb") as f:
+        head = f.read(24)
+    return struct.unpack(">II", head[16:24]) if head[:8] == b"\x89PNG\r\n\x1a\n" else (0, 0)
+
+
+def export_plot_png(app):
+    """A plot's right-click menu, Export PNG: the picture is the plot drawn large, not the panel's small copy."""
+    s = app.state()
+    for _ in range(12):  # the whole plot in the window
+        r = s["widgets"].get("plot motion")
+        if r and r["y"] >= 0 and r["y"] + r["h"] <= s["window"][1]:
+            break
+        app.scroll(app.widget(s, "panel Inspector")["x"] + 60, s["window"][1] // 2, 2 if not r or r["y"] > 0 else -2)
+        s = app.state()
+    plot = app.widget(s, "plot motion")
+    app.click(plot["x"] + plot["w"] / 2, plot["y"] + plot["h"] / 2, button=3)
+    s = app.wait(lambda s: "Export PNG" in s["widgets"], 10, "a right-click on the plot opens its menu")
+    app.click_widget(s, "Export PNG")
+    s = app.wait(lambda s: s["message"].startswith("wrote "), 10, "the plot's PNG is written")
+    path = s["message"][len("wrote "):]
+    w, h = png_size(path) if os.path.isfile(path) else (0, 0)
+    check(w >= 2 * plot["w"] and h >= 2 * plot["h"],
+          f"the plot's picture is {w} x {h} px, at least twice the panel's {plot['w']:.0f} x {plot['h']:.0f}")
+    check("plot motion" in app.state()["widgets"] and app.widget(app.state(), "plot motion")["w"] == plot["w"],
+          "the plot is back in its panel after the picture")
+    for _ in range(12):  # the inspector scrolled back to its tabs
+        s = app.state()
+        if s["widgets"].get("tab Tuning", {"y": -1})["y"] >= 0:
+            break
+        app.scroll(app.widget(s, "panel Inspector")["x"] + 60, s["window"][1] // 2, -3)
+    return s
+
+
 def teacher(binary, root, display, work):
     """The cradle in slow motion, pause, scrub to the impact, switch tabs back and forth (also after a restart)."""
     config = os.path.join(work, "config")
@@ -417,6 +451,7 @@ def teacher(binary, root, display, work):
     check(all(inside(view, r["x"], r["y"]) and inside(view, r["x"] + r["w"], r["y"] + r["h"]) for r in labels),
           "every label lies inside the 3D view")
     app.key("l")
+    s = export_plot_png(app)
 
     for tab in ("Tuning", "Teaching", "Tuning", "Teaching"):
         app.click_widget(s, "tab " + tab)
