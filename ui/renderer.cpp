@@ -312,9 +312,31 @@ void Renderer::draw_table(const TableSpec& t, const Model& model) {
       draw(cylinder_, glm::translate(glm::dmat4(1.0), {pk.center.x, y - 0.0005, pk.center.z}) *
                           glm::scale(glm::dmat4(1.0), {pk.radius, 0.001, pk.radius}),
            {0.02f, 0.02f, 0.02f}, 0, 1);
+  // The pockets' backs (the lined wall a ball meets beyond the hole), as deep as the rails and a hair above the rail
+  // top they are cut into.
+  const glm::vec3 leather{0.16f, 0.09f, 0.05f};
+  for (const Collider& c : model.colliders)
+    if (const auto* w = std::get_if<ArcWall>(&c.shape); w && c.material == kBallPocket)
+      draw_arc_wall(*w, leather, -0.02, rail_top + 0.001);
   // Cloth over the whole bed collider, which reaches rail_width beyond the noses; last, so that the depth test spares
   // shading it under the rails, cushions and pockets drawn over it.
   draw(cube_, slab({-hx - rw, 0, 0}, {hx + rw, 0, 0}, {0, 0, 1}, -hz - rw, hz + rw, -0.02, 0.0), cloth, 0, 1);
+}
+
+// In slabs of at most 10 degrees, each from the outer face's chord inward by the thickness (so that no gaps open
+// between them on the outside).
+void Renderer::draw_arc_wall(const ArcWall& w, const glm::vec3& color, double bottom, double top) {
+  const int n = std::max(1, static_cast<int>(std::ceil(w.half_angle / 0.0873)));
+  const glm::dvec3 side{-w.toward.z, 0, w.toward.x}, axis{w.center.x, 0, w.center.z};
+  auto at = [&](int k) {
+    const double a = w.half_angle * (2.0 * k / n - 1);
+    return std::cos(a) * w.toward + std::sin(a) * side;
+  };
+  for (int k = 0; k < n; ++k) {
+    const glm::dvec3 e0 = at(k), e1 = at(k + 1), out = glm::normalize(e0 + e1);
+    const double outer = w.radius + w.thickness;
+    draw(cube_, slab(axis + outer * e0, axis + outer * e1, out, -w.thickness, 0, bottom, top), color, 0, 1);
+  }
 }
 
 void Renderer::draw_colliders(const Model& model) {
@@ -329,19 +351,7 @@ void Renderer::draw_colliders(const Model& model) {
       draw(cube_, slab(cap->a, cap->b, side, -cap->radius, cap->radius, cap->a.y - cap->radius, cap->a.y + cap->radius),
            grey, 0, 1);
     } else if (const auto* w = std::get_if<ArcWall>(&c.shape)) {
-      // In slabs of at most 10 degrees, each from the outer face's chord inward by the thickness (so that no gaps
-      // open between them on the outside).
-      const int n = std::max(1, static_cast<int>(std::ceil(w->half_angle / 0.0873)));
-      const glm::dvec3 side{-w->toward.z, 0, w->toward.x}, axis{w->center.x, 0, w->center.z};
-      auto at = [&](int k) {
-        const double a = w->half_angle * (2.0 * k / n - 1);
-        return std::cos(a) * w->toward + std::sin(a) * side;
-      };
-      for (int k = 0; k < n; ++k) {
-        const glm::dvec3 e0 = at(k), e1 = at(k + 1), out = glm::normalize(e0 + e1);
-        const double outer = w->radius + w->thickness;
-        draw(cube_, slab(axis + outer * e0, axis + outer * e1, out, -w->thickness, 0, w->bottom, w->top), grey, 0, 1);
-      }
+      draw_arc_wall(*w, grey, w->bottom, w->top);
     } else if (const auto* bp = std::get_if<BoundedPlane>(&c.shape)) {
       glm::dmat4 m(1.0);
       m[0] = glm::dvec4(bp->u, 0);

@@ -45,6 +45,7 @@ class Renderer {
   void draw(const Mesh& mesh, const glm::dmat4& model, const glm::vec3& color, int pattern, float alpha);
   void draw_table(const TableSpec& table, const Model& model);
   void draw_colliders(const Model& model);
+  void draw_arc_wall(const ArcWall& w, const glm::vec3& color, double bottom, double top);  // m: its drawn height
   void build_digits();  // the numerals' glyph atlas (none when the font is missing)
 
   // The mesh shader built twice: for plain surfaces (pattern 0: the table, colliders) and for balls (BALL defined).
