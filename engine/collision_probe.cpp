@@ -63,6 +63,12 @@ CollisionProbe probe_collision(const ContactMaterial& material, double mass, dou
   }
   out.contact_time = end > begin && begin >= 0 ? end - begin : 0;
   for (double& t : out.time) t -= std::max(begin, 0.0);
+  // An overdamped contact pushes no more long before it ends (the clamp holds its force at zero while the ball creeps
+  // out), and the step that ends past it sees no contact: the curve goes on at zero to the end it reports.
+  if (!out.time.empty() && out.time.back() < out.contact_time) {
+    out.time.push_back(out.contact_time);
+    out.force.push_back(0.0);
+  }
   const double after = ball_ball ? velocity(sim.state().x, 1).x - velocity(sim.state().x, 0).x
                                  : -velocity(sim.state().x, 0).x;
   out.restitution = after / speed;

@@ -70,6 +70,20 @@ TEST(Restitution, ContactTimeSetsTheStiffness) {
   }
 }
 
+// A heavily damped cushion (2147 N s/m, as a user dragged it in the tuning panel) stops pushing 0.67 ms into a
+// 6.6 ms contact: the probe's force curve, which the panel plots against that contact time, reaches its end at zero
+// force instead of stopping at the last step that saw the contact (2.15 ms).
+TEST(Restitution, AnOverdampedProbeCurveReachesTheContactsEnd) {
+  ContactMaterial m = default_ball_cushion();
+  m.damping = 2147;
+  const CollisionProbe hit = probe_collision(m, kM, kR, 2.0, false);
+  ASSERT_GT(hit.contact_time, 5e-3);
+  ASSERT_FALSE(hit.time.empty());
+  EXPECT_EQ(hit.time.back(), hit.contact_time);
+  EXPECT_EQ(hit.force.back(), 0.0);
+  EXPECT_EQ(hit.time.size(), hit.force.size());
+}
+
 // In a scene file: restitution replaces the damping, and a value out of range is refused with the field named.
 TEST(Restitution, SceneFileDerivesTheDamping) {
   nlohmann::json doc = {{"materials", {{"ball_cushion", {{"restitution", 0.8}, {"restitution_speed", 1.0}}}}},

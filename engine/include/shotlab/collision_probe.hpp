@@ -15,7 +15,7 @@ struct CollisionProbe {
   double peak_force = 0;         // N
   double restitution = 0;        // separation speed / approach speed
   long steps = 0;                // integrator steps while in contact
-  std::vector<double> time;      // s since the contact began, at every step's end while in contact
+  std::vector<double> time;      // s since the contact began, at every step's end while in contact, and its end
   std::vector<double> force;     // N, the normal force then
 };
 
