@@ -171,7 +171,9 @@ TEST(Pocket, AFlightStepBendsThePathByGravityAcrossAlone) {
     set_velocity(state.x, 0, v0);
     BroadPhase broad;
     const double cap = time_to_possible_contact(p.model, index, state, state.x.data(), 0.25, broad, nullptr, true);
-    if (tilt == 0) EXPECT_NEAR(cap, std::sqrt(inner * inner - p0.x * p0.x) / v0.z, 1e-12) << "the straight path's";
+    if (tilt == 0) {
+      EXPECT_NEAR(cap, std::sqrt(inner * inner - p0.x * p0.x) / v0.z, 1e-12) << "the straight path's";
+    }
     ASSERT_LT(cap, 0.25);
     for (int k = 1; k <= 1000; ++k) {
       const double t = cap * k / 1000;
