@@ -179,10 +179,16 @@ void Lab::physics_changed() {
   }
   scene_changed();
   if (!shot) return;
+  // The new run is shown at the moment the old one was, playing or paused as it was: a change made while stepping
+  // through a contact stays at that contact.
+  const bool was_playing = playing;
+  const double at = view_time;
   Scene start = shot->start();
   start.model = scene.model;
   start_shot(start);
-  playing = shot != nullptr;
+  if (!shot) return;
+  seek(at);
+  playing = was_playing && !shot_over();
 }
 
 std::vector<std::string> Lab::physics_changes() const {
@@ -415,12 +421,17 @@ void Lab::pause_on_events(double from, double to) {
     const bool begin = e.kind == "contact_begin" && e.bodies.size() == 2;
     const bool ball_ball = begin && scene_ball(shot->start(), e.bodies[1]) >= 0;
     const bool cushion = begin && (e.bodies[1].rfind("cushion", 0) == 0 || e.bodies[1].rfind("jaw", 0) == 0);
-    if ((p.ball_ball && ball_ball) || (p.cushion && cushion) || (p.pocketed && e.kind == "pocketed")) {
+    const char* kind = p.ball_ball && ball_ball ? "a ball-ball contact"
+                       : p.cushion && cushion    ? "a cushion contact"
+                       : p.pocketed && e.kind == "pocketed" ? "a pocketed ball"
+                                                            : nullptr;
+    if (kind) {
       ++events_seen_;
       playing = false;
       show(e.time);
       std::string who = e.bodies.empty() ? "" : e.bodies[0] + (e.bodies.size() > 1 ? " - " + e.bodies[1] : "");
-      say(MessageKind::Note, "paused at " + e.kind + " " + who + ", t = " + fixed(e.time, 6) + " s");
+      say(MessageKind::Note, std::string("paused at ") + kind + " (" + who + "), t = " + fixed(e.time, 6) +
+                                 " s: Pause on events, in the Tuning tab");
       return;
     }
   }

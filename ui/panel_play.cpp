@@ -28,7 +28,10 @@ const char* end_text(const Shot& s) {
 
 void transport_buttons(Lab& lab) {
   const char* main = lab.shot ? (lab.playing ? "Pause" : "Play") : "Shoot";
-  if (ImGui::Button(main)) {
+  // As wide as its widest label: Play and Pause taking turns must not move the buttons after it to another row.
+  float width = 0;
+  for (const char* label : {"Pause", "Play", "Shoot"}) width = std::max(width, ImGui::CalcTextSize(label).x);
+  if (ImGui::Button(main, ImVec2(width + 2 * ImGui::GetStyle().FramePadding.x, 0))) {
     if (!lab.shot) lab.shoot();
     else if (lab.shot_over() && !lab.playing) lab.replay();
     else lab.playing = !lab.playing;
@@ -102,6 +105,16 @@ void playback_section(Lab& lab) {
   f.label("safety limit");
   slider("##limit", lab.settings.safety_limit, 5.0, 600.0, "%.0f s simulated", true);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("a shot runs until every ball rests, or this long (the next shot)");
+  // Kept from session to session: said here, so that a shot that stops by itself is not a mystery.
+  const PauseOn& p = lab.settings.pause_on;
+  if (p.ball_ball || p.cushion || p.pocketed) {
+    std::string on;
+    for (const auto& [set, name] : {std::pair{p.ball_ball, "ball-ball contacts"},
+                                    std::pair{p.cushion, "cushion contacts"}, std::pair{p.pocketed, "pocketed balls"}})
+      if (set) on += (on.empty() ? "" : ", ") + std::string(name);
+    ImGui::TextWrapped("pauses at %s (Tuning: Pause on events)", on.c_str());
+    mark("pause on events");
+  }
 }
 
 void tool_buttons(Lab& lab) {

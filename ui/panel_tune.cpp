@@ -149,17 +149,23 @@ void probe_readout(Lab& lab, const Tuning& t, int k) {
   readout(std::string("contact_time ") + *kPairs[k], p.contact_time);
   readout(std::string("restitution ") + *kPairs[k], p.restitution);
   PlotSpec spec{"probe force", "N", -1, 0, std::max(p.contact_time, 1e-9)};
+  spec.seekable = false;  // its own collision, not the shot's: no time of the shot to go to
   lab_plot(lab, (std::string("probe_") + *kPairs[k]).c_str(), spec,
            {{"normal force", IM_COL32(255, 110, 90, 255), p.time, p.force}}, em(110));
 }
 
+// In a box of fixed height, and the A line always there: a change never moves the sliders below, where the next
+// click would otherwise land on another field than the one just edited.
 void changes_section(Lab& lab) {
   const auto changes = lab.physics_changes();
+  const float box = 3 * ImGui::GetTextLineHeightWithSpacing() + 2 * ImGui::GetStyle().WindowPadding.y;
+  ImGui::BeginChild("changes", ImVec2(0, box), true);
   if (changes.empty()) ImGui::TextDisabled("the scene file's values (nothing changed)");
   for (const std::string& c : changes) {
     ImGui::Bullet();
     ImGui::TextWrapped("%s", c.c_str());
   }
+  ImGui::EndChild();
   ImGui::BeginDisabled(changes.empty());
   if (ImGui::Button("Reset to the scene's values")) lab.reset_physics();
   mark("Reset physics");
@@ -171,7 +177,12 @@ void changes_section(Lab& lab) {
     ImGui::SetTooltip("keep this shot's trails as A: later changes are drawn as B over it");
   ImGui::EndDisabled();
   ImGui::Checkbox("A/B overlay", &lab.settings.view.compare);
-  if (!lab.compare.empty()) ImGui::TextDisabled("%s (dashed grey)", lab.compare_label.c_str());
+  // One short line whatever it says (the reason above), the rest in its tooltip.
+  ImGui::TextDisabled("%s", lab.compare.empty() ? "A: none yet" : lab.compare_label.c_str());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("%s", !lab.compare.empty()       ? "A's trails are the dashed grey lines"
+                            : lab.settings.view.compare ? "the first change pins the shot before it as A"
+                                                        : "Pin as A, or the overlay on: the first change pins one");
 }
 
 bool world_section(Lab& lab) {
@@ -293,10 +304,15 @@ void tune_panel(Lab& lab, Tuning& tuning) {
   const bool world = ImGui::CollapsingHeader("World and integrator");
   mark("World and integrator");
   if (world) changed |= world_section(lab);
-  if (ImGui::CollapsingHeader("Pause on events")) {
+  const bool pauses = ImGui::CollapsingHeader("Pause on events");
+  mark("Pause on events");
+  if (pauses) {
     PauseOn& p = lab.settings.pause_on;
-    ImGui::Checkbox("ball-ball contact", &p.ball_ball), ImGui::SameLine();
-    ImGui::Checkbox("cushion contact", &p.cushion), ImGui::SameLine();
+    ImGui::Checkbox("ball-ball contact", &p.ball_ball);
+    mark("pause at ball-ball contacts");
+    same_line_if_checkbox_fits("cushion contact");
+    ImGui::Checkbox("cushion contact", &p.cushion);
+    same_line_if_checkbox_fits("pocketed");
     ImGui::Checkbox("pocketed", &p.pocketed);
   }
   if (ImGui::CollapsingHeader("Integrator diagnostics", ImGuiTreeNodeFlags_DefaultOpen)) {

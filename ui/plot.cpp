@@ -151,7 +151,7 @@ std::optional<double> hover(ImDrawList* d, const Area& p, const PlotSpec& spec, 
   for (const PlotSeries& s : series)
     if (const auto y = value_at(s, t)) tip += "\n" + s.name + ": " + with_unit(*y, spec.unit);
   if (!spec.hint.empty()) tip += "\n" + spec.hint;
-  ImGui::SetTooltip("%s\n(click: go to this time; right-click: export)", tip.c_str());
+  ImGui::SetTooltip("%s\n(%sright-click: export)", tip.c_str(), spec.seekable ? "click: go to this time; " : "");
   return t;
 }
 
@@ -181,7 +181,7 @@ PlotAction plot(const char* id, const PlotSpec& spec, const std::vector<PlotSeri
   time_axis(d, area, spec, o.x, width);
   curves(d, area, spec, series);
   if (hovered && spec.hover)
-    if (const auto t = hover(d, area, spec, series); t && active) out.picked = *t;
+    if (const auto t = hover(d, area, spec, series); t && active && spec.seekable) out.picked = *t;
   if (ImGui::BeginPopupContextItem("export")) {
     out.export_csv = ImGui::MenuItem("Export CSV");
     mark("Export CSV");

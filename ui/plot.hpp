@@ -30,6 +30,7 @@ struct PlotSpec {
   std::string origin_name = "";  // "contact start": the axis reads "time since contact start"; "" for the shot's time
   std::string hint = "";         // what to look for: a last line under the pointer's readout
   bool hover = true;             // the pointer's line and readout (off while the plot is captured as a picture)
+  bool seekable = true;          // a click picks a time of the shot (a probe's own collision: no)
 };
 
 struct PlotAction {

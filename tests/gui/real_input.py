@@ -377,6 +377,18 @@ def player(binary, root, display, work):
     app.close()
 
 
+def scroll_into_view(app, name):
+    """Wheel over the inspector until the widget lies wholly inside the window; returns the state then."""
+    s = app.state()
+    for _ in range(12):
+        r = s["widgets"].get(name)
+        if r and r["y"] >= 0 and r["y"] + r["h"] <= s["window"][1]:
+            break
+        app.scroll(app.widget(s, "panel Inspector")["x"] + 60, s["window"][1] // 2, 2 if not r or r["y"] > 0 else -2)
+        s = app.state()
+    return s
+
+
 def png_size(path):
     with open(path, "rb") as f:
         head = f.read(24)
@@ -385,13 +397,7 @@ def png_size(path):
 
 def export_plot_png(app):
     """A plot's right-click menu, Export PNG: the picture is the plot drawn large, not the panel's small copy."""
-    s = app.state()
-    for _ in range(12):  # the whole plot in the window
-        r = s["widgets"].get("plot motion")
-        if r and r["y"] >= 0 and r["y"] + r["h"] <= s["window"][1]:
-            break
-        app.scroll(app.widget(s, "panel Inspector")["x"] + 60, s["window"][1] // 2, 2 if not r or r["y"] > 0 else -2)
-        s = app.state()
+    s = scroll_into_view(app, "plot motion")
     plot = app.widget(s, "plot motion")
     app.click(plot["x"] + plot["w"] / 2, plot["y"] + plot["h"] / 2, button=3)
     s = app.wait(lambda s: "Export PNG" in s["widgets"], 10, "a right-click on the plot opens its menu")
@@ -545,6 +551,7 @@ def developer(binary, root, display, work):
     app.click_widget(s, "tab Tuning")
     s = app.state()
     if check("ball_pocket" in s["widgets"], "the cut's Tuning tab lists the pockets' lining"):
+        s = scroll_into_view(app, "ball_pocket")
         app.click_widget(s, "ball_pocket")
         s = app.wait(lambda s: "restitution ball_pocket" in s["readouts"], 30, "the lining's probe is shown")
         e = s["readouts"]["restitution ball_pocket"]
@@ -560,6 +567,50 @@ def developer(binary, root, display, work):
         s = app.wait(lambda s: s["readouts"].get("contact_time ball_pocket", before) != before, 30,
                      "the lining's contact time follows its stiffness")
         check(abs(s["physics"]["materials"]["ball_pocket"]["stiffness"] - 3e8) < 1, "the lining's stiffness is set")
+    app.close()
+    tune_while_paused(binary, root, display, work)
+
+
+def tune_while_paused(binary, root, display, work):
+    """Paused inside a shot, a developer types two stiffnesses at the same spot on the screen: each is taken by the
+    stiffness (the panel does not move under the pointer), and the shot stays paused at the moment it was."""
+    app = App(binary, display, work, os.path.join(root, "presets", "cut.json"))
+    app.key("s")
+    app.wait(lambda s: s["view_time"] > 0.5, 30, "the cut plays past 0.5 s")
+    app.key("space")
+    s = app.state()
+    paused_at = s["view_time"]
+    check(not s["playing"], f"Space pauses (t = {paused_at:.4f} s)")
+    app.click_widget(s, "tab Tuning")
+    s = app.state()
+    field = app.widget(s, "stiffness ball_ball")
+    x, y = field["x"] + field["w"] / 2, field["y"] + field["h"] / 2
+    damping = s["physics"]["materials"]["ball_ball"]["damping"]
+    for value in (1e9, 3e9):
+        app.click(x, y, mods=("ctrl",))
+        app.key("ctrl+a")
+        app.type(f"{value:g}")
+        app.key("Return")
+        s = app.wait(lambda s: abs(s["physics"]["materials"]["ball_ball"]["stiffness"] - value) < 1, 10,
+                     f"a click at the same spot types the stiffness {value:g}")
+        check(s["physics"]["materials"]["ball_ball"]["damping"] == damping, "and leaves the damping as it was")
+        time.sleep(0.5)
+        s = app.state()
+        check(not s["playing"] and abs(s["view_time"] - paused_at) < 1e-9,
+              f"the new run is shown paused at the same moment (t = {s['view_time']:.4f} s, playing {s['playing']})")
+    # Pause on events: the shot stops at the hit, the note says why in words, Playback says it will.
+    s = scroll_into_view(app, "Pause on events")
+    app.click_widget(s, "Pause on events")
+    s = scroll_into_view(app, "pause at ball-ball contacts")
+    app.click_widget(s, "pause at ball-ball contacts")
+    app.key("s")
+    s = app.wait(lambda s: s["message"].startswith("paused at"), 30, "the shot pauses at the hit")
+    check(not s["playing"] and "a ball-ball contact (cue - 1)" in s["message"] and "Pause on events" in s["message"],
+          f"the note names the contact in words and the setting ({s['message']!r})")
+    check("pause on events" in s["widgets"], "Playback says the shot will pause at events")
+    s = scroll_into_view(app, "pause at ball-ball contacts")
+    app.click_widget(s, "pause at ball-ball contacts")
+    check("pause on events" not in app.state()["widgets"], "and says nothing once no event pauses it")
     app.close()
 
 

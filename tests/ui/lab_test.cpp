@@ -335,6 +335,29 @@ TEST_F(LabTest, ShotsAndEditsShareOneUndoStack) {
 
 // Undoing an aim and two shots and redoing them all brings back every step, the shots running again: redoing a shot
 // used to record it anew, which emptied the redo list after it (a user trial lost its second shot that way).
+// A developer pauses inside a collision and changes a material: the shot is simulated again with it and shown at the
+// same moment, still paused (it used to start over from t = 0 and play); while playing it plays on from there.
+TEST_F(LabTest, ATuningChangeKeepsThePausedMoment) {
+  load("cut.json");
+  lab.shoot();
+  lab.seek(0.5);
+  ASSERT_FALSE(lab.playing);
+  const Vec3 before = position(lab.frame().state.x, 0);
+  lab.scene.model.materials.at(kBallBall).stiffness *= 4;
+  lab.physics_changed();
+  ASSERT_TRUE(lab.shot);
+  EXPECT_FALSE(lab.playing);
+  EXPECT_DOUBLE_EQ(lab.view_time, 0.5);
+  EXPECT_GE(lab.shot->sim().time(), 0.5);
+  EXPECT_GT(glm::length(position(lab.frame().state.x, 0) - before), 1e-9);  // the new run's cue ball, not the old one
+  lab.playing = true;
+  lab.scene.model.materials.at(kBallBall).stiffness /= 4;
+  lab.physics_changed();
+  EXPECT_TRUE(lab.playing);
+  EXPECT_DOUBLE_EQ(lab.view_time, 0.5);
+  EXPECT_EQ(position(lab.frame().state.x, 0), before);  // the first run again, at the same moment
+}
+
 TEST_F(LabTest, RedoingAShotKeepsTheStepsAfterIt) {
   load("cut.json");
   lab.nudge_aim(1.0);
