@@ -398,6 +398,13 @@ void EventDetector::scan(const StepSpan& span, const State& state, const StepCon
     events.push_back({t, transition_kind(m0, m1), {model_.balls[i].id}});
     motion_[i] = m1;
   }
+  // A ball that left play inside the step is frozen from then on (Island::settle): what the step's interpolant has it
+  // do later (land on the pocket's floor, touch the pocket's back) never happened.
+  for (const Exit& x : exits)
+    events.erase(std::remove_if(events.begin() + first_new, events.end(), [&](const Event& e) {
+                   return e.time > x.time && std::find(e.bodies.begin(), e.bodies.end(), model_.balls[x.ball].id) !=
+                                                 e.bodies.end();
+                 }), events.end());
   std::stable_sort(events.begin() + first_new, events.end(),
                    [](const Event& a, const Event& b) { return a.time < b.time; });
 }

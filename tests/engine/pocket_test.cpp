@@ -1,6 +1,7 @@
 // Pockets (docs/model.md#pockets): a firm pot stays down, the back of the pocket stops it, and the back stands where no
 // ball coming through the mouth along the bed can touch it before it is over the hole.
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "engine/contacts.hpp"
@@ -28,6 +29,26 @@ TEST(Pocket, AFirmCutStaysDown) {
     EXPECT_EQ(pocket_of(load_scene(preset("cut.json"), {std::string("cue.speed=") + speed}), "1"),
               "pocket-right-front")
         << "cue speed " << speed << " m/s";
+}
+
+// A ball that drops is out of play from that moment: no event has it land on the pocket's floor or touch the back
+// afterwards (the step it left in used to report what its interpolant did there: "landed", then "contact_begin" with
+// the back, which the contact log drew as a 5 s contact of no force).
+TEST(Pocket, NoEventFollowsABallOutOfPlay) {
+  for (const char* name : {"cut.json", "follow.json", "break.json"}) {
+    auto sim = simulate(load_scene(preset(name)));
+    run_until(*sim, 10.0, [&] { return sim->at_rest(); }, 1.0 / 60);
+    std::map<std::string, double> gone;  // ball -> when it left play
+    int exits = 0;
+    for (const Event& e : sim->events()) {
+      if (e.kind == "pocketed" || e.kind == "off_table") gone.emplace(e.bodies[0], e.time), ++exits;
+      for (const std::string& body : e.bodies)
+        if (const auto it = gone.find(body); it != gone.end() && e.time > it->second)
+          ADD_FAILURE() << name << ": " << e.kind << " of " << body << " at " << e.time << " s, out of play since "
+                        << it->second << " s";
+    }
+    EXPECT_GT(exits, 0) << name << ": a ball goes down";
+  }
 }
 
 // A ball rolled along the front rail into the corner pocket, 1 mm off the cushion: it crosses the hole off its axis
