@@ -28,6 +28,15 @@ std::vector<ContactTrace> spans_from(const std::vector<Event>& events, const Mod
       if (auto it = open.find(key); it != open.end()) out[it->second].end = e.time, open.erase(it);
     }
   }
+  // A ball that leaves play (down a pocket, off the table) ends its contacts there: no contact_end comes for them.
+  for (const Event& e : events) {
+    if ((e.kind != "pocketed" && e.kind != "off_table") || e.bodies.empty()) continue;
+    for (auto it = open.begin(); it != open.end();) {
+      const bool mine = it->first.first == e.bodies[0] || it->first.second == e.bodies[0];
+      if (mine && out[it->second].begin <= e.time) out[it->second].end = e.time, it = open.erase(it);
+      else ++it;
+    }
+  }
   return out;
 }
 
@@ -43,6 +52,9 @@ void sample(const StepView& step, double t, const std::vector<size_t>& live, std
   const Model& m = step.model;
   State probe{t, {}, step.state.in_play, {}, {}, {}, {}};
   step.state_at(t, probe.x);
+  // A traced ball that left play in this step was in play until then (the trace ends where it left).
+  for (size_t k : live)
+    if (const int ball = m.ball_index(traces[k].a); ball >= 0) probe.in_play[ball] = 1;
   const std::vector<Contact> list = contacts(m, probe);
   for (size_t k : live) {
     ContactTrace& tr = traces[k];

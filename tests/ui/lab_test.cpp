@@ -91,6 +91,26 @@ TEST(Shot, ContactLogTracesTheCollisionForce) {
   EXPECT_GT(hit->peak_force(), 500.0);
 }
 
+// The cut's object ball meets the pocket's back and drops while still touching it: its contact ends where the ball
+// left play (no contact_end event comes), with the force it pushed with, not 5 s of nothing to the shot's end.
+TEST(Shot, ContactLogEndsAContactWhereItsBallLeavesPlay) {
+  Scene s = load_scene(test::preset("cut.json"));
+  Shot shot(s);
+  run_to_end(shot);
+  double pocketed = -1;
+  for (const Event& e : shot.sim().events())
+    if (e.kind == "pocketed" && e.bodies[0] == "1") pocketed = e.time;
+  ASSERT_GT(pocketed, 0);
+  const ContactLog log = trace_contacts(s, shot.sim().events(), shot.sim().time());
+  const ContactTrace* back = nullptr;
+  for (const ContactTrace& c : log.contacts)
+    if (c.a == "1" && c.b.find("-back") != std::string::npos && c.begin < pocketed) back = &c;
+  ASSERT_NE(back, nullptr) << "the 1 ball meets a pocket's back before it drops";
+  EXPECT_GT(back->end, back->begin);
+  EXPECT_LE(back->end, pocketed);
+  EXPECT_GT(back->peak_force(), 1.0);  // N
+}
+
 // The elasticity control: the damping it finds gives the wanted restitution in the probe it was solved on.
 TEST(Elasticity, DampingForRestitutionHitsTheWantedValue) {
   const Scene s = load_scene(test::preset("cradle.json"));
