@@ -91,17 +91,23 @@ TEST(Shot, ContactLogTracesTheCollisionForce) {
   EXPECT_GT(hit->peak_force(), 500.0);
 }
 
-// The cut's object ball meets the pocket's back and drops while still touching it: its contact ends where the ball
-// left play (no contact_end event comes), with the force it pushed with, not 5 s of nothing to the shot's end.
+// A ball that drops while it still touches the pocket's back gets no contact_end: its contact ends where the ball
+// left play, with the force it pushed with, not open with no force to the shot's end. The cut's object ball touches
+// the back before it drops; its contact_end is taken out of the events to make it such a contact.
 TEST(Shot, ContactLogEndsAContactWhereItsBallLeavesPlay) {
   Scene s = load_scene(test::preset("cut.json"));
   Shot shot(s);
   run_to_end(shot);
   double pocketed = -1;
-  for (const Event& e : shot.sim().events())
+  std::vector<Event> events;
+  for (const Event& e : shot.sim().events()) {
     if (e.kind == "pocketed" && e.bodies[0] == "1") pocketed = e.time;
+    if (e.kind != "contact_end" || e.bodies[0] != "1" || e.bodies[1].find("-back") == std::string::npos)
+      events.push_back(e);
+  }
   ASSERT_GT(pocketed, 0);
-  const ContactLog log = trace_contacts(s, shot.sim().events(), shot.sim().time());
+  ASSERT_LT(events.size(), shot.sim().events().size());
+  const ContactLog log = trace_contacts(s, events, shot.sim().time());
   const ContactTrace* back = nullptr;
   for (const ContactTrace& c : log.contacts)
     if (c.a == "1" && c.b.find("-back") != std::string::npos && c.begin < pocketed) back = &c;
