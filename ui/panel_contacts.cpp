@@ -14,8 +14,12 @@ namespace {
 
 int contacts_table(const ContactLog& log, int selected) {
   const float rows = std::min<float>(log.contacts.size(), 8) + 1.5f;
-  if (!ImGui::BeginTable("contacts", 5, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp,
-                         ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * rows)))
+  // Each column as wide as its widest cell and the table scrolled across in a narrow panel: cut names and headers
+  // ("1 - pocket-right-frc", "begins...") told two rows apart by nothing.
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX |
+                                ImGuiTableFlags_SizingFixedFit;
+  const float scrollbar = ImGui::GetStyle().ScrollbarSize;
+  if (!ImGui::BeginTable("contacts", 5, flags, ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * rows + scrollbar)))
     return selected;
   ImGui::TableSetupScrollFreeze(0, 1);
   for (const char* h : {"pair", "begins (s)", "lasts (ms)", "peak (N)", "depth (um)"}) ImGui::TableSetupColumn(h);
@@ -56,6 +60,7 @@ void contacts_section(Lab& lab) {
   for (double d : c.depth) depth_um.push_back(d * 1e6);
   PlotSpec force{"normal force, " + c.label(), "N", lab.view_time, c.begin, end};
   PlotSpec depth{"penetration, " + c.label(), "um", lab.view_time, c.begin, end};
+  for (PlotSpec* spec : {&force, &depth}) spec->origin = c.begin, spec->origin_name = "contact start";
   if (const auto t = lab_plot(lab, "contact_force", force, {{"force", IM_COL32(255, 110, 90, 255), c.time, c.force}}, em(120)))
     lab.seek(*t);
   if (const auto t = lab_plot(lab, "contact_depth", depth, {{"depth", IM_COL32(120, 230, 120, 255), c.time, depth_um}}, em(120)))

@@ -243,26 +243,27 @@ bool world_section(Lab& lab) {
   return changed;
 }
 
+// Wrapped: in a narrow inspector a line cut at the edge loses its last figure.
 void diagnostics(const Lab& lab) {
   if (!lab.shot) return ImGui::TextDisabled("Shoot to see the integrator at work.");
   const Simulation& sim = lab.shot->sim();
   const Stats& s = sim.stats();
   if (sim.model().options.contact == ContactModel::Rigid) {  // no integration: events only
-    ImGui::Text("rigid model: %ld collisions and changes of motion", s.steps);
-    ImGui::Text("last frame: %ld event(s), %.2f ms", lab.shot->last_steps(), lab.shot->last_wall() * 1e3);
-    ImGui::Text("%zu ball(s) moving", sim.island_balls().size());
+    ImGui::TextWrapped("rigid model: %ld collisions and changes of motion", s.steps);
+    ImGui::TextWrapped("last frame: %ld event(s), %.2f ms", lab.shot->last_steps(), lab.shot->last_wall() * 1e3);
+    ImGui::TextWrapped("%zu ball(s) moving", sim.island_balls().size());
     if (sim.status() != Status::Ok) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "stopped: %s", status_name(sim.status()));
     return;
   }
-  ImGui::Text("%s: %ld steps, %ld rejected, %ld rhs", method_name(sim.model().integrator.method), s.steps,
+  ImGui::TextWrapped("%s: %ld steps, %ld rejected, %ld rhs", method_name(sim.model().integrator.method), s.steps,
               s.rejected_steps, s.rhs_evaluations);
-  ImGui::Text("last frame: %ld steps, %ld rhs, %.2f ms", lab.shot->last_steps(), lab.shot->last_rhs(),
+  ImGui::TextWrapped("last frame: %ld steps, %ld rhs, %.2f ms", lab.shot->last_steps(), lab.shot->last_rhs(),
               lab.shot->last_wall() * 1e3);
-  ImGui::Text("last step %.3g s   real-time factor %.1f", s.last_step, lab.shot->realtime_factor());
+  ImGui::TextWrapped("last step %.3g s   real-time factor %.1f", s.last_step, lab.shot->realtime_factor());
   size_t largest = 0;
   const std::vector<std::vector<int>> islands = sim.island_balls();
   for (const auto& balls : islands) largest = std::max(largest, balls.size());
-  ImGui::Text("islands: %zu (the largest holds %zu ball%s)", islands.size(), largest, largest == 1 ? "" : "s");
+  ImGui::TextWrapped("islands: %zu (the largest holds %zu ball%s)", islands.size(), largest, largest == 1 ? "" : "s");
   if (sim.status() == Status::StepLimit)
     ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "STEP LIMIT HIT: raise max steps or loosen the model");
   else if (sim.status() != Status::Ok)
@@ -319,7 +320,9 @@ void tune_panel(Lab& lab, Tuning& tuning) {
     diagnostics(lab);
     step_plot(lab);
   }
-  if (ImGui::CollapsingHeader("Contacts of the shot")) contacts_section(lab);
+  const bool contacts = ImGui::CollapsingHeader("Contacts of the shot");
+  mark("Contacts of the shot");
+  if (contacts) contacts_section(lab);
   const bool measured = ImGui::CollapsingHeader("Measured shot", lab.measured.shot ? ImGuiTreeNodeFlags_DefaultOpen : 0);
   mark("Measured shot");
   if (measured) measured_section(lab);
