@@ -239,6 +239,7 @@ int run_gui(const GuiOptions& options) {
         settings.panels.left_open = left_panel(lab, settings.camera, layout.left);
         settings.panels.right_open = inspector_panel(lab, tuning, layout.right);
         help_panel(&settings.view.help);
+        readout("popup open", ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) ? 1.0 : 0.0);  // for the GUI tests
         if (std::string note = take_slider_note(); !note.empty()) lab.say(MessageKind::Refused, std::move(note));
         message_banner(lab, layout.view);
         status_line(lab, layout.view, frame_seconds, slept);

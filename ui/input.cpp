@@ -6,6 +6,8 @@
 //  - Right drag orbits, middle or shift+right drag pans, the wheel zooms.
 // Keys come from the key queue (keys.hpp) so that a short tap is never lost; help_panel lists them for the user.
 #include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_internal.h>  // ClosePopupsExceptModals
 
 #include <algorithm>
 #include <cmath>
@@ -144,6 +146,9 @@ void handle_input(Lab& lab, Camera& camera, const Viewport& vp, MouseDrag& drag,
   const bool covered = io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
   for (const KeyPress& k : take_key_presses())
     if (!covered) key(lab, camera, k);
+  // Escape closes an open list or menu (ImGui does so only under keyboard navigation, which would take the arrow
+  // keys from the aim); a dialog (Open, Save as) handles it itself as Cancel.
+  if (covered && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) ImGui::ClosePopupsExceptModals();
   const glm::dvec2 mouse{io.MousePos.x, io.MousePos.y};
   const auto at = vp.pick_plane(mouse, ball_height(lab));
   const bool free = over_view && !io.WantCaptureMouse;

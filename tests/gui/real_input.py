@@ -543,6 +543,11 @@ def developer(binary, root, display, work):
     s = app.wait(lambda s: s["physics"]["materials"]["ball_ball"]["friction_law"] == "constant", 30,
                  "the constant law is chosen from the combo")
     check(any("friction_law" in c for c in s["physics"]["changes"]), "the law's change is listed")
+    app.click_widget(s, "friction law")
+    s = app.wait(lambda s: s["readouts"]["popup open"] == 1, 10, "the friction law's list opens")
+    app.key("Escape")
+    s = app.wait(lambda s: s["readouts"]["popup open"] == 0, 10, "Escape closes the list")
+    check(s["physics"]["materials"]["ball_ball"]["friction_law"] == "constant", "and chooses nothing")
     check("ball_pocket" not in s["widgets"], "no pockets' lining on the cradle, which has no table")
     app.close()
     # A table with pockets: the pockets' lining is tuned like any pair, its probe reads back its restitution.
