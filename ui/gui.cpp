@@ -35,7 +35,6 @@ std::atomic<bool> interrupted{false}, dump_requested{false};
 extern "C" void on_signal(int) { interrupted = true; }
 extern "C" void on_dump_signal(int) { dump_requested = true; }
 
-constexpr float kBaseFontPx = 15;          // the UI font at scale 1
 // Presentation mode's fonts and widgets, times the UI scale: 1.7 on a 1920 x 1080 window, less on a smaller one in
 // proportion (projected full screen, its pixels are larger), down to 1.25: text keeps its size on the wall and the
 // panels their room.

@@ -24,6 +24,7 @@ struct Layout {
 
 inline constexpr float kMinViewShare = 0.45f;  // of the window width, kept for the 3D view
 inline constexpr float kMinPanelWidth = 200;   // pixels: narrower, a panel's sliders are unusable
+inline constexpr float kBaseFontPx = 15;       // the UI font at scale 1: the panels' widths are given at it
 
 Layout layout_panels(float window_w, float window_h, const PanelRequest& left, const PanelRequest& right);
 

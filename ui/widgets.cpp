@@ -126,6 +126,22 @@ bool begin_side_panel(const char* name, const Rect& where, bool want_open, bool 
   return open;
 }
 
+void panel_width_grip(float& width, float scale, float standard) {
+  static bool dragging = false;
+  const ImGuiIO& io = ImGui::GetIO();
+  const ImVec2 p = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  const float grip = 0.75f * ImGui::GetStyle().WindowPadding.x;  // inside the padding: no widget lies there
+  const bool over = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows) && io.MousePos.x >= p.x &&
+                    io.MousePos.x < p.x + grip && io.MousePos.y > p.y + ImGui::GetFrameHeight() &&
+                    io.MousePos.y < p.y + size.y;
+  mark_rect("panel width grip", Rect{p.x, p.y + ImGui::GetFrameHeight(), grip, size.y - ImGui::GetFrameHeight()});
+  if (over && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) width = standard, dragging = false;
+  else if (over && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) dragging = true;
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) dragging = false;
+  if (over || dragging) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+  if (dragging) width = std::max(kMinPanelWidth, width - io.MouseDelta.x / scale);
+}
+
 ImVec4 panel_background() {
   ImVec4 c = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
   c.w = 1;

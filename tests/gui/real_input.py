@@ -123,6 +123,15 @@ class App:
             self.xdotool("keyup", m)
         time.sleep(0.25)
 
+    def double_click(self, x, y):
+        self.hover(x, y)
+        for _ in range(2):  # well inside ImGui's 0.3 s between the two
+            self.xdotool("mousedown", "1")
+            time.sleep(PRESS)
+            self.xdotool("mouseup", "1")
+            time.sleep(0.05)
+        time.sleep(0.25)
+
     def drag(self, x0, y0, x1, y1, button=1, steps=12, mods=()):
         self.hover(x0, y0)
         for m in mods:
@@ -780,6 +789,20 @@ def layout(binary, root, display, work):
         view, panel = s["view"], s["widgets"]["panel Inspector"]
         check(abs(panel["x"] + panel["w"] - size[0]) < 1.5, f"{size}: the inspector is at the right edge")
         check(all(inside(view, *c) for c in s["table_corners"]), f"{size}: the table fits between the panels")
+        if size == (1920, 1080):  # room to spare: the inspector's left edge dragged 300 px widens it
+            grip = app.widget(s, "panel width grip")
+            gx, gy = grip["x"] + grip["w"] / 2, grip["y"] + grip["h"] / 2
+            app.drag(gx, gy, gx - 300, gy)
+            s = app.state()
+            wide = app.widget(s, "panel Inspector")
+            check(abs(wide["w"] - panel["w"] - 300) < 8 and abs(wide["x"] + wide["w"] - size[0]) < 1.5,
+                  f"{size}: a drag of the inspector's edge widens it ({panel['w']:.0f} -> {wide['w']:.0f} px)")
+            check(all(inside(s["view"], *c) for c in s["table_corners"]), f"{size}: the table still fits")
+            grip = app.widget(s, "panel width grip")
+            app.double_click(grip["x"] + grip["w"] / 2, gy)
+            s = app.state()
+            check(abs(app.widget(s, "panel Inspector")["w"] - panel["w"]) < 1.5, f"{size}: a double click restores it")
+            view = s["view"]
         app.key("F3")
         s2 = app.state()
         check(s2["view"]["w"] > view["w"] + 100 and all(inside(s2["view"], *c) for c in s2["table_corners"]),
