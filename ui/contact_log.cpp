@@ -54,7 +54,8 @@ void sample(const StepView& step, double t, const std::vector<size_t>& live, std
   step.state_at(t, probe.x);
   // A traced ball that left play in this step was in play until then (the trace ends where it left).
   for (size_t k : live)
-    if (const int ball = m.ball_index(traces[k].a); ball >= 0) probe.in_play[ball] = 1;
+    for (const std::string* body : {&traces[k].a, &traces[k].b})
+      if (const int ball = m.ball_index(*body); ball >= 0) probe.in_play[ball] = 1;
   const std::vector<Contact> list = contacts(m, probe);
   for (size_t k : live) {
     ContactTrace& tr = traces[k];

@@ -260,6 +260,7 @@ int run_gui(const GuiOptions& options) {
 
         if (!lab.screenshot_request.empty() && lab.screenshot_delay > 0) --lab.screenshot_delay;
         else if (!lab.screenshot_request.empty()) write_screenshot(lab, w, h);
+        lab.plot_capture_drawn = false;  // the next frame's panels say again
         const ScreenInfo screen{w, h, layout.view, &viewport, &marks(), &readouts(), mouse.x, mouse.y, host.fps,
                                 frame_seconds * 1e3, ++frame};
         if (dump_requested.exchange(false)) write_state(lab, screen, options.dump_state);

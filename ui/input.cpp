@@ -144,11 +144,11 @@ void handle_input(Lab& lab, Camera& camera, const Viewport& vp, MouseDrag& drag,
   // Nothing behind a text field or an open dialog or list (Open, Save as, a combo's) hears the keys: Return in Save as
   // must not shoot, nor Delete there remove a ball.
   const bool covered = io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
+  // Escape closes an open list or menu (ImGui does so only under keyboard navigation, which would take the arrow
+  // keys from the aim); a dialog (Open, Save as) handles it itself as Cancel. From the key queue: a short tap counts.
   for (const KeyPress& k : take_key_presses())
     if (!covered) key(lab, camera, k);
-  // Escape closes an open list or menu (ImGui does so only under keyboard navigation, which would take the arrow
-  // keys from the aim); a dialog (Open, Save as) handles it itself as Cancel.
-  if (covered && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) ImGui::ClosePopupsExceptModals();
+    else if (k.key == GLFW_KEY_ESCAPE) ImGui::ClosePopupsExceptModals();
   const glm::dvec2 mouse{io.MousePos.x, io.MousePos.y};
   const auto at = vp.pick_plane(mouse, ball_height(lab));
   const bool free = over_view && !io.WantCaptureMouse;

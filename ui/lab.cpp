@@ -186,9 +186,13 @@ void Lab::physics_changed() {
   Scene start = shot->start();
   start.model = scene.model;
   start_shot(start);
+  playing = false;
   if (!shot) return;
-  seek(at);
-  playing = was_playing && !shot_over();
+  // Within a frame's work at most (a drag changes the value every frame): a long shot shows how far its new run got.
+  if (at > shot->sim().time()) shot->advance(at, kRetuneSeconds);
+  show(std::min(at, shot->sim().time()));
+  playing = was_playing;
+  if (shot_over()) finish_playing();  // the new run stopped before that moment: its banner
 }
 
 std::vector<std::string> Lab::physics_changes() const {

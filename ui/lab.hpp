@@ -74,6 +74,7 @@ class Lab {
   std::optional<Rect> screenshot_crop;  // only this part of the window (a plot), else all of it
   int screenshot_delay = 0;             // frames drawn before it is taken
   std::string plot_capture;             // the plot (its id) drawn large over the window for that PNG
+  bool plot_capture_drawn = false;      // ... in this frame (its panel may have closed since the request)
   std::string strobe_request;      // PNG path: a multiple exposure of the shot, drawn by the next frame
   std::function<void(const Scene&)> on_load;  // after a scene file loaded (gui.cpp frames the camera)
   MarginView margin;            // the shot margin worked out in the background (margin_view.hpp)
@@ -90,6 +91,7 @@ class Lab {
   void say(MessageKind kind, std::string text);
   void scene_changed();    // after editing `scene`'s balls or aim: re-predict
   void physics_changed();  // after editing `scene.model`: re-predict, and re-simulate the current shot from its start
+  static constexpr double kRetuneSeconds = 0.1;  // wall time physics_changed may spend reaching the moment shown
   std::vector<std::string> physics_changes() const;  // "materials.ball_ball.stiffness: 1e+10 -> 5e+09", ...
   void reset_physics();    // back to the loaded scene's materials, options and integrator
   void pin_compare();      // the current shot's trails become the A of the A/B overlay

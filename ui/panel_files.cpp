@@ -227,13 +227,16 @@ void draw_plot_capture(Lab& lab, const char* id, const PlotSpec& spec, const std
                           ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowSize(ImVec2(w, h));
   ImGui::SetNextWindowBgAlpha(1.0f);  // nothing of the panels under it shows through in the picture
-  constexpr ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
-                                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav;
+  // It takes the clicks of its few frames (none reaches a panel out of sight under it), but not the keyboard.
+  constexpr ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
+                                     ImGuiWindowFlags_NoFocusOnAppearing;
   if (ImGui::Begin("##plot capture", nullptr, flags)) {
     ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
     plot(id, spec, series, ImGui::GetContentRegionAvail().y);
     const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
     lab.screenshot_crop = Rect{at.x, at.y, size.x, size.y};  // the plot and a margin round it
+    lab.plot_capture_drawn = true;
   }
   ImGui::End();
 }

@@ -50,9 +50,11 @@ void write_screenshot(Lab& lab, int window_w, int window_h) {
   const int x = std::clamp(static_cast<int>(r.x), 0, window_w), y = std::clamp(static_cast<int>(r.y), 0, window_h);
   const int w = std::min(static_cast<int>(r.w), window_w - x), h = std::min(static_cast<int>(r.h), window_h - y);
   const std::string path = lab.screenshot_request;
+  const bool plot_gone = !lab.plot_capture.empty() && !lab.plot_capture_drawn;
   lab.screenshot_request.clear();
   lab.screenshot_crop.reset();
   lab.plot_capture.clear();
+  if (plot_gone) return lab.say(MessageKind::Refused, "the plot closed before its picture was taken: nothing written");
   if (write_window_png(path, x, y, w, h, window_h)) lab.say(MessageKind::Note, "wrote " + path);
   else lab.say(MessageKind::Refused, "cannot write " + path);
 }

@@ -126,7 +126,7 @@ bool begin_side_panel(const char* name, const Rect& where, bool want_open, bool 
   return open;
 }
 
-void panel_width_grip(float& width, float scale, float standard) {
+void panel_width_grip(float& width, float scale, float standard, float widest) {
   static bool dragging = false;
   const ImGuiIO& io = ImGui::GetIO();
   const ImVec2 p = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
@@ -139,7 +139,8 @@ void panel_width_grip(float& width, float scale, float standard) {
   else if (over && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) dragging = true;
   if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) dragging = false;
   if (over || dragging) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
-  if (dragging) width = std::max(kMinPanelWidth, width - io.MouseDelta.x / scale);
+  if (dragging)
+    width = std::clamp((p.x + size.x - io.MousePos.x) / scale, kMinPanelWidth, std::max(widest, kMinPanelWidth));
 }
 
 ImVec4 panel_background() {

@@ -48,9 +48,10 @@ ImVec4 panel_background();  // the style's window background, opaque
 // Before End(): records the window's rectangle under `name` and returns whether it is open.
 bool end_side_panel(const std::string& name);
 // Inside a right-hand side panel: dragging its left edge (a few pixels of its padding) sets its width, `width` in
-// unscaled pixels (`scale`: font size over the base size), from kMinPanelWidth up; a double click there restores
-// `standard`. The layout still narrows it in a small window.
-void panel_width_grip(float& width, float scale, float standard);
+// unscaled pixels (`scale`: font size over the base size), to where the pointer is, from kMinPanelWidth up to
+// `widest` (what the layout gives it without narrowing anything else); a double click there restores `standard`.
+// One such grip in the window: it keeps whether it is being dragged.
+void panel_width_grip(float& width, float scale, float standard, float widest);
 
 // Before a button labelled `next`: on the same line when it fits in what is left of the row, else on the next.
 void same_line_if_fits(const char* next);

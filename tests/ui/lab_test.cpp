@@ -359,8 +359,6 @@ TEST_F(LabTest, ShotsAndEditsShareOneUndoStack) {
   EXPECT_NEAR(lab.scene.cue->aim * 180 / M_PI, -75.0, 1e-9);
 }
 
-// Undoing an aim and two shots and redoing them all brings back every step, the shots running again: redoing a shot
-// used to record it anew, which emptied the redo list after it (a user trial lost its second shot that way).
 // A developer pauses inside a collision and changes a material: the shot is simulated again with it and shown at the
 // same moment, still paused (it used to start over from t = 0 and play); while playing it plays on from there.
 TEST_F(LabTest, ATuningChangeKeepsThePausedMoment) {
@@ -384,6 +382,8 @@ TEST_F(LabTest, ATuningChangeKeepsThePausedMoment) {
   EXPECT_EQ(position(lab.frame().state.x, 0), before);  // the first run again, at the same moment
 }
 
+// Undoing an aim and two shots and redoing them all brings back every step, the shots running again: redoing a shot
+// used to record it anew, which emptied the redo list after it (a user trial lost its second shot that way).
 TEST_F(LabTest, RedoingAShotKeepsTheStepsAfterIt) {
   load("cut.json");
   lab.nudge_aim(1.0);
