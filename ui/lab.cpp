@@ -1,6 +1,7 @@
 #include "ui/lab.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -180,9 +181,9 @@ void Lab::physics_changed() {
   scene_changed();
   if (!shot) return;
   // The new run is shown at the moment the old one was, playing or paused as it was: a change made while stepping
-  // through a contact stays at that contact.
-  const bool was_playing = playing;
-  const double at = view_time;
+  // through a contact stays at that contact. A shot watched to its end shows the new run's end.
+  const bool was_playing = playing, was_over = shot_over();
+  const double at = was_over ? std::numeric_limits<double>::infinity() : view_time;
   Scene start = shot->start();
   start.model = scene.model;
   start_shot(start);

@@ -380,6 +380,13 @@ TEST_F(LabTest, ATuningChangeKeepsThePausedMoment) {
   EXPECT_TRUE(lab.playing);
   EXPECT_DOUBLE_EQ(lab.view_time, 0.5);
   EXPECT_EQ(position(lab.frame().state.x, 0), before);  // the first run again, at the same moment
+  // Watched to its end, the shot shows the new run's end after a change, not the old run's last moment.
+  lab.seek(100);
+  ASSERT_TRUE(lab.shot_over());
+  lab.scene.model.materials.at(kBallCloth).rolling_resistance *= 0.5;  // it rolls on past the old end
+  lab.physics_changed();
+  EXPECT_TRUE(lab.shot_over());
+  EXPECT_EQ(lab.view_time, lab.shot->sim().time());
 }
 
 // Undoing an aim and two shots and redoing them all brings back every step, the shots running again: redoing a shot
