@@ -10,7 +10,7 @@ Layout layout_panels(float W, float H, const PanelRequest& left, const PanelRequ
   float lw = std::max(left.width, 1.0f), rw = std::max(right.width, 1.0f);
   // Open panels share at most (1 - kMinViewShare) of the width, narrowed in proportion, each down to kMinPanelWidth;
   // in a window too small even for that, they split what is left over after the view's share.
-  const float budget = W * (1 - kMinViewShare);
+  const float budget = widest_right_panel(W, {false, 0, 0});  // the panels' share: the right one's with no left one
   const float wanted = (left.open ? lw : 0) + (right.open ? rw : 0);
   if (wanted > budget) {
     const float k = budget / wanted;
@@ -29,6 +29,10 @@ Layout layout_panels(float W, float H, const PanelRequest& left, const PanelRequ
   const float x0 = left.open ? lw : 0, x1 = right.open ? W - rw : W;
   out.view = Rect{x0, 0, std::max(x1 - x0, 1.0f), H};
   return out;
+}
+
+float widest_right_panel(float window_w, const PanelRequest& left) {
+  return window_w * (1 - kMinViewShare) - (left.open ? left.width : 0);
 }
 
 }  // namespace shotlab

@@ -27,5 +27,7 @@ inline constexpr float kMinPanelWidth = 200;   // pixels: narrower, a panel's sl
 inline constexpr float kBaseFontPx = 15;       // the UI font at scale 1: the panels' widths are given at it
 
 Layout layout_panels(float window_w, float window_h, const PanelRequest& left, const PanelRequest& right);
+// Pixels: the widest the right panel may be beside `left` before layout_panels narrows either of them.
+float widest_right_panel(float window_w, const PanelRequest& left);
 
 }  // namespace shotlab

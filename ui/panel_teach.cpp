@@ -245,11 +245,11 @@ bool inspector_panel(Lab& lab, Tuning& tuning, const Rect& where) {
   static bool first = true;  // the saved tab is selected once; after that the tab bar follows the clicks
   if (first) v.tab_request = v.tab, first = false;
   if (begin_side_panel("Inspector", where, lab.settings.panels.right_open, shown)) {
-    const PanelState& panels = lab.settings.panels;
+    PanelState& panels = lab.settings.panels;
     const float scale = ImGui::GetFontSize() / kBaseFontPx;
-    const float left = panels.left_open ? panels.left_width * scale : 0;
-    const float room = ImGui::GetMainViewport()->Size.x * (1 - kMinViewShare) - left;
-    panel_width_grip(lab.settings.panels.right_width, scale, PanelState{}.right_width, room / scale);
+    const PanelRequest left{panels.left_open, panels.left_width * scale};
+    const float room = widest_right_panel(ImGui::GetMainViewport()->Size.x, left);
+    panel_width_grip(panels.right_width, scale, PanelState{}.right_width, room / scale);
     if (ImGui::BeginTabBar("tabs")) {
       const char* names[2] = {"Teaching", "Tuning"};
       for (int i = 0; i < 2; ++i) {
