@@ -235,8 +235,8 @@ int run_gui(const GuiOptions& options) {
         handle_input(lab, settings.camera, viewport, drag, layout.view.contains(mouse.x, mouse.y));
         lab.update(dt);
 
-        settings.panels.left_open = left_panel(lab, settings.camera, layout.left);
-        settings.panels.right_open = inspector_panel(lab, tuning, layout.right);
+        settings.panels.left_open = left_panel(lab, settings.camera, layout);
+        settings.panels.right_open = inspector_panel(lab, tuning, layout);
         help_panel(&settings.view.help);
         readout("popup open", ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) ? 1.0 : 0.0);  // for the GUI tests
         if (std::string note = take_slider_note(); !note.empty()) lab.say(MessageKind::Refused, std::move(note));

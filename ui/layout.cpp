@@ -10,7 +10,7 @@ Layout layout_panels(float W, float H, const PanelRequest& left, const PanelRequ
   float lw = std::max(left.width, 1.0f), rw = std::max(right.width, 1.0f);
   // Open panels share at most (1 - kMinViewShare) of the width, narrowed in proportion, each down to kMinPanelWidth;
   // in a window too small even for that, they split what is left over after the view's share.
-  const float budget = widest_right_panel(W, {false, 0, 0});  // the panels' share: the right one's with no left one
+  const float budget = widest_panel(W, {false, 0, 0});  // the panels' share: one's with the other closed
   const float wanted = (left.open ? lw : 0) + (right.open ? rw : 0);
   if (wanted > budget) {
     const float k = budget / wanted;
@@ -24,15 +24,17 @@ Layout layout_panels(float W, float H, const PanelRequest& left, const PanelRequ
   lw = std::min(lw, W);
   rw = std::min(rw, W);
   Layout out;
-  out.left = left.open ? Rect{0, 0, lw, H} : Rect{0, 0, lw, std::min(left.bar, H)};
+  const float grip = left.open ? std::min(kLeftGripPx, 0.5f * lw) : 0;
+  out.left = left.open ? Rect{0, 0, lw - grip, H} : Rect{0, 0, lw, std::min(left.bar, H)};
+  if (left.open) out.left_grip = Rect{lw - grip, 0, grip, H};
   out.right = right.open ? Rect{W - rw, 0, rw, H} : Rect{W - rw, 0, rw, std::min(right.bar, H)};
   const float x0 = left.open ? lw : 0, x1 = right.open ? W - rw : W;
   out.view = Rect{x0, 0, std::max(x1 - x0, 1.0f), H};
   return out;
 }
 
-float widest_right_panel(float window_w, const PanelRequest& left) {
-  return window_w * (1 - kMinViewShare) - (left.open ? left.width : 0);
+float widest_panel(float window_w, const PanelRequest& other) {
+  return window_w * (1 - kMinViewShare) - (other.open ? other.width : 0);
 }
 
 }  // namespace shotlab

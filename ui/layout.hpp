@@ -20,14 +20,18 @@ struct PanelRequest {
 
 struct Layout {
   Rect left, right, view;
+  Rect left_grip;  // the last kLeftGripPx of an open left panel's width, outside its window: its width grip
 };
 
 inline constexpr float kMinViewShare = 0.45f;  // of the window width, kept for the 3D view
 inline constexpr float kMinPanelWidth = 200;   // pixels: narrower, a panel's sliders are unusable
 inline constexpr float kBaseFontPx = 15;       // the UI font at scale 1: the panels' widths are given at it
+// Pixels: the gutter at the inner edge of an open left panel, its width grip (the panel's scrollbar takes the edge of
+// its window, so the grip lies beside it).
+inline constexpr float kLeftGripPx = 6;
 
 Layout layout_panels(float window_w, float window_h, const PanelRequest& left, const PanelRequest& right);
-// Pixels: the widest the right panel may be beside `left` before layout_panels narrows either of them.
-float widest_right_panel(float window_w, const PanelRequest& left);
+// Pixels: the widest a panel may be beside the `other` one before layout_panels narrows either of them.
+float widest_panel(float window_w, const PanelRequest& other);
 
 }  // namespace shotlab

@@ -48,10 +48,10 @@ int contacts_table(const ContactLog& log, int selected) {
 }  // namespace
 
 void contacts_section(Lab& lab) {
-  if (!lab.shot) return ImGui::TextDisabled("Shoot to list the shot's contacts.");
+  if (!lab.shot) return hint("Shoot to list the shot's contacts.");
   const ContactLog* log = lab.contact_log();
   if (!log) return ImGui::TextDisabled("tracing the contacts...");
-  if (log->contacts.empty()) return ImGui::TextDisabled("no contact besides the bed's so far");
+  if (log->contacts.empty()) return hint("no contact besides the bed's so far");
   static int selected = 0;
   selected = std::clamp(contacts_table(*log, selected), 0, static_cast<int>(log->contacts.size()) - 1);
   const ContactTrace& c = log->contacts[selected];

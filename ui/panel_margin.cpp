@@ -159,8 +159,8 @@ void margin_section(Lab& lab) {
   ImGui::TextWrapped("How often does this shot work when the stroke is a little off?");
   goal_choice(lab, v);
   update_margin(lab, v);
-  if (lab.shot) ImGui::TextDisabled("back to aiming (Undo or Next) to work it out");
-  else if (!v.problem.empty()) ImGui::TextDisabled("%s", v.problem.c_str());
+  if (lab.shot) hint("back to aiming (Undo or Next) to work it out");
+  else if (!v.problem.empty()) hint(v.problem);
   else estimate_readout(lab, v);
   ImGui::Checkbox("draw where the tries end", &v.scatter);
   ImGui::Separator();

@@ -34,7 +34,7 @@ void measured_section(Lab& lab) {
     if (ImGui::Button("Fit the strike")) lab.start_fit();
     mark("Fit the strike");
     ImGui::EndDisabled();
-    if (lab.shot) ImGui::TextDisabled("back to aiming (Undo) to fit");
+    if (lab.shot) hint("back to aiming (Undo) to fit");
   }
   readout("fit progress", v.fit.busy() ? v.fit.progress() : v.last ? 1.0 : 0.0);
   if (!v.fit.error().empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", v.fit.error().c_str());

@@ -234,9 +234,16 @@ void notes_section(Lab& lab) {
 
 }  // namespace
 
-bool left_panel(Lab& lab, Camera& camera, const Rect& where) {
+bool left_panel(Lab& lab, Camera& camera, const Layout& layout) {
   static bool shown = true;
-  if (begin_side_panel("Shot lab", where, lab.settings.panels.left_open, shown)) {
+  if (begin_side_panel("Shot lab", layout.left, lab.settings.panels.left_open, shown)) {
+    PanelState& panels = lab.settings.panels;
+    const Rect& grip = layout.left_grip;
+    const float bar = ImGui::GetFrameHeight();
+    const PanelWidths widths{panels.left_width, panels.right_width, grip.right() - layout.left.x,
+                             panels.right_open ? layout.right.w : 0};
+    panel_width_grip("left panel width grip", Rect{grip.x, grip.y + bar, grip.w, grip.h - bar}, layout.left.x, widths,
+                     ImGui::GetFontSize() / kBaseFontPx, PanelState{}.left_width);
     ImGui::TextWrapped("%s", lab.scene.name.c_str());
     if (ImGui::CollapsingHeader("What to look for", ImGuiTreeNodeFlags_DefaultOpen)) notes_section(lab);
     if (ImGui::CollapsingHeader("Scene and files", ImGuiTreeNodeFlags_DefaultOpen)) scene_section(lab);
@@ -303,7 +310,7 @@ void message_banner(Lab& lab, const Rect& view) {
   ImGui::PopTextWrapPos();
   ImGui::PopStyleColor();
   if (lab.message_kind == MessageKind::LoadError && lab.scene_kept)
-    ImGui::TextDisabled("The scene you had is still loaded.");
+    hint("The scene you had is still loaded.");
   if (ImGui::SmallButton("Dismiss")) lab.say(MessageKind::None, "");
   mark("Dismiss");
   if (lab.message_kind == MessageKind::EngineStop) {

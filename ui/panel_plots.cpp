@@ -83,7 +83,7 @@ void collision_plot(Lab& lab) {
   if (!log) return ImGui::TextDisabled("tracing the collisions...");
   if (log->contacts.empty()) return ImGui::TextDisabled("no collision yet");
   const int k = shown_contact(*log, lab.view_time, picked);
-  if (k < 0) return ImGui::TextDisabled("no collision before this time");
+  if (k < 0) return hint("no collision before this time");
   const ContactTrace& c = log->contacts[k];
   ImGui::SetNextItemWidth(-1);
   if (ImGui::BeginCombo("##contact", (c.label() + " at " + std::to_string(c.begin).substr(0, 8) + " s").c_str())) {

@@ -230,7 +230,7 @@ void teach_panel(Lab& lab) {
   ImGui::Checkbox("forces", &lab.settings.view.forces), same_line_if_checkbox_fits("labels");
   ImGui::Checkbox("labels", &lab.settings.view.labels);
   if (!lab.shot || lab.scene.balls.empty()) {
-    ImGui::TextDisabled("Plots and events appear once a shot runs.");
+    hint("Plots and events appear once a shot runs.");
     return;
   }
   const bool events_open = ImGui::CollapsingHeader("Events (click one to go there)");
@@ -239,17 +239,21 @@ void teach_panel(Lab& lab) {
   teach_plots(lab);
 }
 
-bool inspector_panel(Lab& lab, Tuning& tuning, const Rect& where) {
+bool inspector_panel(Lab& lab, Tuning& tuning, const Layout& layout) {
   ViewFlags& v = lab.settings.view;
   static bool shown = true;
   static bool first = true;  // the saved tab is selected once; after that the tab bar follows the clicks
   if (first) v.tab_request = v.tab, first = false;
-  if (begin_side_panel("Inspector", where, lab.settings.panels.right_open, shown)) {
+  if (begin_side_panel("Inspector", layout.right, lab.settings.panels.right_open, shown)) {
     PanelState& panels = lab.settings.panels;
-    const float scale = ImGui::GetFontSize() / kBaseFontPx;
-    const PanelRequest left{panels.left_open, panels.left_width * scale};
-    const float room = widest_right_panel(ImGui::GetMainViewport()->Size.x, left);
-    panel_width_grip(panels.right_width, scale, PanelState{}.right_width, room / scale);
+    // Its left edge: a few pixels of its padding, where no widget lies.
+    const Rect& where = layout.right;
+    const float bar = ImGui::GetFrameHeight();
+    const Rect edge{where.x, where.y + bar, 0.75f * ImGui::GetStyle().WindowPadding.x, where.h - bar};
+    const PanelWidths widths{panels.right_width, panels.left_width, where.w,
+                             panels.left_open ? layout.left_grip.right() - layout.left.x : 0};
+    panel_width_grip("panel width grip", edge, where.right(), widths, ImGui::GetFontSize() / kBaseFontPx,
+                     PanelState{}.right_width);
     if (ImGui::BeginTabBar("tabs")) {
       const char* names[2] = {"Teaching", "Tuning"};
       for (int i = 0; i < 2; ++i) {

@@ -160,7 +160,7 @@ void changes_section(Lab& lab) {
   const auto changes = lab.physics_changes();
   const float box = 3 * ImGui::GetTextLineHeightWithSpacing() + 2 * ImGui::GetStyle().WindowPadding.y;
   ImGui::BeginChild("changes", ImVec2(0, box), true);
-  if (changes.empty()) ImGui::TextDisabled("the scene file's values (nothing changed)");
+  if (changes.empty()) hint("the scene file's values (nothing changed)");
   for (const std::string& c : changes) {
     ImGui::Bullet();
     ImGui::TextWrapped("%s", c.c_str());
@@ -202,7 +202,7 @@ bool world_section(Lab& lab) {
                       "(no hops, jumps or rods; docs/model.md#rigid-model)");
   // The rigid model has sharp friction switches and no integrator: those rows do not apply to it (greyed out).
   const bool rigid = o.contact == ContactModel::Rigid;
-  if (rigid) ImGui::TextDisabled("greyed out: not used by the rigid model");
+  if (rigid) hint("greyed out: not used by the rigid model");
   ImGui::BeginDisabled(rigid);
   f.label("friction sharpness");
   changed |= slider("##sharpness", o.friction_sharpness, 1.0, 1e6, "%.4g s/m", true);
@@ -245,7 +245,7 @@ bool world_section(Lab& lab) {
 
 // Wrapped: in a narrow inspector a line cut at the edge loses its last figure.
 void diagnostics(const Lab& lab) {
-  if (!lab.shot) return ImGui::TextDisabled("Shoot to see the integrator at work.");
+  if (!lab.shot) return hint("Shoot to see the integrator at work.");
   const Simulation& sim = lab.shot->sim();
   const Stats& s = sim.stats();
   if (sim.model().options.contact == ContactModel::Rigid) {  // no integration: events only

@@ -36,8 +36,9 @@ struct Tuning {
 };
 
 // Each returns the panel's collapsed state as the user left it (true: open).
-bool left_panel(Lab& lab, Camera& camera, const Rect& where);   // panel_play.cpp
-bool inspector_panel(Lab& lab, Tuning& tuning, const Rect& where);  // panel_teach.cpp
+// Each where `layout` puts it; a drag of its inner edge sets its width in the settings (widgets.hpp).
+bool left_panel(Lab& lab, Camera& camera, const Layout& layout);    // panel_play.cpp
+bool inspector_panel(Lab& lab, Tuning& tuning, const Layout& layout);  // panel_teach.cpp
 
 void scene_section(Lab& lab);         // panel_files.cpp: presets, recent files, open, save
 void practice_section(Lab& lab);      // panel_practice.cpp: position target, kept shots, camera follow

@@ -126,21 +126,41 @@ bool begin_side_panel(const char* name, const Rect& where, bool want_open, bool 
   return open;
 }
 
-void panel_width_grip(float& width, float scale, float standard, float widest) {
-  static bool dragging = false;
+void panel_width_grip(const char* name, const Rect& strip, float outer_x, PanelWidths w, float scale, float standard) {
+  ImGuiStorage* storage = ImGui::GetStateStorage();
+  const ImGuiID id = ImGui::GetID(name);
+  bool& dragging = *storage->GetBoolRef(id, false);
+  float& grab = *storage->GetFloatRef(id + 1, 0.0f);  // the pointer's distance from the inner edge at the grab, px
   const ImGuiIO& io = ImGui::GetIO();
-  const ImVec2 p = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-  const float grip = 0.75f * ImGui::GetStyle().WindowPadding.x;  // inside the padding: no widget lies there
-  const bool over = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows) && io.MousePos.x >= p.x &&
-                    io.MousePos.x < p.x + grip && io.MousePos.y > p.y + ImGui::GetFrameHeight() &&
-                    io.MousePos.y < p.y + size.y;
-  mark_rect("panel width grip", Rect{p.x, p.y + ImGui::GetFrameHeight(), grip, size.y - ImGui::GetFrameHeight()});
-  if (over && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) width = standard, dragging = false;
-  else if (over && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) dragging = true;
+  const float reach = std::abs(io.MousePos.x - outer_x);  // from the outer edge to the pointer, px
+  // Over the strip with nothing on top of it: this panel under the pointer, or no window at all (a strip outside it).
+  const bool free = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows) ||
+                    !ImGui::IsWindowHovered(ImGuiHoveredFlags_AnyWindow | ImGuiHoveredFlags_AllowWhenBlockedByPopup);
+  const bool over = free && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) &&
+                    strip.contains(io.MousePos.x, io.MousePos.y);
+  mark_rect(name, strip);
+  if (over && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+    w.width = standard, dragging = false;
+  } else if (over && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    dragging = true, grab = w.shown - reach;
+    w.width = w.shown / scale;
+    if (w.other_shown > 0) w.other_width = w.other_shown / scale;
+  }
   if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) dragging = false;
-  if (over || dragging) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
-  if (dragging)
-    width = std::clamp((p.x + size.x - io.MousePos.x) / scale, kMinPanelWidth, std::max(widest, kMinPanelWidth));
+  if (over || dragging) {
+    ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+    ImGui::GetForegroundDrawList()->AddRectFilled({strip.x, strip.y}, {strip.right(), strip.bottom()},
+                                                  ImGui::GetColorU32(ImGuiCol_SeparatorHovered));
+  }
+  if (!dragging) return;
+  const float widest = widest_panel(ImGui::GetMainViewport()->Size.x, {w.other_shown > 0, w.other_shown}) / scale;
+  w.width = std::clamp((reach + grab) / scale, kMinPanelWidth, std::max(widest, kMinPanelWidth));
+}
+
+void hint(const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
 }
 
 ImVec4 panel_background() {

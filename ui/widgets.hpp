@@ -47,11 +47,22 @@ bool begin_side_panel(const char* name, const Rect& where, bool want_open, bool 
 ImVec4 panel_background();  // the style's window background, opaque
 // Before End(): records the window's rectangle under `name` and returns whether it is open.
 bool end_side_panel(const std::string& name);
-// Inside a right-hand side panel: dragging its left edge (a few pixels of its padding) sets its width, `width` in
-// unscaled pixels (`scale`: font size over the base size), to where the pointer is, from kMinPanelWidth up to
-// `widest` (what the layout gives it without narrowing anything else); a double click there restores `standard`.
-// One such grip in the window: it keeps whether it is being dragged.
-void panel_width_grip(float& width, float scale, float standard, float widest);
+// What a side panel's width grip works on: the panel's preferred width and the other panel's (unscaled pixels, as the
+// settings keep them), and what the layout shows of each (pixels; 0 for a collapsed one).
+struct PanelWidths {
+  float& width;
+  float& other_width;
+  float shown, other_shown;
+};
+// Inside a side panel's window: dragging `strip` (on screen: the panel's inner edge) moves the panel's inner edge with
+// the pointer, `outer_x` being its edge at the window's side (`scale`: font size over the base size), from
+// kMinPanelWidth up to what the layout gives it beside the other panel as shown. A grab first takes both panels'
+// widths as shown (the layout may have narrowed them), so that the drag starts from what is on screen. A double click
+// restores `standard`. The strip is marked as `name` (state dump), which also keys its drag.
+void panel_width_grip(const char* name, const Rect& strip, float outer_x, PanelWidths w, float scale, float standard);
+
+// A hint in the disabled colour, wrapped at the panel's edge: a sentence stays whole in a narrow panel.
+void hint(const std::string& text);
 
 // Before a button labelled `next`: on the same line when it fits in what is left of the row, else on the next.
 void same_line_if_fits(const char* next);

@@ -816,11 +816,37 @@ def layout(binary, root, display, work):
             s = app.state()
             check(abs(app.widget(s, "panel Inspector")["w"] - panel["w"]) < 1.5, f"{size}: a double click restores it")
             view = s["view"]
+        if size in ((1920, 1080), (1280, 720)):  # the left panel's edge, a gutter beside its scrollbar
+            view = drag_left_edge(app, size, 200)
         app.key("F3")
         s2 = app.state()
         check(s2["view"]["w"] > view["w"] + 100 and all(inside(s2["view"], *c) for c in s2["table_corners"]),
               f"{size}: F3 collapses the inspector, the view widens ({view['w']:.0f} -> {s2['view']['w']:.0f} px)")
         app.close()
+
+
+def drag_left_edge(app, size, dx):
+    """Drags the left panel's inner edge dx px to the right: it widens by as much where there is room (1920x1080),
+    as far as the table keeps its share where there is little (1280x720), the inspector stays; a double click there
+    restores it and aims nothing. Returns the view as it is then."""
+    s = app.state()
+    left, inspector, aim = app.widget(s, "panel Shot lab"), app.widget(s, "panel Inspector"), s["cue"]["aim_deg"]
+    grip = app.widget(s, "left panel width grip")
+    gx, gy = grip["x"] + grip["w"] / 2, grip["y"] + grip["h"] / 2
+    app.drag(gx, gy, gx + dx, gy)
+    s = app.state()
+    wide = app.widget(s, "panel Shot lab")
+    widths = f"{left['w']:.0f} -> {wide['w']:.0f} px"
+    room = wide["w"] - left["w"] == dx if size[0] >= 1920 else left["w"] < wide["w"] < left["w"] + dx
+    check(room and app.widget(s, "panel Inspector")["w"] == inspector["w"] and s["view"]["w"] >= 0.45 * size[0] - 1 and
+          all(inside(s["view"], *c) for c in s["table_corners"]),
+          f"{size}: a drag of the left panel's edge widens it ({widths}), the inspector stays, the table fits")
+    grip = app.widget(s, "left panel width grip")
+    app.double_click(grip["x"] + grip["w"] / 2, gy)
+    s = app.state()
+    check(app.widget(s, "panel Shot lab")["w"] == left["w"] and s["cue"]["aim_deg"] == aim,
+          f"{size}: a double click on that edge restores the left panel and aims nothing")
+    return s["view"]
 
 
 def bad_scene(binary, root, display, work):

@@ -99,13 +99,16 @@ TEST(Layout, PanelsStayAtTheEdgesAtEveryWindowSize) {
     SCOPED_TRACE(w);
     EXPECT_EQ(l.left.x, 0);
     EXPECT_FLOAT_EQ(l.right.right(), w);
-    EXPECT_FLOAT_EQ(l.view.x, l.left.right());
+    EXPECT_FLOAT_EQ(l.left_grip.x, l.left.right());  // the left panel's grip, then the view
+    EXPECT_FLOAT_EQ(l.view.x, l.left_grip.right());
+    EXPECT_EQ(l.left_grip.h, h);
     EXPECT_FLOAT_EQ(l.view.right(), l.right.x);
     EXPECT_GE(l.view.w, kMinViewShare * w - 0.5f);
     EXPECT_EQ(l.left.h, h);
   }
   const Layout wide = layout_panels(1920, 1080, {true, 330, 20}, {true, 360, 20});
-  EXPECT_EQ(wide.left.w, 330);  // room for both at their preferred widths
+  EXPECT_EQ(wide.left.w + wide.left_grip.w, 330);  // room for both at their preferred widths
+  EXPECT_EQ(wide.left_grip.w, kLeftGripPx);
   EXPECT_EQ(wide.right.w, 360);
 }
 
@@ -113,6 +116,7 @@ TEST(Layout, ACollapsedPanelGivesItsWidthToTheView) {
   const Layout l = layout_panels(1280, 720, {false, 330, 20}, {true, 360, 20});
   EXPECT_EQ(l.view.x, 0);
   EXPECT_EQ(l.left.h, 20);  // its title bar only
+  EXPECT_EQ(l.left_grip.w, 0);
   const Layout both = layout_panels(1280, 720, {false, 330, 20}, {false, 360, 20});
   EXPECT_EQ(both.view.w, 1280);
 }
