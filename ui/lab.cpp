@@ -254,9 +254,9 @@ void Lab::start_shot(const Scene& start) {
 
 void Lab::shoot() {
   if (in_hand) in_hand = false, history.seal();  // shooting puts the ball in hand down where it is
-  history.record("shot", scene);
   if (message_kind != MessageKind::LoadError) say(MessageKind::None, "");
   launch();
+  if (shot) history.record("shot", scene);  // a refused shot (its banner says why) is no step to undo
 }
 
 void Lab::launch() {

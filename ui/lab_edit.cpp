@@ -165,7 +165,10 @@ bool Lab::begin_move(int i) {
 
 bool Lab::move_ball(int i, const Vec3& to) {
   if (shot || i < 0 || i >= static_cast<int>(scene.balls.size())) return false;
-  const Vec3 p{to.x, scene.balls[i].position.y, to.z};
+  Vec3 p{to.x, scene.balls[i].position.y, to.z};
+  // On a table a ball stays on the cloth: dragged past a cushion it slides along it (inside, it would start pressed
+  // into the rubber and the scene would not simulate).
+  if (scene.table) p = hand_zone(*scene.table, scene.balls[i].spec.radius, false).clamp(p);
   if (!fits(i, p)) return false;
   history.record("move " + scene.balls[i].spec.id, scene, "move");  // merged into the gesture's entry
   scene.balls[i].position = p;
@@ -183,6 +186,7 @@ void Lab::add_ball(const Vec3& at) {
       break;
     }
   b.position = {at.x, b.spec.radius, at.z};
+  if (scene.table) b.position = hand_zone(*scene.table, b.spec.radius, false).clamp(b.position);
   scene.balls.push_back(b);
   const bool room = fits(static_cast<int>(scene.balls.size()) - 1, b.position);
   scene.balls.pop_back();

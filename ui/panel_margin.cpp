@@ -66,7 +66,7 @@ void estimate_readout(Lab& lab, MarginView& v) {
   const auto e = fresh_estimate(lab, v);
   if (!e) {
     if (v.estimate.busy()) ImGui::ProgressBar(static_cast<float>(v.estimate.progress()), ImVec2(-1, 0), "replaying...");
-    else if (!v.estimate.error().empty()) ImGui::TextWrapped("%s", v.estimate.error().c_str());
+    else if (!v.estimate.error().empty()) text_wrapped("%s", v.estimate.error().c_str());
     return;
   }
   const MarginResult& r = e->result;
@@ -90,7 +90,7 @@ void estimate_readout(Lab& lab, MarginView& v) {
     ImGui::TableNextColumn(), ImGui::TextColored(verdict_colour(r.alone[k]), "%.0f %%", 100 * r.alone[k]);
     ImGui::TableNextColumn();
     const Tolerance& t = r.tolerance[k];
-    ImGui::TextWrapped("%s%.3g .. %s%.3g", t.bounded_lo ? "" : "<", t.lo, t.bounded_hi ? "" : ">", t.hi);
+    text_wrapped("%s%.3g .. %s%.3g", t.bounded_lo ? "" : "<", t.lo, t.bounded_hi ? "" : ">", t.hi);
   }
   ImGui::EndTable();
 }
@@ -156,7 +156,7 @@ void map_section(Lab& lab, MarginView& v) {
 
 void margin_section(Lab& lab) {
   MarginView& v = lab.margin;
-  ImGui::TextWrapped("How often does this shot work when the stroke is a little off?");
+  text_wrapped("How often does this shot work when the stroke is a little off?");
   goal_choice(lab, v);
   update_margin(lab, v);
   if (lab.shot) hint("back to aiming (Undo or Next) to work it out");

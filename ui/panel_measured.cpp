@@ -12,13 +12,13 @@ void measured_section(Lab& lab) {
   MeasuredView& v = lab.measured;
   lab.apply_fit();
   if (!v.shot) {
-    ImGui::TextWrapped("Open a measured shot (a CSV of time,ball,x,z; docs/fit.md) with Open... in Scene and files: "
+    text_wrapped("Open a measured shot (a CSV of time,ball,x,z; docs/fit.md) with Open... in Scene and files: "
                        "its tracked balls are drawn as dots, and its cue strike can be fitted here.");
     return;
   }
   size_t samples = 0;
   for (const auto& [ball, track] : v.shot->tracks) samples += track.size();
-  ImGui::TextWrapped("%s: %zu balls, %zu samples; the cue ball is %s.", v.shot->name.c_str(), v.shot->balls.size(),
+  text_wrapped("%s: %zu balls, %zu samples; the cue ball is %s.", v.shot->name.c_str(), v.shot->balls.size(),
                      samples, v.shot->cue_ball.c_str());
   ImGui::TextUnformatted("fit the strike and also:");
   for (int k = 0; k < kLabFitValues; ++k) {

@@ -88,7 +88,7 @@ void playback_section(Lab& lab) {
     }
     mark("time slider");
     const bool fine = lab.contact_on_screen();
-    ImGui::TextWrapped("t = %s%s", format_time(lab.view_time, fine).c_str(),
+    text_wrapped("t = %s%s", format_time(lab.view_time, fine).c_str(),
                        fine ? "  (a contact: to the microsecond)" : "");
     if (lab.shot->finished())
       ImGui::TextColored(lab.shot->end() == ShotEnd::Rest ? ImVec4(0.6f, 0.9f, 0.6f, 1) : ImVec4(1, 0.7f, 0.3f, 1),
@@ -112,7 +112,7 @@ void playback_section(Lab& lab) {
     for (const auto& [set, name] : {std::pair{p.ball_ball, "ball-ball contacts"},
                                     std::pair{p.cushion, "cushion contacts"}, std::pair{p.pocketed, "pocketed balls"}})
       if (set) on += (on.empty() ? "" : ", ") + std::string(name);
-    ImGui::TextWrapped("pauses at %s (Tuning: Pause on events)", on.c_str());
+    text_wrapped("pauses at %s (Tuning: Pause on events)", on.c_str());
     mark("pause on events");
   }
 }
@@ -199,7 +199,7 @@ void aim_section(Lab& lab) {
 }
 
 void balls_section(Lab& lab) {
-  ImGui::TextWrapped("With the Move tool, drag a ball to move it and shift+click the cloth to add one; Del removes "
+  text_wrapped("With the Move tool, drag a ball to move it and shift+click the cloth to add one; Del removes "
                      "the selected ball. Every edit can be undone.");
   if (ImGui::Button("Remove selected")) lab.remove_ball(lab.selected);
   if (ImGui::Checkbox("allow overlaps", &lab.scene.allow_overlap)) lab.scene_changed();
@@ -210,7 +210,7 @@ void balls_section(Lab& lab) {
 void notes_section(Lab& lab) {
   static bool editing = false;
   if (!editing) {
-    if (!lab.scene.description.empty()) ImGui::TextWrapped("%s", lab.scene.description.c_str());
+    if (!lab.scene.description.empty()) text_wrapped("%s", lab.scene.description.c_str());
     if (ImGui::SmallButton(lab.scene.description.empty() ? "Add notes" : "Edit notes")) editing = true;
     mark("Edit notes");
     return;
@@ -244,7 +244,7 @@ bool left_panel(Lab& lab, Camera& camera, const Layout& layout) {
                              panels.right_open ? layout.right.w : 0};
     panel_width_grip("left panel width grip", Rect{grip.x, grip.y + bar, grip.w, grip.h - bar}, layout.left.x, widths,
                      ImGui::GetFontSize() / kBaseFontPx, PanelState{}.left_width);
-    ImGui::TextWrapped("%s", lab.scene.name.c_str());
+    text_wrapped("%s", lab.scene.name.c_str());
     if (ImGui::CollapsingHeader("What to look for", ImGuiTreeNodeFlags_DefaultOpen)) notes_section(lab);
     if (ImGui::CollapsingHeader("Scene and files", ImGuiTreeNodeFlags_DefaultOpen)) scene_section(lab);
     if (ImGui::CollapsingHeader("Playback", ImGuiTreeNodeFlags_DefaultOpen)) playback_section(lab);
@@ -290,7 +290,7 @@ void help_panel(bool* open) {
     }
     ImGui::EndTable();
   }
-  ImGui::TextWrapped("Trail colours: orange sliding, blue rolling, magenta airborne, yellow spinning in place.");
+  text_wrapped("Trail colours: orange sliding, blue rolling, magenta airborne, yellow spinning in place.");
   ImGui::End();
 }
 

@@ -20,7 +20,7 @@ ImU32 kept_colour(int k, float alpha) {
 }
 
 void practice_section(Lab& lab) {
-  ImGui::TextWrapped("Target: pick the Target tool (Aim section) and click where the cue ball should stop.");
+  text_wrapped("Target: pick the Target tool (Aim section) and click where the cue ball should stop.");
   if (lab.target) {
     const Fields f({"radius"});
     f.label("radius");

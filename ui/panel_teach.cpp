@@ -104,7 +104,7 @@ void energy_bars(const Lab& lab) {
     for (const Frame& fr : lab.shot->frames()) scale = std::max(scale, fr.energy.kinetic + fr.energy.elastic);
   // A ball dropped into a pocket turns height into heat and sound beyond what ever moved: those bars fit too.
   scale = std::max({scale, kEnergyBarFloor, std::abs(potential), std::abs(lost)});
-  ImGui::TextWrapped("Energy (J): the bars add up to the energy at the start");
+  text_wrapped("Energy (J): the bars add up to the energy at the start");
   bar_chart("energy", {{"moving", translation, IM_COL32(80, 170, 255, 255)},
                        {"spinning", rotation, IM_COL32(255, 220, 80, 255)},
                        {"in contacts", f.energy.elastic, IM_COL32(120, 230, 120, 255)},
@@ -151,7 +151,7 @@ void momentum_bars(const Lab& lab) {
   if (ImGui::CalcTextSize(line.c_str()).x <= ImGui::GetContentRegionAvail().x) {
     ImGui::TextUnformatted(line.c_str());
   } else {
-    ImGui::TextWrapped("Momentum (kg m/s), total along x, z:");
+    text_wrapped("Momentum (kg m/s), total along x, z:");
     ImGui::TextUnformatted(pair);
   }
   bar_chart("momentum", bars, scale, "kg m/s");
@@ -169,7 +169,7 @@ void centre_of_mass(const Lab& lab) {
       v += ball_motion(m, f.state, i).momentum;
     }
   if (mass <= 0) return;
-  ImGui::TextWrapped("centre of mass (%.3f, %.3f) m, moving %.3f m/s", p.x / mass, p.z / mass, glm::length(v) / mass);
+  text_wrapped("centre of mass (%.3f, %.3f) m, moving %.3f m/s", p.x / mass, p.z / mass, glm::length(v) / mass);
   same_line_if_checkbox_fits("show");
   ImGui::Checkbox("show", &lab.settings.view.centre_of_mass);
 }

@@ -163,7 +163,7 @@ void changes_section(Lab& lab) {
   if (changes.empty()) hint("the scene file's values (nothing changed)");
   for (const std::string& c : changes) {
     ImGui::Bullet();
-    ImGui::TextWrapped("%s", c.c_str());
+    text_wrapped("%s", c.c_str());
   }
   ImGui::EndChild();
   ImGui::BeginDisabled(changes.empty());
@@ -249,21 +249,21 @@ void diagnostics(const Lab& lab) {
   const Simulation& sim = lab.shot->sim();
   const Stats& s = sim.stats();
   if (sim.model().options.contact == ContactModel::Rigid) {  // no integration: events only
-    ImGui::TextWrapped("rigid model: %ld collisions and changes of motion", s.steps);
-    ImGui::TextWrapped("last frame: %ld event(s), %.2f ms", lab.shot->last_steps(), lab.shot->last_wall() * 1e3);
-    ImGui::TextWrapped("%zu ball(s) moving", sim.island_balls().size());
+    text_wrapped("rigid model: %ld collisions and changes of motion", s.steps);
+    text_wrapped("last frame: %ld event(s), %.2f ms", lab.shot->last_steps(), lab.shot->last_wall() * 1e3);
+    text_wrapped("%zu ball(s) moving", sim.island_balls().size());
     if (sim.status() != Status::Ok) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "stopped: %s", status_name(sim.status()));
     return;
   }
-  ImGui::TextWrapped("%s: %ld steps, %ld rejected, %ld rhs", method_name(sim.model().integrator.method), s.steps,
+  text_wrapped("%s: %ld steps, %ld rejected, %ld rhs", method_name(sim.model().integrator.method), s.steps,
               s.rejected_steps, s.rhs_evaluations);
-  ImGui::TextWrapped("last frame: %ld steps, %ld rhs, %.2f ms", lab.shot->last_steps(), lab.shot->last_rhs(),
+  text_wrapped("last frame: %ld steps, %ld rhs, %.2f ms", lab.shot->last_steps(), lab.shot->last_rhs(),
               lab.shot->last_wall() * 1e3);
-  ImGui::TextWrapped("last step %.3g s   real-time factor %.1f", s.last_step, lab.shot->realtime_factor());
+  text_wrapped("last step %.3g s   real-time factor %.1f", s.last_step, lab.shot->realtime_factor());
   size_t largest = 0;
   const std::vector<std::vector<int>> islands = sim.island_balls();
   for (const auto& balls : islands) largest = std::max(largest, balls.size());
-  ImGui::TextWrapped("islands: %zu (the largest holds %zu ball%s)", islands.size(), largest, largest == 1 ? "" : "s");
+  text_wrapped("islands: %zu (the largest holds %zu ball%s)", islands.size(), largest, largest == 1 ? "" : "s");
   if (sim.status() == Status::StepLimit)
     ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "STEP LIMIT HIT: raise max steps or loosen the model");
   else if (sim.status() != Status::Ok)

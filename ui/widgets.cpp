@@ -6,9 +6,11 @@
 #include <boost/geometry/geometries/register/point.hpp>
 #include <boost/geometry/strategies/strategies.hpp>
 #include <cfloat>
+#include <cstdarg>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <string_view>
 #include <imgui_internal.h>
 #include <utility>
 
@@ -157,9 +159,38 @@ void panel_width_grip(const char* name, const Rect& strip, float outer_x, PanelW
   w.width = std::clamp((reach + grab) / scale, kMinPanelWidth, std::max(widest, kMinPanelWidth));
 }
 
+void text_wrapped(const char* fmt, ...) {
+  char text[4096];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(text, sizeof text, fmt, args);
+  va_end(args);
+  ImGuiWindow* window = ImGui::GetCurrentWindow();
+  const float wrap_x = std::max(window->DC.TextWrapPos, 0.0f);  // 0: the content region's edge
+  const float width = std::max(ImGui::CalcWrapWidthForPos(ImGui::GetCursorScreenPos(), wrap_x), 1.0f);
+  const std::string_view all(text);
+  for (size_t start = 0; start <= all.size();) {  // each paragraph
+    const size_t stop = std::min(all.find('\n', start), all.size());
+    const std::string_view paragraph = all.substr(start, stop - start);
+    size_t line = 0, end = 0;  // the line so far: paragraph[line, end)
+    for (size_t word = 0; word <= paragraph.size();) {
+      const size_t word_end = std::min(paragraph.find(' ', word), paragraph.size());
+      const std::string_view candidate = paragraph.substr(line, word_end - line);
+      if (end > line && ImGui::CalcTextSize(candidate.data(), candidate.data() + candidate.size()).x > width) {
+        ImGui::TextUnformatted(paragraph.data() + line, paragraph.data() + end);
+        line = word;
+      }
+      end = word_end;
+      word = word_end + 1;
+    }
+    ImGui::TextUnformatted(paragraph.data() + line, paragraph.data() + end);
+    start = stop + 1;
+  }
+}
+
 void hint(const std::string& text) {
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-  ImGui::TextWrapped("%s", text.c_str());
+  text_wrapped("%s", text.c_str());
   ImGui::PopStyleColor();
 }
 

@@ -61,6 +61,9 @@ struct PanelWidths {
 // restores `standard`. The strip is marked as `name` (state dump), which also keys its drag.
 void panel_width_grip(const char* name, const Rect& strip, float outer_x, PanelWidths w, float scale, float standard);
 
+// Text wrapped at the panel's edge (or the wrap position pushed), printf-style. Lines break at spaces only: ImGui's
+// own wrapping (1.86) also breaks after a full stop, which splits a number such as "0.4" into "0." and "4".
+void text_wrapped(const char* fmt, ...) IM_FMTARGS(1);
 // A hint in the disabled colour, wrapped at the panel's edge: a sentence stays whole in a narrow panel.
 void hint(const std::string& text);
 

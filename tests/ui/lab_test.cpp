@@ -336,6 +336,27 @@ TEST_F(LabTest, MovesAddsAndRemovalsUndo) {
   EXPECT_NEAR(ball("1").x, 0.3, 1e-12);
 }
 
+// From a teacher's trial: a ball dropped where the perspective made the cushion look like cloth started inside the
+// rubber; every shot was then refused, yet each went on the undo stack. A ball now stays on the cloth, and a refused
+// shot is no undo step.
+TEST_F(LabTest, AMovedBallStaysOnTheClothAndARefusedShotIsNoStep) {
+  load("cut.json");
+  const TableSpec& t = *lab.scene.table;
+  ASSERT_TRUE(lab.begin_move(1));
+  EXPECT_TRUE(lab.move_ball(1, {0.2, 0, t.width / 2 + 0.05}));  // past the far cushion's nose
+  lab.end_gesture();
+  EXPECT_NEAR(ball("1").z, t.width / 2 - kR, 1e-12);
+  EXPECT_NEAR(ball("1").x, 0.2, 1e-12);
+  lab.add_ball({-t.length / 2 - 0.1, 0, 0});
+  EXPECT_NEAR(lab.scene.balls.back().position.x, -t.length / 2 + kR, 1e-12);
+  const size_t steps = lab.history.size();
+  lab.scene.balls[1].position.x = t.length;  // as a scene file may have it: off the table
+  lab.shoot();
+  EXPECT_FALSE(lab.shot);
+  EXPECT_EQ(lab.message_kind, MessageKind::Refused);
+  EXPECT_EQ(lab.history.size(), steps);
+}
+
 TEST_F(LabTest, TheCueBallIsNotDeleted) {
   load("cut.json");
   lab.remove_ball(scene_ball(lab.scene, "cue"));
