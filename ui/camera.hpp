@@ -22,7 +22,8 @@ struct Camera {
 
   void orbit(double dx_pixels, double dy_pixels);
   void pan(double dx_pixels, double dy_pixels, double viewport_height);
-  void zoom(double wheel_steps);
+  // Towards `toward` when given (the point under the pointer stays under it), else towards the target.
+  void zoom(double wheel_steps, const std::optional<glm::dvec3>& toward = std::nullopt);
   void top_view();
   bool looks_down() const;  // straight down on the table, as the top view puts it
   void reset();

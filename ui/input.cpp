@@ -155,7 +155,7 @@ void handle_input(Lab& lab, Camera& camera, const Viewport& vp, MouseDrag& drag,
 
   if (lab.in_hand && at && free) lab.place_cue_ball(*at, false);
   if (free) {
-    if (io.MouseWheel != 0) camera.zoom(io.MouseWheel);
+    if (io.MouseWheel != 0) camera.zoom(io.MouseWheel, at);  // towards the cloth under the pointer
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) drag.kind = io.KeyShift ? MouseDrag::Pan : MouseDrag::Orbit;
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) drag.kind = MouseDrag::Pan;
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && at) left_press(lab, *at, drag, io.MousePos.x);

@@ -103,14 +103,7 @@ void line(ImDrawList* d, const Viewport& vp, const Vec3& a, const Vec3& b, ImU32
 
 void arrow(ImDrawList* d, const Viewport& vp, const Vec3& from, const Vec3& to, ImU32 color, float width) {
   const auto pa = vp.project(from), pb = vp.project(to);
-  if (!pa || !pb) return;
-  const glm::dvec2 dir = *pb - *pa;
-  const double len = glm::length(dir);
-  if (len < 2) return;
-  const glm::dvec2 u = dir / len, n{-u.y, u.x};
-  const double head = std::min(10.0, len * 0.4);
-  d->AddLine(v2(*pa), v2(*pb - u * head * 0.5), color, width);
-  d->AddTriangleFilled(v2(*pb), v2(*pb - u * head + n * head * 0.45), v2(*pb - u * head - n * head * 0.45), color);
+  if (pa && pb) flat_arrow(d, v2(*pa), v2(*pb), color, width);
 }
 
 // A trail's points lie 2 mm apart on the table, under a pixel at most zooms: drawn, a point comes this many pixels
@@ -140,32 +133,40 @@ void stroke(ImDrawList* d, const std::vector<ImVec2>& run, ImU32 colour, float w
 }
 
 // Trails: by motion colour (the segment into a point takes that point's motion), or in one colour (kept shots, ghost,
-// A trails), dashed when `dashed`. Each run of one colour is one polyline in screen space.
+// A trails), dashed when `dashed`. Each run of one colour is one polyline in screen space. The sliding runs go on top:
+// a drawn-back or followed ball returns along its path rolling, and would paint over where it slid.
 void paths(ImDrawList* d, const Viewport& vp, const Trails& trails, float alpha, float width, bool by_motion,
            ImU32 colour = IM_COL32(220, 220, 220, 255), bool dashed = false) {
   const ImU32 plain = (colour & ~IM_COL32_A_MASK) | (static_cast<ImU32>(alpha * 255) << IM_COL32_A_SHIFT);
+  const ImU32 sliding = motion_color(Motion::Sliding, alpha);
   const float spacing = dashed ? kDashPixels : kTrailPixels;
   std::vector<ImVec2> run;
+  std::vector<std::vector<ImVec2>> on_top;
+  auto draw = [&](ImU32 c) {
+    if (by_motion && c == sliding) on_top.push_back(run);
+    else stroke(d, run, c, width, dashed);
+  };
   for (const auto& path : trails) {
     run.clear();
     ImU32 run_colour = plain;
     for (const PathPoint& point : path) {
       const auto s = vp.project(point.position);
       if (!s) {  // behind the camera: the trail breaks there
-        stroke(d, run, run_colour, width, dashed);
+        draw(run_colour);
         run.clear();
         continue;
       }
       const ImU32 c = by_motion ? motion_color(point.motion, alpha) : plain;
       if (c != run_colour && !run.empty()) {
-        stroke(d, run, run_colour, width, dashed);
+        draw(run_colour);
         run.erase(run.begin(), run.end() - 1);  // the new colour starts where the old one ended
       }
       run_colour = c;
       extend(run, v2(*s), spacing);
     }
-    stroke(d, run, run_colour, width, dashed);
+    draw(run_colour);
   }
+  for (const auto& r : on_top) stroke(d, r, sliding, width, dashed);
 }
 
 // Where each ball that moved in a kept shot stopped: a ring of its size in the shot's colour (the paths of straight
@@ -210,8 +211,20 @@ bool notable(const Model& model, const Contact& c) {
   return std::abs(c.force.normal - weight) > 0.2 * weight;
 }
 
+// What a contact's force label says: its size, and what pushes. Two balls push each other equally and oppositely
+// (two arrows from the contact); a static body is named by its material.
+std::string force_label(const Model& model, const Contact& c) {
+  char size[32];
+  std::snprintf(size, sizeof size, c.force.normal < 10 ? "%.2g N" : "%.0f N", c.force.normal);
+  if (c.other_ball >= 0) return std::string(size) + " each way";
+  const std::string& m = model.colliders[c.collider].material;
+  const char* what = m == kBallCloth ? "cloth " : m == kBallCushion ? "cushion " : m == kBallPocket ? "pocket " : "";
+  return what + std::string(size);
+}
+
 // Velocity (white, 0.15 m per m/s), spin (yellow, 2 mm per rad/s, right-hand rule), contact forces (red, length
-// growing with log(1 + F / 1 N) so that a 2 N resting contact and a 2 kN collision both show).
+// growing with log(1 + F / 1 N) so that a 2 N resting contact and a 2 kN collision both show; between two balls one
+// arrow into each, Newton's third law).
 void vectors(ImDrawList* d, const Viewport& vp, const Lab& lab, Labels& labels) {
   const Frame& f = lab.frame();
   const ViewFlags& v = lab.settings.view;
@@ -225,15 +238,14 @@ void vectors(ImDrawList* d, const Viewport& vp, const Lab& lab, Labels& labels) 
   const Model& model = lab.shot ? lab.shot->sim().model() : lab.table_model;
   for (const Contact& c : contacts(model, f.state)) {
     if (!notable(model, c) || c.force.normal < kShownForce) continue;  // rack balls touching, pressing nothing
-    const double len = 0.03 * std::log1p(c.force.normal);
-    arrow(d, vp, c.point, c.point + unit_or_zero(c.force.force) * len, IM_COL32(255, 60, 60, 255), 2.5f);
+    const Vec3 along = unit_or_zero(c.force.force) * (0.03 * std::log1p(c.force.normal));
+    arrow(d, vp, c.point, c.point + along, IM_COL32(255, 60, 60, 255), 2.5f);
+    if (c.other_ball >= 0) arrow(d, vp, c.point, c.point - along, IM_COL32(255, 60, 60, 255), 2.5f);
     const auto s = vp.project(c.point);
     if (!s) continue;
     d->AddCircleFilled(v2(*s), 3.5f, IM_COL32(255, 60, 60, 255));
-    char text[32];
-    std::snprintf(text, sizeof text, c.force.normal < 10 ? "%.2g N" : "%.0f N", c.force.normal);
-    labels.add(kForce, v2(*s), ImVec2(static_cast<float>(s->x) + 6, static_cast<float>(s->y) + 4), text,
-               IM_COL32(255, 120, 120, 255));
+    labels.add(kForce, v2(*s), ImVec2(static_cast<float>(s->x) + 6, static_cast<float>(s->y) + 4),
+               force_label(model, c), IM_COL32(255, 120, 120, 255));
   }
 }
 

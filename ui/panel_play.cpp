@@ -173,7 +173,9 @@ void aim_section(Lab& lab) {
   f.label("cue speed");
   if (slider("##speed", cue.speed, 0.05, 15.0, "%.2f m/s")) lab.set_cue(cue, "speed");
   mark("speed slider");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Up/Down 0.25 m/s, Shift 1 m/s, Ctrl 0.02 m/s");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("the cue stick's speed at the tip; the ball leaves faster, as the stick is heavier (the speed "
+                      "it leaves at is shown under the tip picture)\nUp/Down 0.25 m/s, Shift 1 m/s, Ctrl 0.02 m/s");
   double aim = cue.aim * 180 / M_PI, elevation = cue.elevation * 180 / M_PI;
   f.label("aim");
   if (ImGui::DragScalar("##aim", ImGuiDataType_Double, &aim, 0.01f, nullptr, nullptr, "%.2f deg")) {
@@ -255,7 +257,9 @@ bool left_panel(Lab& lab, Camera& camera, const Layout& layout) {
     if (lab.margin.open) margin_section(lab);
     else update_margin(lab, lab.margin);  // closed: cancels what runs
     if (ImGui::CollapsingHeader("Balls")) balls_section(lab);
-    if (ImGui::CollapsingHeader("View")) view_section(lab, camera);
+    const bool view_open = ImGui::CollapsingHeader("View");
+    mark("View");
+    if (view_open) view_section(lab, camera);
   }
   shown = end_side_panel("panel Shot lab");
   ImGui::End();
@@ -272,7 +276,7 @@ void help_panel(bool* open) {
       {"Shift + left drag", "fine aim (0.01 deg a pixel)"}, {"Ctrl + left drag a ball", "move it"},
       {"Move tool: drag / shift+click", "move a ball / add one"}, {"B", "ball in hand (click puts it down, Esc back)"},
       {"P / Shift+P", "aim the next / previous pocket"}, {"Del", "remove the selected ball"},
-      {"Right drag / shift+right, middle", "orbit / pan the camera"}, {"Wheel", "zoom"},
+      {"Right drag / shift+right, middle", "orbit / pan the camera"}, {"Wheel", "zoom towards the pointer"},
       {"T / Home", "top view / fit the table"}, {"Left, Right (Shift, Ctrl)", "aim 0.1 deg (1, 0.01)"},
       {"Up, Down (Shift, Ctrl)", "cue speed 0.25 m/s (1, 0.02)"}, {"S or Enter", "shoot"},
       {"Space", "play / pause (shoot when aiming)"}, {", and .", "step back / forward one frame"},

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "ui/framing.hpp"
 #include "ui/panels.hpp"
@@ -49,31 +50,47 @@ void practice_section(Lab& lab) {
 
 void view_section(Lab& lab, Camera& camera) {
   ViewFlags& v = lab.settings.view;
-  ImGui::Checkbox("trails", &v.trails), ImGui::SameLine(), ImGui::Checkbox("ghost", &v.ghost), ImGui::SameLine(),
-      ImGui::Checkbox("predicted", &v.predicted);
-  ImGui::Checkbox("aim line", &v.aim), ImGui::SameLine(), ImGui::Checkbox("velocity", &v.velocity), ImGui::SameLine(),
-      ImGui::Checkbox("spin", &v.spin);
-  ImGui::Checkbox("contact forces", &v.forces), ImGui::SameLine(), ImGui::Checkbox("labels", &v.labels);
-  ImGui::Checkbox("centre of mass", &v.centre_of_mass), ImGui::SameLine(), ImGui::Checkbox("A/B compare", &v.compare);
+  // Each on the row before when it fits: at a large UI scale they wrap instead of running out of the panel.
+  ImGui::Checkbox("trails", &v.trails), same_line_if_checkbox_fits("ghost");
+  ImGui::Checkbox("ghost", &v.ghost), same_line_if_checkbox_fits("predicted");
+  ImGui::Checkbox("predicted", &v.predicted);
+  ImGui::Checkbox("aim line", &v.aim), same_line_if_checkbox_fits("velocity");
+  ImGui::Checkbox("velocity", &v.velocity), same_line_if_checkbox_fits("spin");
+  ImGui::Checkbox("spin", &v.spin);
+  ImGui::Checkbox("contact forces", &v.forces), same_line_if_checkbox_fits("labels");
+  ImGui::Checkbox("labels", &v.labels);
+  ImGui::Checkbox("centre of mass", &v.centre_of_mass), same_line_if_checkbox_fits("A/B compare");
+  ImGui::Checkbox("A/B compare", &v.compare);
   if (ImGui::Button("Top view (T)")) camera.top_view();
-  ImGui::SameLine();
+  same_line_if_fits("Fit table (Home)");
   if (ImGui::Button("Fit table (Home)")) home_view(camera, lab.scene);
-  ImGui::SameLine();
+  same_line_if_fits("Help (H)");
   if (ImGui::Button("Help (H)")) v.help = true;
-  float scale = lab.settings.ui_scale;
+  // A list of steps rather than a slider: one stray click on a slider set 1.61x, and the panels' rows ran out of them.
   const Fields f({"UI scale"});
   f.label("UI scale");
-  if (ImGui::SliderFloat("##scale", &scale, 0.75f, 2.0f, "%.2fx")) lab.settings.ui_scale = scale;
+  char shown[16];
+  std::snprintf(shown, sizeof shown, "%.2fx", lab.settings.ui_scale);
+  if (ImGui::BeginCombo("##scale", shown)) {
+    for (const float step : {0.75f, 1.0f, 1.25f, 1.5f, 1.75f, 2.0f}) {
+      char text[16];
+      std::snprintf(text, sizeof text, "%.2fx", step);
+      if (ImGui::Selectable(text, step == lab.settings.ui_scale)) lab.settings.ui_scale = step;
+    }
+    ImGui::EndCombo();
+  }
+  mark("UI scale");
   ImGui::Checkbox("presentation mode (F5)", &lab.settings.presentation);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("large fonts for a projector");
   if (ImGui::Button("Screenshot (F12)")) lab.screenshot_request = export_path(lab, "screenshot", "png");
-  ImGui::SameLine();
+  same_line_if_fits("Strobe picture");
   ImGui::BeginDisabled(!lab.shot);
   if (ImGui::Button("Strobe picture")) lab.strobe_request = export_path(lab, "strobe", "png");
+  mark("Strobe picture");
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("the shot as a multiple exposure, as a PNG: the balls at %d moments from its start to its end, "
                       "the earliest faintest", kStrobeExposures);
-  ImGui::SameLine();
+  same_line_if_fits("Export CSV");
   if (ImGui::Button("Export CSV")) try {
       const std::string path = export_path(lab, "trajectory", "csv");
       export_trajectory(lab, path);

@@ -11,6 +11,7 @@
 
 #include "ui/files.hpp"
 #include "ui/panels.hpp"
+#include "ui/renderer.hpp"
 #include "ui/ticks.hpp"
 #include "ui/widgets.hpp"
 
@@ -21,6 +22,22 @@ namespace {
 // J: the energy bars span at least this, so that a resting ball's micro-joules in its cloth contact do not fill one.
 constexpr double kEnergyBarFloor = 1e-3;
 constexpr double kMomentumBarFloor = 1e-3;  // kg m/s, likewise for a ball creeping to rest
+
+// What a ball's state in the table means, for its tooltip.
+const char* motion_meaning(Motion m) {
+  switch (m) {
+    case Motion::Stationary: return "at rest";
+    case Motion::Spinning: return "turning in place about the vertical; cloth friction slows the spin";
+    case Motion::Rolling:
+      return "rolling without slipping: the point on the cloth is still; rolling resistance slows it";
+    case Motion::Sliding: return "the ball slips over the cloth: friction changes its speed and spin until it rolls";
+    case Motion::Airborne:
+      return "off the cloth: after a hit a ball hops a little (friction between the balls lifts it), or it jumps";
+    case Motion::Pocketed: return "in a pocket";
+    case Motion::OffTable: return "off the table";
+  }
+  return "";
+}
 
 const Model& shown_model(const Lab& lab) { return lab.shot ? lab.shot->sim().model() : lab.table_model; }
 
@@ -63,6 +80,7 @@ void ball_table(Lab& lab) {
     ImGui::PushStyleColor(ImGuiCol_Text, motion_color(mo));
     ImGui::TextUnformatted(motion_name(mo));
     ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", motion_meaning(mo));
     ImGui::TableNextColumn();
     const double v = glm::length(velocity(f.state.x, i));  // under the rest speed the engine counts it stopped
     if (v > 0 && v < m.options.rest_speed) ImGui::Text("< %.3f", m.options.rest_speed);
@@ -112,20 +130,70 @@ void energy_bars(const Lab& lab) {
                        {"heat, sound", lost, IM_COL32(255, 110, 90, 255)}},
             scale, "J");
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("height: gravity's potential energy since the start (a ball sinks into the cloth, hops, falls "
-                      "into a pocket);\nheat, sound: what friction and contact damping have taken out of the motion");
+    ImGui::SetTooltip("in contacts: elastic energy of squeezed contacts (a resting ball's weight presses it about a "
+                      "micrometre into the cloth: a few microjoules);\nheight: gravity's potential energy since the "
+                      "start (a ball sinks into the cloth, hops, falls into a pocket);\nheat, sound: what friction and "
+                      "contact damping have taken out of the motion");
+}
+
+constexpr ImU32 kTotalColour = IM_COL32(90, 220, 255, 255);  // the total momentum, bar and arrow
+
+// The momenta in the table's plane as seen from above (x right, z down), head to tail from a common start: their sum,
+// the total (white), closes the chain; dashed, the total at the start, which holds while the balls only push each
+// other. Two balls moving apart after a hit: the angle between their momenta (the 90-degree rule of a cut).
+void momentum_diagram(const Lab& lab, const std::vector<std::pair<int, Vec3>>& momenta, const Vec3& start_total) {
+  std::vector<ImVec2> chain{{0, 0}};  // in kg m/s
+  for (const auto& [i, p] : momenta) chain.push_back({chain.back().x + float(p.x), chain.back().y + float(p.z)});
+  const ImVec2 start{float(start_total.x), float(start_total.z)};
+  ImVec2 lo = start, hi = start;
+  for (const ImVec2& c : chain)
+    lo = {std::min(lo.x, c.x), std::min(lo.y, c.y)}, hi = {std::max(hi.x, c.x), std::max(hi.y, c.y)};
+  const float w = ImGui::GetContentRegionAvail().x, h = ImGui::GetFontSize() * 6, pad = ImGui::GetFontSize();
+  const float k = std::min((w - 2 * pad) / std::max(hi.x - lo.x, 1e-9f), (h - 2 * pad) / std::max(hi.y - lo.y, 1e-9f));
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const ImVec2 o{at.x + w / 2 - k * (lo.x + hi.x) / 2, at.y + h / 2 - k * (lo.y + hi.y) / 2};
+  auto screen = [&](ImVec2 q) { return ImVec2{o.x + k * q.x, o.y + k * q.y}; };
+  ImDrawList* d = ImGui::GetWindowDrawList();
+  d->AddRect(at, {at.x + w, at.y + h}, IM_COL32(90, 90, 90, 255));
+  const ImVec2 s0 = screen({0, 0}), s1 = screen(start);
+  const float len = std::hypot(s1.x - s0.x, s1.y - s0.y);
+  for (float t = 0; t < len; t += 8)  // dashed
+    d->AddLine({s0.x + (s1.x - s0.x) * t / len, s0.y + (s1.y - s0.y) * t / len},
+               {s0.x + (s1.x - s0.x) * std::min(t + 4, len) / len, s0.y + (s1.y - s0.y) * std::min(t + 4, len) / len},
+               IM_COL32(160, 160, 160, 255), 1.5f);
+  for (size_t n = 0; n < momenta.size(); ++n) {
+    const glm::vec3 c = ball_look(lab.scene.balls[momenta[n].first].spec.id).color;
+    flat_arrow(d, screen(chain[n]), screen(chain[n + 1]), ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, 1)), 3.0f);
+  }
+  flat_arrow(d, s0, screen(chain.back()), kTotalColour, 2.0f);
+  ImGui::Dummy({w, h});
+  mark("momentum diagram");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Each ball's momentum (its colour), head to tail: they add up to the total (cyan).\nDashed: the "
+                      "total at the start. Collisions keep it; friction with the cloth and cushions changes it.");
+  if (momenta.size() != 2) return;
+  const Vec3 a = momenta[0].second, b = momenta[1].second;
+  const double angle = std::acos(std::clamp(glm::dot(a, b) / (glm::length(a) * glm::length(b)), -1.0, 1.0));
+  text_wrapped("angle between %s and %s: %.1f deg", lab.scene.balls[momenta[0].first].spec.id.c_str(),
+               lab.scene.balls[momenta[1].first].spec.id.c_str(), angle * 180 / M_PI);
+  readout("momentum angle deg", angle * 180 / M_PI);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Right after a cut with a stun hit (no spin) it is close to 90 deg: equal masses, nearly "
+                      "elastic.\nThen friction bends the cue ball's path: a rolling cue ball ends near 30 deg off its "
+                      "line.");
 }
 
 void momentum_bars(const Lab& lab) {
   const Frame& f = lab.frame();
   const Model& m = shown_model(lab);
   std::vector<Bar> bars;
+  std::vector<std::pair<int, Vec3>> momenta;  // of the balls moving, for the diagram
   Vec3 total{0.0};
   // Scaled to the shot's start too: a ball come to rest with 1e-4 kg m/s left does not fill its bar.
   double scale = kMomentumBarFloor;
+  Vec3 start_total{0.0};
   if (lab.shot) {
     const State& start = lab.shot->frames().front().state;
-    Vec3 start_total{0.0};
     for (int i = 0; i < start.ball_count(); ++i) {
       const Vec3 p = ball_motion(m, start, i).momentum;
       start_total += p;
@@ -138,10 +206,11 @@ void momentum_bars(const Lab& lab) {
     const Vec3 p = ball_motion(m, f.state, i).momentum;
     total += p;
     scale = std::max(scale, glm::length(p));
+    if (glm::length(p) > 1e-3 * scale) momenta.emplace_back(i, p);
     if (bars.size() < 8 && (glm::length(p) > 1e-6 || i == lab.selected))
       bars.push_back({lab.scene.balls[i].spec.id, glm::length(p), IM_COL32(80, 170, 255, 255)});
   }
-  bars.push_back({"total", glm::length(total), IM_COL32(255, 255, 255, 255)});
+  bars.push_back({"total", glm::length(total), kTotalColour});
   scale = std::max(scale, glm::length(total));
   auto shown = [](double v) { return std::abs(v) < 5e-4 ? 0.0 : v; };  // no "-0.000" at rest
   // One line where it fits, else the pair on a line of its own: wrapping breaks after a '.', inside a number.
@@ -155,6 +224,9 @@ void momentum_bars(const Lab& lab) {
     ImGui::TextUnformatted(pair);
   }
   bar_chart("momentum", bars, scale, "kg m/s");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The bars are sizes: the total is the sum of the arrows below, not of the bars.");
+  if (lab.shot) momentum_diagram(lab, momenta, start_total);
 }
 
 void centre_of_mass(const Lab& lab) {

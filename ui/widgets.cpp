@@ -188,6 +188,15 @@ void text_wrapped(const char* fmt, ...) {
   }
 }
 
+void flat_arrow(ImDrawList* d, ImVec2 from, ImVec2 to, ImU32 color, float width) {
+  const float dx = to.x - from.x, dy = to.y - from.y, len = std::hypot(dx, dy);
+  if (len < 2) return;
+  const float ux = dx / len, uy = dy / len, head = std::min(10.0f, len * 0.4f), w = 0.45f * head;
+  d->AddLine(from, {to.x - ux * head * 0.5f, to.y - uy * head * 0.5f}, color, width);
+  d->AddTriangleFilled(to, {to.x - ux * head - uy * w, to.y - uy * head + ux * w},
+                       {to.x - ux * head + uy * w, to.y - uy * head - ux * w}, color);
+}
+
 void hint(const std::string& text) {
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
   text_wrapped("%s", text.c_str());

@@ -386,6 +386,20 @@ def player(binary, root, display, work):
     app.close()
 
 
+def first_event(app):
+    """Opens the events list (below the energy and momentum: the inspector is wheeled down to it) and returns the
+    name of its first row, or None."""
+    scroll_into_view(app, "Events")
+    app.click_widget(app.state(), "Events")
+    for _ in range(6):
+        s = app.state()
+        rows = sorted((k for k in s["widgets"] if k.startswith("event ")), key=lambda k: int(k.split()[1]))
+        if rows:
+            return scroll_into_view(app, rows[0]) and rows[0]
+        app.scroll(app.widget(s, "panel Inspector")["x"] + 60, s["window"][1] // 2, 2)
+    return None
+
+
 def scroll_into_view(app, name):
     """Wheel over the inspector until the widget lies wholly inside the window; returns the state then."""
     s = app.state()
@@ -439,11 +453,9 @@ def teacher(binary, root, display, work):
     app.key("space")
     s = app.state()
     check(not s["playing"], "Space pauses")
-    app.click_widget(s, "Events")
-    s = app.state()
-    first = next((k for k in sorted(s["widgets"]) if k.startswith("event ")), None)
+    first = first_event(app)
     if check(first is not None, "the events list shows the impact"):
-        app.click_widget(s, first)
+        app.click_widget(app.state(), first)
     s = app.state()
     check(s["shot"]["contact_on_screen"], f"scrubbed to the impact, the balls touch (t = {s['view_time']:.6f} s)")
     app.key("bracketleft", 7)  # 1/1024: a step of 16 microseconds
@@ -491,6 +503,44 @@ def teacher(binary, root, display, work):
     check(bars["x"] + bars["w"] <= panel["x"] + panel["w"],
           f"the energy values end inside the inspector ({bars['x'] + bars['w']:.0f} <= {panel['x'] + panel['w']:.0f} px)")
     app.key("F5")
+    app.close()
+    cut_lesson(binary, root, display, work)
+
+
+def cut_lesson(binary, root, display, work):
+    """The cut at 1/8 of real time: "." from the impact shows the collision in eight steps (one frame step, 2 ms,
+    used to pass over all of its 0.35 ms); the force label says both balls are pushed; after the hit the momentum
+    diagram gives the angle between the balls' momenta."""
+    app = App(binary, display, work, os.path.join(root, "presets", "cut.json"), config=os.path.join(work, "config-cut"))
+    app.key("bracketleft", 3)
+    app.key("f")
+    app.key("s")
+    s = app.wait(lambda s: s["shot"] and s["shot"]["events"] > 3, 30, "the cue ball reaches the 1 ball")
+    app.key("space")
+    first = first_event(app)
+    if not check(first is not None, "the events list shows the impact"):
+        return app.close()
+    app.click_widget(app.state(), first)
+    s = app.state()
+    start = s["view_time"]
+    check(s["shot"]["contact_on_screen"], f"the impact: the balls touch (t = {start:.6f} s)")
+    forces = [k for k in s["widgets"] if k.startswith("label ") and k.endswith("each way")]
+    check(len(forces) == 1, f"the force between the balls is labelled as pushing both ({forces})")
+    touching = 0
+    for _ in range(8):
+        app.key("period")
+        touching += app.state()["shot"]["contact_on_screen"]
+    lasted = (app.state()["view_time"] - start) * 1e3
+    app.key("period")
+    s = app.state()
+    check(touching >= 7 and not s["shot"]["contact_on_screen"] and lasted < 1.0,
+          f"eight steps of '.' go through the collision ({lasted:.3f} ms, in contact after {touching} of them), "
+          f"the ninth past it")
+    app.key("period", 10)
+    scroll_into_view(app, "momentum diagram")
+    s = app.state()
+    angle = s["readouts"].get("momentum angle deg")
+    check(angle is not None and 30 < angle < 100, f"after the hit the diagram gives the momenta's angle ({angle})")
     app.close()
 
 

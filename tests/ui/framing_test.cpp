@@ -84,6 +84,25 @@ TEST(Framing, ZoomingOutNeverJumpsIn) {
   EXPECT_LT(camera.distance, 20);
 }
 
+// From a teacher's trial: the wheel zoomed on the view's centre. It now zooms towards the cloth under the pointer,
+// which keeps its place on the screen, in and out.
+TEST(Framing, TheWheelZoomsTowardsThePointer) {
+  Camera camera;
+  const Vec3 spot{0.9, 0.0, -0.3};
+  for (const double notches : {+3.0, -2.0}) {
+    const Viewport before(camera, 0, 1000, 700);
+    const auto pixel = before.project(spot);
+    ASSERT_TRUE(pixel);
+    const double distance = camera.distance;
+    camera.zoom(notches, spot);
+    EXPECT_NE(camera.distance, distance);
+    const auto after = Viewport(camera, 0, 1000, 700).project(spot);
+    ASSERT_TRUE(after);
+    EXPECT_NEAR(after->x, pixel->x, 1e-6);
+    EXPECT_NEAR(after->y, pixel->y, 1e-6);
+  }
+}
+
 // A table frames its rails' outer corners, whatever else the scene holds.
 TEST(Framing, ATableFramesItsRails) {
   const Scene s = load_scene(std::string(SHOTLAB_SOURCE_DIR) + "/presets/cut.json");

@@ -357,6 +357,36 @@ TEST_F(LabTest, AMovedBallStaysOnTheClothAndARefusedShotIsNoStep) {
   EXPECT_EQ(lab.history.size(), steps);
 }
 
+// From a teacher's trial: at 1/8 of real time one step (2.1 ms) passed over the whole 0.35 ms collision of the cut.
+// A step forward now stops where it begins, then shows it in eight steps; stepping back retraces them.
+TEST_F(LabTest, SteppingShowsACollisionInEightSteps) {
+  load("cut.json");
+  settings.slowmo = 0.125;
+  lab.shoot();
+  ASSERT_TRUE(lab.shot);
+  lab.seek(0.15);
+  double begin = -1, end = -1;
+  for (int k = 0; k < 100 && end < 0; ++k) {
+    lab.step(+1);
+    for (const Event& e : lab.shot->sim().events())
+      if (e.bodies == std::vector<std::string>{"cue", "1"}) (e.kind == "contact_begin" ? begin : end) = e.time;
+  }
+  ASSERT_GT(begin, 0.15);
+  ASSERT_GT(end, begin);
+  EXPECT_LT(end - begin, 1e-3);  // a ball-ball collision, under a millisecond
+  lab.seek(0.15);
+  int inside = 0;
+  while (lab.view_time < begin) lab.step(+1);
+  EXPECT_DOUBLE_EQ(lab.view_time, begin);  // stopped where it begins
+  while (lab.view_time < end) lab.step(+1), ++inside;
+  EXPECT_EQ(inside, 8);
+  EXPECT_DOUBLE_EQ(lab.view_time, end);
+  for (int k = 0; k < 8; ++k) lab.step(-1);
+  EXPECT_NEAR(lab.view_time, begin, 1e-12);
+  lab.step(-1);
+  EXPECT_NEAR(lab.view_time, begin - 0.125 / 60, 1e-12);  // before it, frame steps again
+}
+
 TEST_F(LabTest, TheCueBallIsNotDeleted) {
   load("cut.json");
   lab.remove_ball(scene_ball(lab.scene, "cue"));
