@@ -220,7 +220,7 @@ namespace {
 
 // The plot asked for as a PNG, drawn again over the middle of the window at most of its size (a side panel's plot
 // is a few hundred pixels wide: too small for a slide), and the picture cropped to it and its margin.
-void draw_plot_capture(Lab& lab, const char* id, const PlotSpec& spec, const std::vector<PlotSeries>& series) {
+void draw_plot_capture(Lab& lab, const char* id, PlotSpec spec, const std::vector<PlotSeries>& series) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   const float w = 0.9f * vp->Size.x, h = std::min(0.5f * w, 0.9f * vp->Size.y);
   ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + 0.5f * vp->Size.x, vp->Pos.y + 0.5f * vp->Size.y), ImGuiCond_Always,
@@ -231,9 +231,17 @@ void draw_plot_capture(Lab& lab, const char* id, const PlotSpec& spec, const std
   constexpr ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
                                      ImGuiWindowFlags_NoFocusOnAppearing;
-  if (ImGui::Begin("##plot capture", nullptr, flags)) {
+  // On paper, as a handout or a slide wants it: white, dark text, no cursor at the time on screen.
+  spec.paper = true, spec.cursor = -1;
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, IM_COL32(255, 255, 255, 255));
+  ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(20, 20, 20, 255));
+  const bool open = ImGui::Begin("##plot capture", nullptr, flags);
+  ImGui::PopStyleColor(2);
+  if (open) {
     ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
+    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(20, 20, 20, 255));
     plot(id, spec, series, ImGui::GetContentRegionAvail().y);
+    ImGui::PopStyleColor();
     const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
     lab.screenshot_crop = Rect{at.x, at.y, size.x, size.y};  // the plot and a margin round it
     lab.plot_capture_drawn = true;

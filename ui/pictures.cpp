@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ui/files.hpp"
+#include "ui/framing.hpp"
 #include "ui/gl.hpp"
 
 namespace shotlab {
@@ -69,9 +70,26 @@ void write_strobe(Lab& lab, Renderer& renderer, const Viewport& vp, int window_h
   const double end = shot.sim().time();
   for (int k = 0; k < kStrobeExposures; ++k) {
     const double t = end * k / (kStrobeExposures - 1);
-    draw_balls(renderer, lab, shot.frame_at(t), 0.3f + 0.7f * k / (kStrobeExposures - 1));
+    draw_balls(renderer, lab, shot.frame_at(t), 0.45f + 0.55f * k / (kStrobeExposures - 1));
   }
-  if (write_window_png(path, static_cast<int>(vp.x0), 0, static_cast<int>(vp.width), window_h, window_h))
+  // The picture holds the table (its rails and a margin), not the whole view: the view between the panels is taller
+  // than wide on a narrow window, and the table filled a third of the picture.
+  double x0 = vp.x0, x1 = vp.x0 + vp.width, y0 = 0, y1 = window_h;
+  if (lab.scene.table) {
+    double lo_x = x1, hi_x = x0, lo_y = y1, hi_y = y0;
+    for (const Vec3& c : framed_points(lab.scene, false))
+      for (const double up : {0.0, rail_top(*lab.scene.table)})  // the rails' foot and top
+        if (const auto s = vp.project(c + Vec3{0, up, 0})) {
+          lo_x = std::min(lo_x, s->x), hi_x = std::max(hi_x, s->x);
+          lo_y = std::min(lo_y, s->y), hi_y = std::max(hi_y, s->y);
+        }
+    const double margin = 12 + 0.06 * (hi_x - lo_x);  // the drawn rails reach past the framed corners
+    if (lo_x < hi_x && lo_y < hi_y)
+      x0 = std::max(x0, lo_x - margin), x1 = std::min(x1, hi_x + margin), y0 = std::max(y0, lo_y - margin),
+      y1 = std::min(y1, hi_y + margin);
+  }
+  if (write_window_png(path, static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(x1 - x0),
+                       static_cast<int>(y1 - y0), window_h))
     lab.say(MessageKind::Note, "wrote " + path);
   else
     lab.say(MessageKind::Refused, "cannot write " + path);

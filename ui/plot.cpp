@@ -3,10 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <utility>
 
-#include "ui/files.hpp"
 #include "ui/ticks.hpp"
 #include "ui/widgets.hpp"
 
@@ -47,6 +45,17 @@ std::string with_unit(double v, const std::string& unit) {
   return text;
 }
 
+constexpr ImU32 kGrid = IM_COL32(90, 90, 90, 120), kPaperGrid = IM_COL32(205, 205, 205, 255);
+
+ImU32 grid(const PlotSpec& spec) { return spec.paper ? kPaperGrid : kGrid; }
+
+// A series' colour on paper: darker, so that the light ones (yellow) read on white.
+ImU32 ink(const PlotSpec& spec, ImU32 colour) {
+  if (!spec.paper) return colour;
+  ImVec4 c = ImGui::ColorConvertU32ToFloat4(colour);
+  return ImGui::GetColorU32(ImVec4(0.7f * c.x, 0.7f * c.y, 0.7f * c.z, 1.0f));
+}
+
 // Title and legend above the plot area; returns the height used.
 float header(ImDrawList* d, ImVec2 o, float width, const PlotSpec& spec, const std::vector<PlotSeries>& series) {
   const float line = ImGui::GetTextLineHeight();
@@ -63,7 +72,7 @@ float header(ImDrawList* d, ImVec2 o, float width, const PlotSpec& spec, const s
   for (const PlotSeries& s : series) {
     const float w = ImGui::CalcTextSize(s.name.c_str()).x + em(16);
     if (x + w > o.x + width) x = o.x + em(8), y += line;
-    d->AddRectFilled({x, y + line * 0.3f}, {x + em(10), y + line * 0.7f}, s.colour);
+    d->AddRectFilled({x, y + line * 0.3f}, {x + em(10), y + line * 0.7f}, ink(spec, s.colour));
     d->AddText({x + em(13), y}, ImGui::GetColorU32(ImGuiCol_Text), s.name.c_str());
     x += w + em(8);
   }
@@ -88,13 +97,11 @@ struct Area {
   float y(double value) const { return b.y - static_cast<float>((value - v.lo) / (v.hi - v.lo)) * (b.y - a.y); }
 };
 
-constexpr ImU32 kGrid = IM_COL32(90, 90, 90, 120);
-
-void value_axis(ImDrawList* d, const Area& p, const Ticks& ticks) {
+void value_axis(ImDrawList* d, const Area& p, const PlotSpec& spec, const Ticks& ticks) {
   const float line = ImGui::GetTextLineHeight();
   for (double y : ticks.values) {
     if (y < p.v.lo || y > p.v.hi) continue;
-    d->AddLine({p.a.x, p.y(y)}, {p.b.x, p.y(y)}, kGrid);
+    d->AddLine({p.a.x, p.y(y)}, {p.b.x, p.y(y)}, grid(spec));
     const std::string s = format_tick(y, ticks);
     d->AddText({p.a.x - em(4) - ImGui::CalcTextSize(s.c_str()).x, p.y(y) - line / 2}, ImGui::GetColorU32(ImGuiCol_Text),
                s.c_str());
@@ -110,7 +117,7 @@ void time_axis(ImDrawList* d, const Area& p, const PlotSpec& spec, float left, f
   for (double x : ticks.values) {
     const float X = p.x(spec.origin + x / unit.per_second);
     if (X < p.a.x - 0.5f || X > p.b.x + 0.5f) continue;
-    d->AddLine({X, p.a.y}, {X, p.b.y}, kGrid);
+    d->AddLine({X, p.a.y}, {X, p.b.y}, grid(spec));
     const std::string s = format_tick(x, ticks);
     d->AddText({X - ImGui::CalcTextSize(s.c_str()).x / 2, p.b.y + 1}, text, s.c_str());
   }
@@ -128,7 +135,7 @@ void curves(ImDrawList* d, const Area& p, const PlotSpec& spec, const std::vecto
     std::vector<ImVec2> pts;
     for (size_t k = 0; k < s.time.size(); ++k)
       if (std::isfinite(s.value[k])) pts.push_back({p.x(s.time[k]), p.y(std::clamp(s.value[k], p.v.lo, p.v.hi))});
-    simplified_polyline(d, pts, s.colour, em(1.6f));
+    simplified_polyline(d, pts, ink(spec, s.colour), em(spec.paper ? 2.4f : 1.6f));
   }
   if (spec.cursor >= p.t0 && spec.cursor <= p.t1)
     d->AddLine({p.x(spec.cursor), p.a.y}, {p.x(spec.cursor), p.b.y}, IM_COL32(255, 255, 255, 200), 1.5f);
@@ -171,13 +178,14 @@ PlotAction plot(const char* id, const PlotSpec& spec, const std::vector<PlotSeri
   const float top = o.y + header(d, o, width, spec, series);
   const auto [t0, t1] = time_extent(spec, series);
   const Range v = value_range(spec, series, t0, t1);
-  const Ticks yt = nice_ticks(v.lo, v.hi, 4);
+  // A tick every two and a half lines of height, at least four: a plot drawn large for a picture gets more.
+  const Ticks yt = nice_ticks(v.lo, v.hi, std::max(4, static_cast<int>((o.y + height - top) / (2.5f * line)) - 1));
   float left = 0;
   for (double y : yt.values) left = std::max(left, ImGui::CalcTextSize(format_tick(y, yt).c_str()).x);
   const Area area{{o.x + left + em(6), top}, {o.x + width - em(4), o.y + height - 2 * line - em(2)}, t0, t1, v};
   if (area.b.y - area.a.y < line || area.b.x - area.a.x < em(40)) return ImGui::PopID(), out;
-  d->AddRectFilled(area.a, area.b, IM_COL32(20, 22, 26, 255));
-  value_axis(d, area, yt);
+  d->AddRectFilled(area.a, area.b, spec.paper ? IM_COL32(255, 255, 255, 255) : IM_COL32(20, 22, 26, 255));
+  value_axis(d, area, spec, yt);
   time_axis(d, area, spec, o.x, width);
   curves(d, area, spec, series);
   if (hovered && spec.hover)
@@ -191,29 +199,6 @@ PlotAction plot(const char* id, const PlotSpec& spec, const std::vector<PlotSeri
   }
   ImGui::PopID();
   return out;
-}
-
-void write_plot_csv(const std::string& path, const PlotSpec& spec, const std::vector<PlotSeries>& series) {
-  std::ostringstream out;
-  out.precision(10);
-  const bool shared = !series.empty() && std::all_of(series.begin(), series.end(), [&](const PlotSeries& s) {
-    return s.time == series.front().time;
-  });
-  if (shared) {
-    out << "time_s";
-    for (const PlotSeries& s : series) out << ",\"" << s.name << " (" << spec.unit << ")\"";
-    out << '\n';
-    for (size_t k = 0; k < series.front().time.size(); ++k) {
-      out << series.front().time[k];
-      for (const PlotSeries& s : series) out << ',' << s.value[k];
-      out << '\n';
-    }
-  } else {
-    out << "series,time_s,value (" << spec.unit << ")\n";
-    for (const PlotSeries& s : series)
-      for (size_t k = 0; k < s.time.size(); ++k) out << '"' << s.name << "\"," << s.time[k] << ',' << s.value[k] << '\n';
-  }
-  write_file_atomic(path, out.str());
 }
 
 }  // namespace shotlab

@@ -13,6 +13,7 @@
 #include "ui/files.hpp"
 #include "ui/history.hpp"
 #include "ui/layout.hpp"
+#include "ui/plot_data.hpp"
 #include "ui/ticks.hpp"
 
 namespace shotlab {
@@ -151,6 +152,25 @@ std::string read(const std::filesystem::path& p) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// From a teacher's trial: a collision's plot counts microseconds since the contact began, its CSV only the shot's time.
+// The CSV now has both, so a student's table matches the picture.
+TEST(PlotCsv, ACollisionPlotWritesTheTimeSinceTheContactToo) {
+  const auto file = std::filesystem::temp_directory_path() / ("shotlab-plot-" + std::to_string(::getpid()) + ".csv");
+  PlotSpec spec;
+  spec.unit = "N";
+  spec.origin = 0.25;
+  spec.origin_name = "contact start";
+  write_plot_csv(file.string(), spec, {{"cue - 1", 0, {0.25, 0.2501}, {0.0, 150.0}}});
+  std::istringstream lines(read(file));
+  std::string header, first, second;
+  std::getline(lines, header), std::getline(lines, first), std::getline(lines, second);
+  EXPECT_EQ(header, "time_s,\"time since contact start (s)\",\"cue - 1 (N)\"");
+  EXPECT_EQ(first, "0.25,0,0");
+  EXPECT_EQ(second.substr(0, 7), "0.2501,");
+  EXPECT_NEAR(std::stod(second.substr(7)), 1e-4, 1e-12);
+  std::filesystem::remove(file);
 }
 
 TEST(Files, AtomicWriteReplacesWholeAndLeavesNoTemporaries) {
