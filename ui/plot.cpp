@@ -158,7 +158,16 @@ std::optional<double> hover(ImDrawList* d, const Area& p, const PlotSpec& spec, 
   for (const PlotSeries& s : series)
     if (const auto y = value_at(s, t)) tip += "\n" + s.name + ": " + with_unit(*y, spec.unit);
   if (!spec.hint.empty()) tip += "\n" + spec.hint;
-  ImGui::SetTooltip("%s\n(%sright-click: export)", tip.c_str(), spec.seekable ? "click: go to this time; " : "");
+  tip += std::string("\n(") + (spec.seekable ? "click: go to this time; " : "") + "right-click: export)";
+  // Above the plot (below it where there is no room), beside the pointer: not over the curve it reads.
+  const ImVec2 pad = ImGui::GetStyle().WindowPadding, size = ImGui::CalcTextSize(tip.c_str());
+  const float w = size.x + 2 * pad.x, h = size.y + 2 * pad.y, right = ImGui::GetMainViewport()->Size.x;
+  const bool above = p.a.y - h - 4 >= 0, leftwards = m.x + 16 + w > right;
+  ImGui::SetNextWindowPos({leftwards ? m.x - 16 : m.x + 16, above ? p.a.y - 4 : p.b.y + 2 * ImGui::GetTextLineHeight()},
+                          ImGuiCond_Always, {leftwards ? 1.0f : 0.0f, above ? 1.0f : 0.0f});
+  ImGui::BeginTooltip();
+  ImGui::TextUnformatted(tip.c_str());
+  ImGui::EndTooltip();
   return t;
 }
 
