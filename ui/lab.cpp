@@ -196,6 +196,7 @@ void Lab::scene_changed() {
 void Lab::physics_changed() {
   if (shot && compare.empty() && settings.view.compare) {
     compare = trails(shot->sim().time());
+    compare_frames = shot->frames();
     compare_label = "A: the shot before the first change";
   }
   scene_changed();
@@ -241,7 +242,7 @@ void Lab::reset_physics() {
   scene.model.materials = loaded.model.materials;
   scene.model.options = loaded.model.options;
   scene.model.integrator = loaded.model.integrator;
-  compare.clear(), compare_label.clear();
+  compare.clear(), compare_label.clear(), compare_frames.clear();
   const bool had_compare = settings.view.compare;
   settings.view.compare = false;  // the reset shot is the A itself: nothing to compare with
   physics_changed();
@@ -252,6 +253,7 @@ void Lab::reset_physics() {
 void Lab::pin_compare() {
   if (!shot) return;
   compare = trails(shot->sim().time());
+  compare_frames = shot->frames();
   const auto changes = physics_changes();
   compare_label = changes.empty() ? "A: as loaded" : "A: pinned (" + std::to_string(changes.size()) + " changes)";
 }
@@ -328,12 +330,14 @@ void Lab::take_step(HistoryStep step) {
 }
 
 SceneFile Lab::current_file() const {
-  return {scene_path, loaded, {kept, compare, compare_label, target, measured.shot, measured.path, measured.last}};
+  return {scene_path, loaded,
+          {kept, compare, compare_label, target, measured.shot, measured.path, measured.last, compare_frames}};
 }
 
 void Lab::restore(Workbench bench) {
   kept = std::move(bench.kept);
   compare = std::move(bench.compare), compare_label = std::move(bench.compare_label);
+  compare_frames = std::move(bench.compare_frames);
   target = bench.target;
   measured.fit.cancel();  // a fit of the scene being left is not applied to the one coming back
   measured.shot = std::move(bench.measured), measured.path = std::move(bench.measured_path);

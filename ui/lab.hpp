@@ -56,6 +56,7 @@ class Lab {
   std::vector<KeptShot> kept;
   Trails compare;               // "A": the shot's trails before the physics was changed
   std::string compare_label;
+  std::vector<Frame> compare_frames;  // A's frames: its lines in the plots
   std::optional<Vec3> target;   // where the cue ball should stop (players' position play)
   double target_radius = 0.05;  // m
   Tool tool = Tool::Aim;

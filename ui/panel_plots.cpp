@@ -16,6 +16,7 @@ namespace {
 constexpr ImU32 kBlue = IM_COL32(80, 170, 255, 255), kYellow = IM_COL32(255, 220, 80, 255);
 constexpr ImU32 kGreen = IM_COL32(120, 230, 120, 255), kPurple = IM_COL32(200, 140, 255, 255);
 constexpr ImU32 kWhite = IM_COL32(240, 240, 240, 255), kRed = IM_COL32(255, 110, 90, 255);
+constexpr ImU32 kFaint = IM_COL32(255, 255, 255, 110);  // a colour & kFaint: the same, mostly transparent (A's lines)
 
 void seek_to(Lab& lab, std::optional<double> t) {
   if (t) lab.seek(std::clamp(*t, 0.0, lab.shot->sim().time()));
@@ -28,13 +29,10 @@ double shot_span(const Lab& lab) {
 // The ball's speed and the speed its spin would roll it at (R times spin about the horizontal axis across the
 // travel), both along its direction of travel: the second is negative with backspin, and the lines meet where the
 // ball rolls. At rest the last direction of travel is kept (the spin's own direction before the ball ever moved).
-// Like the energy plot it shows the shot as far as it has run, the cursor at the time on screen.
-void motion_plot(Lab& lab) {
-  const int i = lab.selected;
-  const double r = lab.scene.balls[i].spec.radius;
-  PlotSeries v{"speed v", kBlue, {}, {}}, w{"R x spin along v (< 0: backspin)", kYellow, {}, {}};
+// Appended to `v` and `w`, from each of `frames`.
+void motion_series(const std::vector<Frame>& frames, int i, double r, PlotSeries& v, PlotSeries& w) {
   Vec3 along{0.0};
-  for (const Frame& f : lab.shot->frames()) {
+  for (const Frame& f : frames) {
     const Vec3 vel = velocity(f.state.x, i), rolls_at = r * glm::cross(spin(f.state.x, i), Vec3{0, 1, 0});
     const Vec3 flat{vel.x, 0, vel.z};
     if (glm::length(flat) > 1e-9) along = glm::normalize(flat);
@@ -42,9 +40,25 @@ void motion_plot(Lab& lab) {
     v.time.push_back(f.time), v.value.push_back(glm::length(vel));
     w.time.push_back(f.time), w.value.push_back(glm::dot(rolls_at, along));
   }
+}
+
+// The selected ball's motion_series, the shot as far as it has run, the cursor at the time on screen; with the A/B
+// compare on, A's lines (the run before the physics changed) fainter beside them.
+void motion_plot(Lab& lab) {
+  const int i = lab.selected;
+  const double r = lab.scene.balls[i].spec.radius;
+  std::vector<PlotSeries> series{{"speed v", kBlue, {}, {}}, {"R x spin along v (< 0: backspin)", kYellow, {}, {}}};
+  motion_series(lab.shot->frames(), i, r, series[0], series[1]);
+  const std::vector<Frame>& a = lab.compare_frames;
+  const int balls = lab.shot->frames().front().state.ball_count();
+  if (lab.settings.view.compare && !a.empty() && a.front().state.ball_count() == balls) {
+    series.push_back({"A: speed", kBlue & kFaint, {}, {}});
+    series.push_back({"A: R x spin", kYellow & kFaint, {}, {}});
+    motion_series(a, i, r, series[2], series[3]);
+  }
   PlotSpec spec{"ball " + lab.scene.balls[i].spec.id + ": speed and spin", "m/s", lab.view_time, 0, shot_span(lab)};
   spec.hint = "the ball rolls without slipping where the two lines meet; below zero the spin is backspin";
-  seek_to(lab, lab_plot(lab, "motion", spec, {v, w}, em(150)));
+  seek_to(lab, lab_plot(lab, "motion", spec, series, em(150)));
 }
 
 void energy_plot(Lab& lab) {

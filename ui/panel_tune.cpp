@@ -291,10 +291,12 @@ void tune_panel(Lab& lab, Tuning& tuning) {
   const Fields f({"probe impact speed"});
   f.label("probe impact speed");
   slider("##probe speed", lab.settings.impact_speed, 0.01, 20.0, "%.2f m/s", true);
+  // Open at first: ball-ball, or the cloth in a scene of one ball (it has no ball-ball contact to tune).
+  const int first = lab.scene.balls.size() < 2 && has_pair(lab, 1) ? 1 : 0;
   for (int k = 0; k < kTunedPairs; ++k) {
     if (!has_pair(lab, k)) continue;
     ImGui::PushID(k);
-    const bool open = ImGui::CollapsingHeader(kPairs[k]->c_str(), k == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+    const bool open = ImGui::CollapsingHeader(kPairs[k]->c_str(), k == first ? ImGuiTreeNodeFlags_DefaultOpen : 0);
     mark(*kPairs[k]);
     if (open) {
       changed |= material_editor(lab, tuning, k);

@@ -9,6 +9,7 @@
 #include "shotlab/io/fit.hpp"
 #include "shotlab/io/measured.hpp"
 #include "ui/predictor.hpp"
+#include "ui/shot.hpp"
 
 namespace shotlab {
 
@@ -30,6 +31,7 @@ struct Workbench {
   std::optional<MeasuredShot> measured;  // the measured shot the scene was made from, its CSV file
   std::string measured_path;
   std::optional<FitResult> measured_fit;  // the last fit of it applied
+  std::vector<Frame> compare_frames;     // A's frames: its lines in the plots
 };
 
 }  // namespace shotlab

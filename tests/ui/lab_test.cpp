@@ -387,6 +387,22 @@ TEST_F(LabTest, SteppingShowsACollisionInEightSteps) {
   EXPECT_NEAR(lab.view_time, begin - 0.125 / 60, 1e-12);  // before it, frame steps again
 }
 
+// From a teacher's trial: after a friction change only the trails compared A with B; the plots showed B alone. A's
+// frames are now kept with its trails (the motion plot draws its lines from them) and go with a reset.
+TEST_F(LabTest, APhysicsChangeKeepsTheRunBeforeItForThePlots) {
+  load("sliding_to_rolling.json");
+  lab.shoot();
+  ASSERT_TRUE(lab.shot);
+  lab.seek(2.0);
+  const size_t frames = lab.shot->frames().size();
+  lab.scene.model.materials[kBallCloth].friction *= 0.5;
+  lab.physics_changed();
+  EXPECT_EQ(lab.compare_frames.size(), frames);
+  EXPECT_FALSE(lab.compare.empty());
+  lab.reset_physics();
+  EXPECT_TRUE(lab.compare_frames.empty());
+}
+
 TEST_F(LabTest, TheCueBallIsNotDeleted) {
   load("cut.json");
   lab.remove_ball(scene_ball(lab.scene, "cue"));
