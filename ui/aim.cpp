@@ -141,7 +141,11 @@ int pocket_object(const Scene& scene) {
 Vec3 Zone::clamp(const Vec3& p) const { return {std::clamp(p.x, lo_x, hi_x), p.y, std::clamp(p.z, lo_z, hi_z)}; }
 
 Zone hand_zone(const TableSpec& t, double radius, bool behind_head_string) {
-  const double hx = t.length / 2 - radius, hz = t.width / 2 - radius;
+  // A resting ball's centre comes within `short_of` of the nose line where it touches the nose's capsule.
+  const NoseAxis a = nose_axis(t);
+  const double r = radius + t.cushion_radius, dy = a.up - radius;
+  const double short_of = std::abs(dy) < r ? std::sqrt(r * r - dy * dy) - a.out : radius;
+  const double hx = t.length / 2 - short_of, hz = t.width / 2 - short_of;
   return {-hx, behind_head_string ? -t.length / 4 : hx, -hz, hz};
 }
 

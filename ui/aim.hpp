@@ -39,8 +39,9 @@ void check_drops(const Scene& scene, int object, std::vector<PocketAim>& aims);
 // (-1 when there is no cue strike or no other ball).
 int pocket_object(const Scene& scene);
 
-// Where the cue ball may go with ball in hand: the whole bed inside the cushions, or for a break the part behind the
-// head string (the quarter of a pool table's length nearest the head rail).
+// Where the cue ball may go with ball in hand, and any ball a drag moves: the whole bed inside the cushions, up to
+// touching a cushion's nose, or for a break the part behind the head string (the quarter of a pool table's length
+// nearest the head rail).
 struct Zone {
   double lo_x, hi_x, lo_z, hi_z;  // m, ball centres
   Vec3 clamp(const Vec3& p) const;

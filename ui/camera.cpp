@@ -38,8 +38,9 @@ void Camera::zoom(double steps, const std::optional<glm::dvec3>& toward) {
   // Out to kMaxZoom, or as far as a fit had put it: the first notch never jumps closer.
   const double before = distance;
   distance = std::clamp(distance * std::pow(0.88, steps), kMinDistance, std::max(kMaxZoom, distance));
-  // Eye and target scaled about the point by the same ratio: it keeps its place on the screen.
-  if (toward) target += (*toward - target) * (1 - distance / before);
+  // Eye and target scaled about the point by the same ratio: it keeps its place on the screen. A point far beyond the
+  // target (the cloth near the horizon of a low view) would throw the camera off: then towards the target.
+  if (toward && glm::length(*toward - target) < 2 * before) target += (*toward - target) * (1 - distance / before);
   auto_fit = false;
 }
 

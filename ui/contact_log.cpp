@@ -12,7 +12,9 @@ namespace {
 
 constexpr int kSamplesPerStep = 4;  // points on each step's dense output, besides its end
 
-std::vector<ContactTrace> spans_from(const std::vector<Event>& events, const Model& model) {
+}  // namespace
+
+std::vector<ContactTrace> contact_spans(const std::vector<Event>& events, const Model& model) {
   std::vector<ContactTrace> out;
   std::map<std::pair<std::string, std::string>, size_t> open;
   for (const Event& e : events) {
@@ -39,6 +41,8 @@ std::vector<ContactTrace> spans_from(const std::vector<Event>& events, const Mod
   }
   return out;
 }
+
+namespace {
 
 // Index of a body named `name` among the island's balls (as a ball) or the model's colliders.
 bool matches(const Contact& c, const Model& m, int ball, const std::string& other) {
@@ -93,7 +97,7 @@ ContactLog trace_contacts(const Scene& start, const std::vector<Event>& events, 
   log.until = until;
   log.events = events.size();
   Prepared p = prepare(start);
-  log.contacts = spans_from(events, p.model);
+  log.contacts = contact_spans(events, p.model);
   if (log.contacts.empty()) return log;
   Simulation sim(std::move(p.model), std::move(p.state));
   std::vector<size_t> live;

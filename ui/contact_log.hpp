@@ -30,6 +30,10 @@ struct ContactLog {
   std::vector<ContactTrace> contacts;  // in order of their begin
 };
 
+// The contacts named by `events` other than the bed's, their begin and end (end < 0: not ended by the last event),
+// untraced; a ball that left play ends its contacts there.
+std::vector<ContactTrace> contact_spans(const std::vector<Event>& events, const Model& model);
+
 // The contacts named by `events` (a shot of `start`), traced up to `until` s.
 ContactLog trace_contacts(const Scene& start, const std::vector<Event>& events, double until);
 

@@ -24,25 +24,6 @@ std::string fixed(double v, int decimals) {
   return text;
 }
 
-// Each contact of `events` but the bed's (contact_begin to its contact_end, s); one not ended yet ends at +infinity.
-std::vector<std::pair<double, double>> contact_windows(const std::vector<Event>& events) {
-  std::vector<std::pair<double, double>> out;
-  std::map<std::vector<std::string>, size_t> open;  // bodies -> its window in out
-  for (const Event& e : events) {
-    if (e.bodies.size() == 2 && e.bodies[1] == "bed") continue;
-    if (e.kind == "contact_begin") {
-      open[e.bodies] = out.size();
-      out.emplace_back(e.time, std::numeric_limits<double>::infinity());
-    } else if (e.kind == "contact_end") {
-      const auto it = open.find(e.bodies);
-      if (it == open.end()) continue;
-      out[it->second].second = e.time;
-      open.erase(it);
-    }
-  }
-  return out;
-}
-
 // The model's tunable part as the scene format spells it (materials, model options, integrator, gravity).
 nlohmann::json physics_json(const Scene& s) {
   const nlohmann::json doc = scene_to_json(s);
@@ -397,20 +378,24 @@ void Lab::show(double t) {
 
 // A display frame at the clock's speed, but a collision shorter than eight such steps is not stepped over: a step
 // towards one stops at its edge, and a step inside it is an eighth of it (a 0.35 ms collision at 1/8 of real time
-// would otherwise pass within one 2 ms step).
+// would otherwise pass within one 2 ms step). The shot is run eight frames past the step first, so that a collision
+// short enough to matter that begins within it is known whole.
 void Lab::step(int direction) {
   if (!shot) return;
   playing = false;
   const double frame = settings.slowmo * kDisplayFrame, from = view_time;
   double target = std::max(0.0, from + direction * frame);
-  if (direction > 0 && target > shot->sim().time()) shot->advance(target, 1.0);  // the step's events are known
-  for (const auto& [begin, end] : contact_windows(shot->sim().events())) {
+  if (direction > 0 && target + 8 * frame > shot->sim().time()) shot->advance(target + 8 * frame, 1.0);
+  for (const ContactTrace& c : contact_spans(shot->sim().events(), shot->sim().model())) {
+    const double begin = c.begin, end = c.end < 0 ? std::numeric_limits<double>::infinity() : c.end;
     const double fine = (end - begin) / 8;
-    if (!(fine < frame)) continue;
-    if (direction > 0 && end > from && begin < target)
-      target = std::min(target, begin > from ? begin : std::min(end, from + fine));
-    else if (direction < 0 && begin < from && end > target)
-      target = std::max(target, end < from ? end : std::max(begin, from - fine));
+    if (fine < frame && direction > 0 && begin > from && begin < target) {
+      target = begin;
+    } else if (fine < frame && direction > 0 && begin <= from && end > from) {
+      target = std::min(target, end - from < 1.5 * fine ? end : from + fine);  // no sliver of a ninth step
+    } else if (fine < frame && direction < 0 && begin < from && end > target) {
+      target = std::max(target, end < from ? end : (from - begin < 1.5 * fine ? begin : from - fine));
+    }
   }
   show(std::min(target, shot->sim().time()));
 }

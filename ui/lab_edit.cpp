@@ -166,8 +166,8 @@ bool Lab::begin_move(int i) {
 bool Lab::move_ball(int i, const Vec3& to) {
   if (shot || i < 0 || i >= static_cast<int>(scene.balls.size())) return false;
   Vec3 p{to.x, scene.balls[i].position.y, to.z};
-  // On a table a ball stays on the cloth: dragged past a cushion it slides along it (inside, it would start pressed
-  // into the rubber and the scene would not simulate).
+  // On a table a ball stays on the cloth: dragged past a cushion it slides along it, touching it (past the nose line
+  // it would start off the bed, and the scene would not simulate; short of it, pressed into the rubber).
   if (scene.table) p = hand_zone(*scene.table, scene.balls[i].spec.radius, false).clamp(p);
   if (!fits(i, p)) return false;
   history.record("move " + scene.balls[i].spec.id, scene, "move");  // merged into the gesture's entry

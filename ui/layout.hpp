@@ -21,6 +21,9 @@ struct PanelRequest {
 struct Layout {
   Rect left, right, view;
   Rect left_grip;  // the last kLeftGripPx of an open left panel's width, outside its window: its width grip
+  // Pixels: each panel's width as shown, its grip included; 0 for a collapsed one.
+  float left_shown() const { return left_grip.w > 0 ? left_grip.right() - left.x : 0; }
+  float right_shown(bool open) const { return open ? right.w : 0; }
 };
 
 inline constexpr float kMinViewShare = 0.45f;  // of the window width, kept for the 3D view

@@ -232,14 +232,15 @@ void draw_plot_capture(Lab& lab, const char* id, PlotSpec spec, const std::vecto
                                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
                                      ImGuiWindowFlags_NoFocusOnAppearing;
   // On paper, as a handout or a slide wants it: white, dark text, no cursor at the time on screen.
+  constexpr ImU32 kInk = IM_COL32(20, 20, 20, 255);
   spec.paper = true, spec.cursor = -1;
   ImGui::PushStyleColor(ImGuiCol_WindowBg, IM_COL32(255, 255, 255, 255));
-  ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(20, 20, 20, 255));
+  ImGui::PushStyleColor(ImGuiCol_Text, kInk);
   const bool open = ImGui::Begin("##plot capture", nullptr, flags);
   ImGui::PopStyleColor(2);
   if (open) {
     ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
-    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(20, 20, 20, 255));
+    ImGui::PushStyleColor(ImGuiCol_Text, kInk);
     plot(id, spec, series, ImGui::GetContentRegionAvail().y);
     ImGui::PopStyleColor();
     const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();

@@ -242,8 +242,8 @@ bool left_panel(Lab& lab, Camera& camera, const Layout& layout) {
     PanelState& panels = lab.settings.panels;
     const Rect& grip = layout.left_grip;
     const float bar = ImGui::GetFrameHeight();
-    const PanelWidths widths{panels.left_width, panels.right_width, grip.right() - layout.left.x,
-                             panels.right_open ? layout.right.w : 0};
+    const PanelWidths widths{panels.left_width, panels.right_width, layout.left_shown(),
+                             layout.right_shown(panels.right_open)};
     panel_width_grip("left panel width grip", Rect{grip.x, grip.y + bar, grip.w, grip.h - bar}, layout.left.x, widths,
                      ImGui::GetFontSize() / kBaseFontPx, PanelState{}.left_width);
     text_wrapped("%s", lab.scene.name.c_str());

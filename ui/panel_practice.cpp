@@ -72,7 +72,7 @@ void view_section(Lab& lab, Camera& camera) {
   char shown[16];
   std::snprintf(shown, sizeof shown, "%.2fx", lab.settings.ui_scale);
   if (ImGui::BeginCombo("##scale", shown)) {
-    for (const float step : {0.75f, 1.0f, 1.25f, 1.5f, 1.75f, 2.0f}) {
+    for (const float step : {0.75f, 1.0f, 1.25f, 1.5f, 1.75f, 2.0f, 2.5f, 3.0f}) {
       char text[16];
       std::snprintf(text, sizeof text, "%.2fx", step);
       if (ImGui::Selectable(text, step == lab.settings.ui_scale)) lab.settings.ui_scale = step;

@@ -139,7 +139,7 @@ void energy_bars(const Lab& lab) {
 constexpr ImU32 kTotalColour = IM_COL32(90, 220, 255, 255);  // the total momentum, bar and arrow
 
 // The momenta in the table's plane as seen from above (x right, z down), head to tail from a common start: their sum,
-// the total (white), closes the chain; dashed, the total at the start, which holds while the balls only push each
+// the total (cyan), closes the chain; dashed, the total at the start, which holds while the balls only push each
 // other. Two balls moving apart after a hit: the angle between their momenta (the 90-degree rule of a cut).
 void momentum_diagram(const Lab& lab, const std::vector<std::pair<int, Vec3>>& momenta, const Vec3& start_total) {
   std::vector<ImVec2> chain{{0, 0}};  // in kg m/s
@@ -322,8 +322,7 @@ bool inspector_panel(Lab& lab, Tuning& tuning, const Layout& layout) {
     const Rect& where = layout.right;
     const float bar = ImGui::GetFrameHeight();
     const Rect edge{where.x, where.y + bar, 0.75f * ImGui::GetStyle().WindowPadding.x, where.h - bar};
-    const PanelWidths widths{panels.right_width, panels.left_width, where.w,
-                             panels.left_open ? layout.left_grip.right() - layout.left.x : 0};
+    const PanelWidths widths{panels.right_width, panels.left_width, layout.right_shown(true), layout.left_shown()};
     panel_width_grip("panel width grip", edge, where.right(), widths, ImGui::GetFontSize() / kBaseFontPx,
                      PanelState{}.right_width);
     if (ImGui::BeginTabBar("tabs")) {

@@ -3,6 +3,8 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <vector>
 
 #include "ui/files.hpp"
@@ -60,6 +62,25 @@ void write_screenshot(Lab& lab, int window_w, int window_h) {
   else lab.say(MessageKind::Refused, "cannot write " + path);
 }
 
+namespace {
+
+// The screen box of the table's framed corners at the foot and the top of its rails; none without a table or where a
+// corner is behind the camera (zoomed in close: the box would leave the near part out).
+std::optional<Rect> table_on_screen(const Scene& scene, const Viewport& vp) {
+  if (!scene.table) return std::nullopt;
+  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+  for (const Vec3& c : framed_points(scene, false))
+    for (const double up : {0.0, rail_top(*scene.table)}) {
+      const auto s = vp.project(c + Vec3{0, up, 0});
+      if (!s) return std::nullopt;
+      lo_x = std::min(lo_x, s->x), hi_x = std::max(hi_x, s->x);
+      lo_y = std::min(lo_y, s->y), hi_y = std::max(hi_y, s->y);
+    }
+  return Rect{float(lo_x), float(lo_y), float(hi_x - lo_x), float(hi_y - lo_y)};
+}
+
+}  // namespace
+
 void write_strobe(Lab& lab, Renderer& renderer, const Viewport& vp, int window_h) {
   const std::string path = lab.strobe_request;
   lab.strobe_request.clear();
@@ -75,19 +96,12 @@ void write_strobe(Lab& lab, Renderer& renderer, const Viewport& vp, int window_h
   // The picture holds the table (its rails and a margin), not the whole view: the view between the panels is taller
   // than wide on a narrow window, and the table filled a third of the picture.
   double x0 = vp.x0, x1 = vp.x0 + vp.width, y0 = 0, y1 = window_h;
-  if (lab.scene.table) {
-    double lo_x = x1, hi_x = x0, lo_y = y1, hi_y = y0;
-    for (const Vec3& c : framed_points(lab.scene, false))
-      for (const double up : {0.0, rail_top(*lab.scene.table)})  // the rails' foot and top
-        if (const auto s = vp.project(c + Vec3{0, up, 0})) {
-          lo_x = std::min(lo_x, s->x), hi_x = std::max(hi_x, s->x);
-          lo_y = std::min(lo_y, s->y), hi_y = std::max(hi_y, s->y);
-        }
-    const double margin = 12 + 0.06 * (hi_x - lo_x);  // the drawn rails reach past the framed corners
-    if (lo_x < hi_x && lo_y < hi_y)
-      x0 = std::max(x0, lo_x - margin), x1 = std::min(x1, hi_x + margin), y0 = std::max(y0, lo_y - margin),
-      y1 = std::min(y1, hi_y + margin);
+  if (const auto box = table_on_screen(lab.scene, vp)) {
+    const double margin = 12 + 0.06 * (box->right() - box->x);  // the drawn rails reach past the framed corners
+    x0 = std::max(x0, box->x - margin), x1 = std::min(x1, box->right() + margin);
+    y0 = std::max(y0, box->y - margin), y1 = std::min(y1, box->bottom() + margin);
   }
+  if (x1 - x0 < 1 || y1 - y0 < 1) x0 = vp.x0, x1 = vp.x0 + vp.width, y0 = 0, y1 = window_h;  // the table is off screen
   if (write_window_png(path, static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(x1 - x0),
                        static_cast<int>(y1 - y0), window_h))
     lab.say(MessageKind::Note, "wrote " + path);

@@ -129,10 +129,9 @@ bool begin_side_panel(const char* name, const Rect& where, bool want_open, bool 
 }
 
 void panel_width_grip(const char* name, const Rect& strip, float outer_x, PanelWidths w, float scale, float standard) {
+  // The drag's state, kept by ImGui under the strip's id (values, not references: a new key may move the others).
   ImGuiStorage* storage = ImGui::GetStateStorage();
-  const ImGuiID id = ImGui::GetID(name);
-  bool& dragging = *storage->GetBoolRef(id, false);
-  float& grab = *storage->GetFloatRef(id + 1, 0.0f);  // the pointer's distance from the inner edge at the grab, px
+  const ImGuiID id = ImGui::GetID(name), kDragging = id, kGrab = id + 1, kStartX = id + 2, kMoved = id + 3;
   const ImGuiIO& io = ImGui::GetIO();
   const float reach = std::abs(io.MousePos.x - outer_x);  // from the outer edge to the pointer, px
   // Over the strip with nothing on top of it: this panel under the pointer, or no window at all (a strip outside it).
@@ -141,22 +140,30 @@ void panel_width_grip(const char* name, const Rect& strip, float outer_x, PanelW
   const bool over = free && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) &&
                     strip.contains(io.MousePos.x, io.MousePos.y);
   mark_rect(name, strip);
+  bool dragging = storage->GetBool(kDragging);
   if (over && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
     w.width = standard, dragging = false;
   } else if (over && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-    dragging = true, grab = w.shown - reach;
-    w.width = w.shown / scale;
-    if (w.other_shown > 0) w.other_width = w.other_shown / scale;
+    dragging = true;
+    storage->SetFloat(kGrab, w.shown - reach), storage->SetFloat(kStartX, io.MousePos.x);
+    storage->SetBool(kMoved, false);
   }
   if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) dragging = false;
+  storage->SetBool(kDragging, dragging);
   if (over || dragging) {
     ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
     ImGui::GetForegroundDrawList()->AddRectFilled({strip.x, strip.y}, {strip.right(), strip.bottom()},
                                                   ImGui::GetColorU32(ImGuiCol_SeparatorHovered));
   }
-  if (!dragging) return;
+  if (!dragging || (!storage->GetBool(kMoved) && io.MousePos.x == storage->GetFloat(kStartX))) return;
+  if (!storage->GetBool(kMoved)) {
+    // The drag starts from what is on screen: both widths as shown (the layout may have narrowed them). A click that
+    // does not move changes nothing.
+    storage->SetBool(kMoved, true);
+    if (w.other_shown > 0) w.other_width = w.other_shown / scale;
+  }
   const float widest = widest_panel(ImGui::GetMainViewport()->Size.x, {w.other_shown > 0, w.other_shown}) / scale;
-  w.width = std::clamp((reach + grab) / scale, kMinPanelWidth, std::max(widest, kMinPanelWidth));
+  w.width = std::clamp((reach + storage->GetFloat(kGrab)) / scale, kMinPanelWidth, std::max(widest, kMinPanelWidth));
 }
 
 void text_wrapped(const char* fmt, ...) {
@@ -168,6 +175,14 @@ void text_wrapped(const char* fmt, ...) {
   ImGuiWindow* window = ImGui::GetCurrentWindow();
   const float wrap_x = std::max(window->DC.TextWrapPos, 0.0f);  // 0: the content region's edge
   const float width = std::max(ImGui::CalcWrapWidthForPos(ImGui::GetCursorScreenPos(), wrap_x), 1.0f);
+  auto wide = [](std::string_view s) { return ImGui::CalcTextSize(s.data(), s.data() + s.size()).x; };
+  // A word wider than the line alone (a folder's path) is cut where ImGui would cut it.
+  auto emit = [&](std::string_view s) {
+    if (wide(s) > width) ImGui::PushTextWrapPos(wrap_x);
+    ImGui::TextUnformatted(s.data(), s.data() + s.size());
+    if (wide(s) > width) ImGui::PopTextWrapPos();
+  };
+  ImGui::BeginGroup();  // later lines start where the first does (after a bullet, say)
   const std::string_view all(text);
   for (size_t start = 0; start <= all.size();) {  // each paragraph
     const size_t stop = std::min(all.find('\n', start), all.size());
@@ -175,17 +190,18 @@ void text_wrapped(const char* fmt, ...) {
     size_t line = 0, end = 0;  // the line so far: paragraph[line, end)
     for (size_t word = 0; word <= paragraph.size();) {
       const size_t word_end = std::min(paragraph.find(' ', word), paragraph.size());
-      const std::string_view candidate = paragraph.substr(line, word_end - line);
-      if (end > line && ImGui::CalcTextSize(candidate.data(), candidate.data() + candidate.size()).x > width) {
-        ImGui::TextUnformatted(paragraph.data() + line, paragraph.data() + end);
-        line = word;
+      if (end > line && wide(paragraph.substr(line, word_end - line)) > width) {
+        emit(paragraph.substr(line, end - line));
+        line = paragraph.find_first_not_of(' ', end);  // the spaces at a break go
+        line = line == std::string_view::npos ? paragraph.size() : line;
       }
       end = word_end;
       word = word_end + 1;
     }
-    ImGui::TextUnformatted(paragraph.data() + line, paragraph.data() + end);
+    emit(paragraph.substr(line, end - line));
     start = stop + 1;
   }
+  ImGui::EndGroup();
 }
 
 void flat_arrow(ImDrawList* d, ImVec2 from, ImVec2 to, ImU32 color, float width) {

@@ -56,9 +56,10 @@ struct PanelWidths {
 };
 // Inside a side panel's window: dragging `strip` (on screen: the panel's inner edge) moves the panel's inner edge with
 // the pointer, `outer_x` being its edge at the window's side (`scale`: font size over the base size), from
-// kMinPanelWidth up to what the layout gives it beside the other panel as shown. A grab first takes both panels'
-// widths as shown (the layout may have narrowed them), so that the drag starts from what is on screen. A double click
-// restores `standard`. The strip is marked as `name` (state dump), which also keys its drag.
+// kMinPanelWidth up to what the layout gives it beside the other panel as shown. The drag's first move takes both
+// panels' widths as shown (the layout may have narrowed them), so that it starts from what is on screen; a click that
+// does not move changes nothing. A double click restores `standard`. The strip is marked as `name` (state dump),
+// which also keys its drag.
 void panel_width_grip(const char* name, const Rect& strip, float outer_x, PanelWidths w, float scale, float standard);
 
 // Text wrapped at the panel's edge (or the wrap position pushed), printf-style. Lines break at spaces only: ImGui's
