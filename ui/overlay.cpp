@@ -45,9 +45,12 @@ class Labels {
   void add(int priority, ImVec2 anchor, ImVec2 wanted, std::string text, ImU32 colour) {
     items_.push_back({priority, anchor, wanted, std::move(text), colour});
   }
+  // Something drawn that no label should cover (an arrow's head).
+  void avoid(const ImRect& r) { clear_.push_back(r); }
   void draw(ImDrawList* d) {
     std::stable_sort(items_.begin(), items_.end(), [](const Item& a, const Item& b) { return a.priority < b.priority; });
-    std::vector<ImRect> taken;
+    std::vector<ImRect> taken = clear_;
+    int shown = 0;
     for (const Item& it : items_) {
       const ImVec2 size = ImGui::CalcTextSize(it.text.c_str());
       const float gap = em(5), x = it.anchor.x, y = it.anchor.y;
@@ -72,7 +75,7 @@ class Labels {
       // labels before it, which matter more (they come first).
       if (least > kHiddenShare * best.GetWidth() * best.GetHeight()) continue;
       taken.push_back(best);
-      mark_rect("label " + std::to_string(taken.size()) + " " + it.text,
+      mark_rect("label " + std::to_string(++shown) + " " + it.text,
                 Rect{best.Min.x, best.Min.y, best.Max.x - best.Min.x, best.Max.y - best.Min.y});
       d->AddRectFilled(best.Min, best.Max, IM_COL32(0, 0, 0, 170), 3);
       d->AddText({best.Min.x + 3, best.Min.y + 1}, it.colour, it.text.c_str());
@@ -93,6 +96,7 @@ class Labels {
   }
   ImRect view_;  // the 3D view's pixels: a label is placed inside them where it can be
   std::vector<Item> items_;
+  std::vector<ImRect> clear_;
 };
 enum LabelPriority { kBallName, kForce, kCut, kCentre, kMiss };
 
@@ -231,8 +235,13 @@ void vectors(ImDrawList* d, const Viewport& vp, const Lab& lab, Labels& labels) 
   for (int i = 0; i < f.state.ball_count(); ++i) {
     if (!f.state.in_play[i]) continue;
     const Vec3 p = position(f.state.x, i);
-    if (v.velocity) arrow(d, vp, p, p + 0.15 * velocity(f.state.x, i), IM_COL32(255, 255, 255, 255), 2.5f);
-    if (v.spin) arrow(d, vp, p, p + 0.002 * spin(f.state.x, i), IM_COL32(255, 230, 40, 255), 2.5f);
+    // A label beside the ball (its name) goes round the arrows' heads: a name over the spin arrow hid it.
+    auto head = [&](const Vec3& tip) {
+      if (const auto s = vp.project(tip)) labels.avoid(ImRect(v2(*s - 8.0), v2(*s + 8.0)));
+    };
+    const Vec3 to_v = p + 0.15 * velocity(f.state.x, i), to_w = p + 0.002 * spin(f.state.x, i);
+    if (v.velocity) arrow(d, vp, p, to_v, IM_COL32(255, 255, 255, 255), 2.5f), head(to_v);
+    if (v.spin) arrow(d, vp, p, to_w, IM_COL32(255, 230, 40, 255), 2.5f), head(to_w);
   }
   if (!v.forces) return;
   const Model& model = lab.shot ? lab.shot->sim().model() : lab.table_model;
