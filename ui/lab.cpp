@@ -376,17 +376,20 @@ void Lab::show(double t) {
   }
 }
 
-// A display frame at the clock's speed, but a collision shorter than eight such steps is not stepped over: a step
-// towards one stops at its edge, and a step inside it is an eighth of it (a 0.35 ms collision at 1/8 of real time
-// would otherwise pass within one 2 ms step). The shot is run eight frames past the step first, so that a collision
-// short enough to matter that begins within it is known whole.
+// A display frame at the clock's speed. With the clock slowed (a teacher's sign that the detail matters) a collision
+// shorter than eight such steps is not stepped over: a step towards one stops at its edge, and a step inside it is an
+// eighth of it (a 0.35 ms collision at 1/8 of real time would otherwise pass within one 2 ms step); at real time and
+// faster the steps stay frames (a break's hundred collisions would take as many presses). The shot is run eight
+// frames past the step first, so that a collision short enough to matter that begins within it is known whole.
 void Lab::step(int direction) {
   if (!shot) return;
   playing = false;
   const double frame = settings.slowmo * kDisplayFrame, from = view_time;
   double target = std::max(0.0, from + direction * frame);
   if (direction > 0 && target + 8 * frame > shot->sim().time()) shot->advance(target + 8 * frame, 1.0);
-  for (const ContactTrace& c : contact_spans(shot->sim().events(), shot->sim().model())) {
+  const bool detail = settings.slowmo < 1;
+  for (const ContactTrace& c : detail ? contact_spans(shot->sim().events(), shot->sim().model())
+                                      : std::vector<ContactTrace>{}) {
     const double begin = c.begin, end = c.end < 0 ? std::numeric_limits<double>::infinity() : c.end;
     const double fine = (end - begin) / 8;
     if (fine < frame && direction > 0 && begin > from && begin < target) {

@@ -388,6 +388,9 @@ TEST_F(LabTest, SteppingShowsACollisionInEightSteps) {
   EXPECT_EQ(lab.view_time, begin);
   lab.step(-1);
   EXPECT_NEAR(lab.view_time, begin - 0.125 / 60, 1e-12);  // before it, frame steps again
+  settings.slowmo = 1;  // at real time the steps stay frames: a break's collisions would take a press each
+  lab.step(+1);
+  EXPECT_NEAR(lab.view_time, begin - 0.125 / 60 + 1.0 / 60, 1e-12);
 }
 
 // From a teacher's trial: after a friction change only the trails compared A with B; the plots showed B alone. A's
