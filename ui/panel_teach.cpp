@@ -148,7 +148,8 @@ void momentum_diagram(const Lab& lab, const std::vector<std::pair<int, Vec3>>& m
   ImVec2 lo = start, hi = start;
   for (const ImVec2& c : chain)
     lo = {std::min(lo.x, c.x), std::min(lo.y, c.y)}, hi = {std::max(hi.x, c.x), std::max(hi.y, c.y)};
-  const float w = ImGui::GetContentRegionAvail().x, h = ImGui::GetFontSize() * 6, pad = ImGui::GetFontSize();
+  const float w = ImGui::GetContentRegionAvail().x, pad = ImGui::GetFontSize();
+  const float h = std::clamp(0.35f * w, 6 * pad, 10 * pad);  // a wide panel draws it larger
   const float k = std::min((w - 2 * pad) / std::max(hi.x - lo.x, 1e-9f), (h - 2 * pad) / std::max(hi.y - lo.y, 1e-9f));
   const ImVec2 at = ImGui::GetCursorScreenPos();
   const ImVec2 o{at.x + w / 2 - k * (lo.x + hi.x) / 2, at.y + h / 2 - k * (lo.y + hi.y) / 2};
