@@ -78,7 +78,7 @@ void ball_table(Lab& lab) {
     ImGui::TableNextColumn();
     const Motion mo = i < static_cast<int>(f.motion.size()) ? f.motion[i] : Motion::Stationary;
     ImGui::PushStyleColor(ImGuiCol_Text, motion_color(mo));
-    ImGui::TextUnformatted(motion_name(mo));
+    ImGui::TextUnformatted(mo == Motion::Stationary ? "at rest" : motion_name(mo));  // short: the table fits
     ImGui::PopStyleColor();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", motion_meaning(mo));
     ImGui::TableNextColumn();
@@ -91,7 +91,7 @@ void ball_table(Lab& lab) {
     const BallMotion b = ball_motion(m, f.state, i);
     ImGui::Text("%.4f", b.translation + b.rotation);
     ImGui::TableNextColumn();
-    ImGui::Text("%.3f, %.3f", p.x, p.z);
+    ImGui::Text("%.2f, %.2f", p.x, p.z);  // cm: the table fits a 360 px inspector (its CSV has them in full)
   }
   ImGui::EndTable();
   if (ImGui::SmallButton("Export table (CSV)")) try {
