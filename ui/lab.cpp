@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <map>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
