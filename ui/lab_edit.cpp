@@ -227,8 +227,12 @@ void Lab::place_cue_ball(const Vec3& at, bool drop) {
   if (c < 0) return;
   const Zone zone = hand_zone(*scene.table, scene.balls[c].spec.radius, break_position(scene));
   const Vec3 p = zone.clamp({at.x, scene.balls[c].position.y, at.z});
+  // A full-ball aim (a break's at the apex) stays on its ball while the cue ball moves; any other keeps its heading.
+  const auto line = aim_line(scene);
+  const int full_on = line && line->hit >= 0 && line->cut_deg < 0.01 ? line->hit : -1;
   if (fits(c, p) && glm::length(p - scene.balls[c].position) > 0) {
     scene.balls[c].position = p;
+    if (full_on >= 0) scene.cue->aim = heading(p, scene.balls[full_on].position);
     scene_changed();
   }
   if (drop) {
@@ -254,6 +258,7 @@ void Lab::setup_break() {
   scene = std::move(s);
   selected = 0;
   target.reset();
+  tool = Tool::Aim;  // a click on the apex aims there (the Target tool left on moved the target to it)
   scene_changed();
   pick_up_cue_ball();
   history.seal();

@@ -378,6 +378,11 @@ void draw_all(const Lab& lab, const Viewport& vp, ImDrawList* d) {
     if (v.predicted)
       if (const auto p = lab.predicted_paths()) {
         paths(d, vp, p->paths, 0.7f, 2.0f, true);
+        // Where the cue ball stops, ringed: on a straight draw or follow its path lies on the aim line or the object
+        // ball's, and its end is otherwise lost.
+        const int c = lab.scene.cue ? scene_ball(lab.scene, lab.scene.cue->ball) : -1;
+        if (p->complete && c >= 0 && c < static_cast<int>(p->paths.size()))
+          ends(d, vp, {p->paths[c]}, radius, IM_COL32(255, 255, 255, 220));
         size_t points = 0;
         for (const auto& path : p->paths) points += path.size();
         // What the frame drew, for the state dump: how much, whether finished, and how many aims ago it was asked.

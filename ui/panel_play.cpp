@@ -212,7 +212,14 @@ void balls_section(Lab& lab) {
 void notes_section(Lab& lab) {
   static bool editing = false;
   if (!editing) {
-    if (!lab.scene.description.empty()) text_wrapped("%s", lab.scene.description.c_str());
+    // Long notes scroll in a box of at most a sixth of the window's height: on a laptop they pushed the aim and the
+    // tip picture below the panel's edge.
+    const char* text = lab.scene.description.c_str();
+    const float cap = std::max(ImGui::GetMainViewport()->Size.y / 6, 4 * ImGui::GetTextLineHeightWithSpacing());
+    const float tall = ImGui::CalcTextSize(text, nullptr, false, ImGui::GetContentRegionAvail().x).y;
+    if (tall > cap && ImGui::BeginChild("##notes view", ImVec2(0, cap))) text_wrapped("%s", text);
+    if (tall > cap) ImGui::EndChild();
+    else if (*text) text_wrapped("%s", text);
     if (ImGui::SmallButton(lab.scene.description.empty() ? "Add notes" : "Edit notes")) editing = true;
     mark("Edit notes");
     return;

@@ -503,7 +503,9 @@ TEST_F(LabTest, KeptShotsAreNamedByTheirTipFirst) {
 // A break in one action: rack, cue ball in hand behind the head string, a centre-ball cue strike at the apex.
 TEST_F(LabTest, SetUpBreakRacksAndGivesBallInHand) {
   load("cut.json");
+  lab.tool = Tool::Target;
   lab.setup_break();
+  EXPECT_EQ(lab.tool, Tool::Aim);  // from a player's trial: a click on the apex moved the target there
   EXPECT_EQ(lab.scene.balls.size(), 16u);
   ASSERT_TRUE(lab.scene.cue);
   EXPECT_TRUE(lab.in_hand);
@@ -513,6 +515,16 @@ TEST_F(LabTest, SetUpBreakRacksAndGivesBallInHand) {
   EXPECT_FALSE(lab.in_hand);
   EXPECT_LE(ball("cue").x, head_string + 1e-12);
   EXPECT_NEAR(ball("cue").z, 0.2, 1e-12);
+  // The full-ball aim at the apex follows the cue ball (it stayed at 0 deg, a 68 deg cut into the rack).
+  const auto line = aim_line(lab.scene);
+  ASSERT_TRUE(line);
+  EXPECT_LT(line->cut_deg, 1e-6);
+  int apex = -1;  // the rack's ball nearest the head rail
+  for (int i = 0; i < static_cast<int>(lab.scene.balls.size()); ++i) {
+    const auto& b = lab.scene.balls[i];
+    if (b.spec.id != "cue" && (apex < 0 || b.position.x < lab.scene.balls[apex].position.x)) apex = i;
+  }
+  EXPECT_EQ(line->hit, apex);
   lab.undo();
   lab.undo();
   EXPECT_EQ(lab.scene.balls.size(), 2u);  // back to the cut shot
