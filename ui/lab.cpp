@@ -385,19 +385,20 @@ void Lab::step(int direction) {
   playing = false;
   const double frame = settings.slowmo * kDisplayFrame, from = view_time;
   double target = std::max(0.0, from + direction * frame);
-  if (direction > 0 && target + 8 * frame > shot->sim().time()) shot->advance(target + 8 * frame, 1.0);
   const bool detail = settings.slowmo < 1;
-  for (const ContactTrace& c : detail ? contact_spans(shot->sim().events(), shot->sim().model())
-                                      : std::vector<ContactTrace>{}) {
+  const double ahead = detail ? target + 8 * frame : target;
+  if (direction > 0 && ahead > shot->sim().time()) shot->advance(ahead, 1.0);
+  if (!detail) return show(std::min(target, shot->sim().time()));
+  for (const ContactTrace& c : contact_spans(shot->sim().events(), shot->sim().model())) {
     const double begin = c.begin, end = c.end < 0 ? std::numeric_limits<double>::infinity() : c.end;
     const double fine = (end - begin) / 8;
-    if (fine < frame && direction > 0 && begin > from && begin < target) {
+    if (!(fine < frame)) continue;
+    if (direction > 0 && begin > from && begin < target)
       target = begin;
-    } else if (fine < frame && direction > 0 && begin <= from && end > from) {
+    else if (direction > 0 && begin <= from && end > from)
       target = std::min(target, end - from < 1.5 * fine ? end : from + fine);  // no sliver of a ninth step
-    } else if (fine < frame && direction < 0 && begin < from && end > target) {
+    else if (direction < 0 && begin < from && end > target)
       target = std::max(target, end < from ? end : (from - begin < 1.5 * fine ? begin : from - fine));
-    }
   }
   show(std::min(target, shot->sim().time()));
 }

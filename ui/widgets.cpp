@@ -178,9 +178,10 @@ void text_wrapped(const char* fmt, ...) {
   auto wide = [](std::string_view s) { return ImGui::CalcTextSize(s.data(), s.data() + s.size()).x; };
   // A word wider than the line alone (a folder's path) is cut where ImGui would cut it.
   auto emit = [&](std::string_view s) {
-    if (wide(s) > width) ImGui::PushTextWrapPos(wrap_x);
+    const bool overlong = wide(s) > width;
+    if (overlong) ImGui::PushTextWrapPos(wrap_x);
     ImGui::TextUnformatted(s.data(), s.data() + s.size());
-    if (wide(s) > width) ImGui::PopTextWrapPos();
+    if (overlong) ImGui::PopTextWrapPos();
   };
   ImGui::BeginGroup();  // later lines start where the first does (after a bullet, say)
   const std::string_view all(text);
