@@ -3,11 +3,14 @@
 // work runs in the background (margin_view.hpp); this draws and edits the choices.
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "ui/margin_view.hpp"
 #include "ui/panels.hpp"
+#include "ui/ticks.hpp"
 #include "ui/widgets.hpp"
 
 namespace shotlab {
@@ -95,10 +98,70 @@ void estimate_readout(Lab& lab, MarginView& v) {
   ImGui::EndTable();
 }
 
-// The map as coloured cells (speed up, aim across), the current aim and speed marked; a click aims there.
-void map_picture(Lab& lab, const MarginMap& m) {
-  const float w = ImGui::GetContentRegionAvail().x, h = std::max(em(80), w * 0.5f);
+// Where value v of a range [lo, hi] over n cells of `size` pixels sits: cell centres span the first to the last.
+float cell_place(double v, double lo, double hi, int n, float size) {
+  const float cell = size / static_cast<float>(n);
+  return hi > lo ? static_cast<float>((v - lo) / (hi - lo)) * (size - cell) + cell / 2 : size / 2;
+}
+
+// Tick labels on the map's axes: speeds (m/s) in a gutter left of the cells, aims (deg) under them.
+void map_axes(ImDrawList* d, const MarginMap& m, ImVec2 p0, float w, float h, float gutter) {
+  const ImU32 ink = ImGui::GetColorU32(ImGuiCol_Text), tick = ImGui::GetColorU32(ImGuiCol_TextDisabled);
+  const float line = ImGui::GetTextLineHeight();
+  const Ticks sv = nice_ticks(m.speed_lo, m.speed_hi, std::max(4, static_cast<int>(h / (2 * line))));
+  for (double v : sv.values) {
+    const float y = p0.y + h - cell_place(v, m.speed_lo, m.speed_hi, m.speeds, h);
+    const std::string text = format_tick(v, sv);
+    const float tw = ImGui::CalcTextSize(text.c_str()).x;
+    d->AddLine(ImVec2(p0.x - em(4), y), ImVec2(p0.x, y), tick);
+    d->AddText(ImVec2(p0.x - em(6) - tw, y - line / 2), ink, text.c_str());
+  }
+  const Ticks av = nice_ticks(m.aim_lo_deg, m.aim_hi_deg, std::max(2, static_cast<int>(w / em(50))));
+  for (double v : av.values) {
+    const float x = p0.x + cell_place(v, m.aim_lo_deg, m.aim_hi_deg, m.aims, w);
+    const std::string text = format_tick(v, av);
+    const float tw = ImGui::CalcTextSize(text.c_str()).x;
+    const float left = std::clamp(x - tw / 2, p0.x - gutter, p0.x + w - tw);
+    d->AddLine(ImVec2(x, p0.y + h), ImVec2(x, p0.y + h + em(4)), tick);
+    d->AddText(ImVec2(left, p0.y + h + em(4)), ink, text.c_str());
+  }
+}
+
+// The colour key: the ramp from 0 % to 100 % success, labelled at its ends and middle.
+void map_key() {
+  ImGui::TextUnformatted("success");
+  ImGui::SameLine();
+  const float w = ImGui::GetContentRegionAvail().x, line = ImGui::GetTextLineHeight();
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  ImGui::Dummy(ImVec2(w, 2 * line + em(2)));
+  mark("margin key");
+  ImDrawList* d = ImGui::GetWindowDrawList();
+  const float left = p0.x + ImGui::CalcTextSize("0 %").x / 2, span = p0.x + w - ImGui::CalcTextSize("100 %").x / 2 - left;
+  constexpr int kSteps = 32;
+  for (int k = 0; k < kSteps; ++k) {
+    const float a = left + span * k / kSteps, b = left + span * (k + 1) / kSteps;
+    d->AddRectFilled(ImVec2(a, p0.y), ImVec2(b + 0.5f, p0.y + line * 0.8f), ramp((k + 0.5) / kSteps));
+  }
+  const ImU32 ink = ImGui::GetColorU32(ImGuiCol_Text);
+  const char* labels[] = {"0 %", "50 %", "100 %"};
+  for (int k = 0; k < 3; ++k) {
+    const float x = left + span * k / 2 - ImGui::CalcTextSize(labels[k]).x / 2;
+    d->AddText(ImVec2(x, p0.y + line * 0.8f + em(2)), ink, labels[k]);
+  }
+}
+
+// The map as coloured cells (speed up, aim across) with labelled axes and a colour key, the current aim and speed
+// marked; a click aims there.
+void map_picture(Lab& lab, const MarginMap& m) {
+  ImGui::TextUnformatted("speed (m/s) up, aim (deg) across");
+  float gutter = 0;
+  const Ticks sv = nice_ticks(m.speed_lo, m.speed_hi, 8);
+  for (double v : sv.values) gutter = std::max(gutter, ImGui::CalcTextSize(format_tick(v, sv).c_str()).x);
+  gutter += em(8);
+  const float line = ImGui::GetTextLineHeight();
+  const float w = ImGui::GetContentRegionAvail().x - gutter, h = std::max(em(80), w * 0.5f);
+  const ImVec2 origin = ImGui::GetCursorScreenPos(), p0(origin.x + gutter, origin.y + line / 2);
+  ImGui::SetCursorScreenPos(p0);
   ImGui::InvisibleButton("margin map", ImVec2(w, h));
   mark("margin map");
   ImDrawList* d = ImGui::GetWindowDrawList();
@@ -108,20 +171,25 @@ void map_picture(Lab& lab, const MarginMap& m) {
       const ImVec2 a(p0.x + j * cw, p0.y + h - (i + 1) * ch);
       d->AddRectFilled(a, ImVec2(a.x + cw + 0.5f, a.y + ch + 0.5f), ramp(m.cells[i * m.aims + j]));
     }
+  map_axes(d, m, p0, w, h, gutter);
+  const bool hovered = ImGui::IsItemHovered(), clicked = ImGui::IsItemClicked();
+  ImGui::SetCursorScreenPos(ImVec2(origin.x, p0.y + h + em(6) + line));
+  ImGui::Dummy(ImVec2(0, 0));
+  map_key();
   auto centre = [](double lo, double hi, int n, int k) { return n == 1 ? 0.5 * (lo + hi) : lo + (hi - lo) * k / (n - 1); };
   const CueStrike& cue = *lab.scene.cue;
-  const float mx = p0.x + static_cast<float>((cue.aim * kDeg - m.aim_lo_deg) / (m.aim_hi_deg - m.aim_lo_deg) * (w - cw) + cw / 2);
-  const float my = p0.y + h - static_cast<float>((cue.speed - m.speed_lo) / (m.speed_hi - m.speed_lo) * (h - ch) + ch / 2);
+  const float mx = p0.x + cell_place(cue.aim * kDeg, m.aim_lo_deg, m.aim_hi_deg, m.aims, w);
+  const float my = p0.y + h - cell_place(cue.speed, m.speed_lo, m.speed_hi, m.speeds, h);
   d->AddLine(ImVec2(mx - 7, my), ImVec2(mx + 7, my), IM_COL32(255, 255, 255, 255), 2);
   d->AddLine(ImVec2(mx, my - 7), ImVec2(mx, my + 7), IM_COL32(255, 255, 255, 255), 2);
-  if (!ImGui::IsItemHovered()) return;
+  if (!hovered) return;
   const ImVec2 q = ImGui::GetIO().MousePos;
   const int j = std::clamp(static_cast<int>((q.x - p0.x) / cw), 0, m.aims - 1);
   const int i = std::clamp(static_cast<int>((p0.y + h - q.y) / ch), 0, m.speeds - 1);
   const double aim = centre(m.aim_lo_deg, m.aim_hi_deg, m.aims, j), speed = centre(m.speed_lo, m.speed_hi, m.speeds, i);
   ImGui::SetTooltip("aim %.2f deg, speed %.2f m/s: %.0f %%\nclick to shoot it like that", aim, speed,
                     100 * m.cells[i * m.aims + j]);
-  if (ImGui::IsItemClicked()) {
+  if (clicked) {
     CueStrike c = cue;
     c.aim = aim / kDeg, c.speed = speed;
     lab.set_cue(c, "aim from the margin map");

@@ -778,6 +778,14 @@ def coach(binary, root, display, work):
           f"20 x 10 cells, success from {min(m['cells']):.2f} to {max(m['cells']):.2f}")
     app.scroll(panel["x"] + 100, 300, 15)
     s = app.state()
+    # Read as a chart: speed labels in the gutter left of the cells, and a colour key from dark blue (0 %) to yellow.
+    cells, key = app.widget(s, "margin map"), app.widget(s, "margin key")
+    img = app.grab()
+    ink = img.count(panel["x"], cells["y"], cells["x"] - 4, cells["y"] + cells["h"], lambda p: min(p) > 180)
+    check(ink > 20, f"the map's speed axis is labelled ({ink} text pixels left of its cells)")
+    low, high = img.pixel(key["x"] + 14, key["y"] + 5), img.pixel(key["x"] + key["w"] - 24, key["y"] + 5)
+    check(low[2] > low[1] + 30 and high[0] > 200 and high[1] > 200 and high[2] < 100,
+          f"the map's colour key runs from dark blue {low} to yellow {high}")
     app.click_widget(s, "margin map", 0.125, 0.25)  # aim column 2 of 20, speed row 7 of 10 from the bottom
     s2 = app.state()
     a0, a1 = m["aim_deg"]
