@@ -5,6 +5,7 @@
 #include <future>
 #include <string>
 
+#include "shotlab/io/margin.hpp"
 #include "shotlab/rack.hpp"
 #include "shotlab/simulation.hpp"
 
@@ -104,22 +105,41 @@ bool drops_in(const Scene& scene, const std::string& object, const std::string& 
 }
 }  // namespace
 
+namespace {
+// The aim window around a ghost-ball aim that drops the ball: how far (deg) the aim alone may turn either way with the
+// ball still dropping in that pocket, searched in the amateur's steps of 0.25 deg out to 4 deg (shotlab/io/margin.hpp).
+std::pair<double, double> aim_window(const Scene& scene, const std::string& object, const std::string& pocket) {
+  MarginOptions o;
+  o.noise = stroke_noise("amateur");
+  o.goal.ball = object, o.goal.pocket = pocket;
+  const Tolerance t = stroke_tolerance(scene, o, kAim);
+  return {t.lo, t.hi};
+}
+}  // namespace
+
 void check_drops(const Scene& scene, int object, std::vector<PocketAim>& aims) {
   if (!scene.cue || object < 0 || object >= static_cast<int>(scene.balls.size())) return;
-  // Each pocket's shot on its own thread: P answers in the time of the longest, not of all of them.
-  std::vector<std::future<bool>> jobs;
+  // Each pocket's shot on its own thread: P answers in the time of the longest, not of all of them. A pocket that
+  // drops gets its aim window too, and its aim moves to the window's middle: throw and the jaws make the ghost-ball
+  // aim drop the ball off the middle of the aims that do.
+  std::vector<std::future<PocketAim>> jobs;
   for (const PocketAim& a : aims) {
     Scene s = scene;
     s.cue->aim = a.aim;
-    jobs.push_back(std::async(std::launch::async, [s = std::move(s), id = scene.balls[object].spec.id, pocket = a.pocket] {
+    jobs.push_back(std::async(std::launch::async, [s = std::move(s), id = scene.balls[object].spec.id, a = PocketAim(a)]() mutable {
       try {
-        return drops_in(s, id, pocket);
+        a.drops = drops_in(s, id, a.pocket);
+        if (!a.drops) return a;
+        const auto [lo, hi] = aim_window(s, id, a.pocket);
+        a.aim += 0.5 * (lo + hi) * M_PI / 180;
+        a.window_deg = 0.5 * (hi - lo);
       } catch (const std::exception&) {
-        return false;  // a scene the engine refuses drops nothing
+        a.drops = false;  // a scene the engine refuses drops nothing
       }
+      return a;
     }));
   }
-  for (size_t k = 0; k < aims.size(); ++k) aims[k].drops = jobs[k].get();
+  for (size_t k = 0; k < aims.size(); ++k) aims[k] = jobs[k].get();
   std::stable_partition(aims.begin(), aims.end(), [](const PocketAim& a) { return a.drops; });
 }
 

@@ -29,11 +29,13 @@ struct PocketAim {
   double aim;      // rad
   double cut_deg;
   bool drops = false;  // set by check_drops()
+  double window_deg = 0;  // check_drops(): the aim may turn this far either way (deg) with the ball still dropping
 };
 std::vector<PocketAim> pocket_aims(const Scene& scene, const std::vector<Pocket>& pockets, int cue_ball, int object);
 // Simulates the scene's shot at each aim (its speed, spin and the other balls as they are; each aim on a thread of its
 // own, each shot until ball `object` drops or stops) and sets `drops` where it falls into that aim's pocket; the aims
-// that drop come first, each part easiest cut first.
+// that drop come first, each part easiest cut first. An aim that drops moves to the middle of the aims around it that
+// drop too (window_deg: half their width).
 void check_drops(const Scene& scene, int object, std::vector<PocketAim>& aims);
 // The ball P aims for: the one the aim line meets, else the object ball whose centre is nearest the aim in heading
 // (-1 when there is no cue strike or no other ball).

@@ -112,11 +112,12 @@ void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step, int f
   CueStrike cue = *scene.cue;
   cue.aim = aims[next].aim;
   set_cue(cue, kPocketAim);
-  char speed[32];
+  char speed[32], window[64];
   std::snprintf(speed, sizeof speed, "%.2f m/s", scene.cue->speed);
+  std::snprintf(window, sizeof window, ", the middle of an aim window of +-%.2f deg", aims[next].window_deg);
   say(MessageKind::Note, "aimed " + scene.balls[object].spec.id + " at " + aims[next].pocket + " (cut " +
                              deg(aims[next].cut_deg * M_PI / 180) + " deg; " +
-                             (aims[next].drops ? std::string("drops at ") + speed + ")"
+                             (aims[next].drops ? std::string("drops at ") + speed + window + ")"
                                                : std::string("does not drop at ") + speed +
                                                      ": more speed or another pocket)"));
   pocket_aimed_ = PocketAimed{scene.balls[object].spec.id, scene.cue->aim, message};

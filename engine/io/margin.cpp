@@ -196,6 +196,36 @@ int goal_ball(const Scene& scene, const ShotGoal& goal) {
 }
 }  // namespace
 
+namespace {
+// One side (dir -1: lo, +1: hi) of source k's Tolerance of a stroke that succeeds: out in half deviations until a
+// replay fails, then bisected; `tick` once a replay.
+void edge_search(const Scene& scene, const MarginOptions& o, const Judge& judge, int k, int dir,
+                 const std::function<void()>& tick, Tolerance& out) {
+  const double sd = deviations(o.noise)[k], step = dir * 0.5 * (sd > 0 ? sd : kToleranceScale[k]);
+  auto fails = [&](double x) {
+    double e[kNoiseSources] = {};
+    e[k] = x;
+    if (tick) tick();
+    return !replay(scene, o, judge, e, false).success;
+  };
+  double good = 0, bad = 0;
+  bool found = false;
+  const double floor = k == kElevation ? -scene.cue->elevation / kDeg : -1e300;  // no cue below level
+  for (int n = 1; n <= kToleranceSteps && !found; ++n) {
+    const double x = std::max(floor, n * step);
+    if (fails(x)) bad = x, found = true;
+    else if (x == floor) break;
+    else good = x;
+  }
+  for (int n = 0; found && n < kToleranceBisections; ++n) {
+    const double mid = 0.5 * (good + bad);
+    (fails(mid) ? bad : good) = mid;
+  }
+  (dir < 0 ? out.lo : out.hi) = good;
+  (dir < 0 ? out.bounded_lo : out.bounded_hi) = found;
+}
+}  // namespace
+
 MarginResult shot_margin(const Scene& scene, const MarginOptions& o, const std::function<void(size_t, size_t)>& progress,
                          const std::atomic<bool>* cancel) {
   const int ball = goal_ball(scene, o.goal);
@@ -223,33 +253,24 @@ MarginResult shot_margin(const Scene& scene, const MarginOptions& o, const std::
     // The ten one-sided searches side by side on the pool.
     parallel_in_order(0, 2 * kNoiseSources, o.jobs, [&](size_t i) {
       const int k = static_cast<int>(i / 2), dir = i % 2 ? 1 : -1;
-      const double sd = deviations(o.noise)[k], step = dir * 0.5 * (sd > 0 ? sd : kToleranceScale[k]);
-      auto fails = [&](double x) {
-        double e[kNoiseSources] = {};
-        e[k] = x;
-        tick(1);
-        return !replay(scene, o, judge, e, false).success;
-      };
-      double good = 0, bad = 0;
-      bool found = false;
-      const double floor = k == kElevation ? -scene.cue->elevation / kDeg : -1e300;  // no cue below level
-      for (int n = 1; n <= kToleranceSteps && r.nominal_success && !found; ++n) {
-        const double x = std::max(floor, n * step);
-        if (fails(x)) bad = x, found = true;
-        else if (x == floor) break;
-        else good = x;
-      }
-      for (int n = 0; found && n < kToleranceBisections; ++n) {
-        const double mid = 0.5 * (good + bad);
-        (fails(mid) ? bad : good) = mid;
-      }
-      (dir < 0 ? r.tolerance[k].lo : r.tolerance[k].hi) = good;
-      (dir < 0 ? r.tolerance[k].bounded_lo : r.tolerance[k].bounded_hi) = found || !r.nominal_success;
+      if (r.nominal_success) edge_search(scene, o, judge, k, dir, [&] { tick(1); }, r.tolerance[k]);
     }, {}, {}, cancel);
   }
   r.cancelled = cancel && *cancel;
   if (progress && !r.cancelled) progress(total, total);  // the searches may end before their most steps
   return r;
+}
+
+Tolerance stroke_tolerance(const Scene& scene, const MarginOptions& o, int source) {
+  if (source < 0 || source >= kNoiseSources) throw InputError("stroke_tolerance: no noise source " + std::to_string(source));
+  const int ball = goal_ball(scene, o.goal);
+  const Judge judge{o.goal, ball};
+  const double zero[kNoiseSources] = {};
+  Tolerance t;
+  if (!replay(scene, o, judge, zero, false).success) return t;
+  edge_search(scene, o, judge, source, -1, {}, t);
+  edge_search(scene, o, judge, source, 1, {}, t);
+  return t;
 }
 
 MarginMap margin_map(const Scene& scene, const MarginOptions& o, int aims, int speeds, double aim_half_range_deg,
