@@ -107,12 +107,13 @@ bool drops_in(const Scene& scene, const std::string& object, const std::string& 
 
 namespace {
 // The aim window around a ghost-ball aim that drops the ball: how far (deg) the aim alone may turn either way with the
-// ball still dropping in that pocket, searched in the amateur's steps of 0.25 deg out to 4 deg (shotlab/io/margin.hpp).
+// ball still dropping in that pocket, searched in the amateur's steps of 0.25 deg out to 4 deg and bisected to
+// 0.005 deg (shotlab/io/margin.hpp).
 std::pair<double, double> aim_window(const Scene& scene, const std::string& object, const std::string& pocket) {
   MarginOptions o;
   o.noise = stroke_noise("amateur");
   o.goal.ball = object, o.goal.pocket = pocket;
-  const Tolerance t = stroke_tolerance(scene, o, kAim);
+  const Tolerance t = stroke_tolerance(scene, o, kAim, 0.005);
   return {t.lo, t.hi};
 }
 }  // namespace

@@ -136,7 +136,7 @@ class Lab {
   // Once a frame: P's answer, when its check has finished since (with `block`, waited for: scripts and tests).
   void finish_pocket_aim(bool block = false);
   bool checking_pockets() const { return pocket_wait_.has_value(); }
-  double pocket_wait_seconds = 4e-3;  // s: P waits this long for its check within the frame (a cut's is done by then)
+  double pocket_wait_seconds = 25e-3;  // s: P waits this long for its check within the frame (a cut's takes ~15 ms)
   void nudge_aim(double degrees);
   void nudge_speed(double mps);
   void set_cue(const CueStrike& cue, const std::string& what);  // any other cue change, merged per `what`

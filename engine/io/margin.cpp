@@ -198,9 +198,9 @@ int goal_ball(const Scene& scene, const ShotGoal& goal) {
 
 namespace {
 // One side (dir -1: lo, +1: hi) of source k's Tolerance of a stroke that succeeds: out in half deviations until a
-// replay fails, then bisected; `tick` once a replay.
+// replay fails, then bisected to `resolution` (0: 0.1 % of a step); `tick` once a replay.
 void edge_search(const Scene& scene, const MarginOptions& o, const Judge& judge, int k, int dir,
-                 const std::function<void()>& tick, Tolerance& out) {
+                 const std::function<void()>& tick, Tolerance& out, double resolution = 0) {
   const double sd = deviations(o.noise)[k], step = dir * 0.5 * (sd > 0 ? sd : kToleranceScale[k]);
   auto fails = [&](double x) {
     double e[kNoiseSources] = {};
@@ -217,7 +217,7 @@ void edge_search(const Scene& scene, const MarginOptions& o, const Judge& judge,
     else if (x == floor) break;
     else good = x;
   }
-  for (int n = 0; found && n < kToleranceBisections; ++n) {
+  for (int n = 0; found && (resolution > 0 ? std::abs(bad - good) > resolution : n < kToleranceBisections); ++n) {
     const double mid = 0.5 * (good + bad);
     (fails(mid) ? bad : good) = mid;
   }
@@ -261,15 +261,16 @@ MarginResult shot_margin(const Scene& scene, const MarginOptions& o, const std::
   return r;
 }
 
-Tolerance stroke_tolerance(const Scene& scene, const MarginOptions& o, int source) {
+Tolerance stroke_tolerance(const Scene& scene, const MarginOptions& o, int source, double resolution) {
   if (source < 0 || source >= kNoiseSources) throw InputError("stroke_tolerance: no noise source " + std::to_string(source));
   const int ball = goal_ball(scene, o.goal);
   const Judge judge{o.goal, ball};
   const double zero[kNoiseSources] = {};
   Tolerance t;
   if (!replay(scene, o, judge, zero, false).success) return t;
-  edge_search(scene, o, judge, source, -1, {}, t);
-  edge_search(scene, o, judge, source, 1, {}, t);
+  parallel_in_order(0, 2, o.jobs, [&](size_t side) {  // each side writes its own fields of t
+    edge_search(scene, o, judge, source, side ? 1 : -1, {}, t, resolution);
+  });
   return t;
 }
 

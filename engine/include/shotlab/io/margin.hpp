@@ -80,9 +80,10 @@ struct MarginResult {
   bool cancelled = false;
 };
 
-// The Tolerance of one noise source (NoiseSource) alone, searched in steps of half its deviation in `options.noise`;
-// both bounds 0 when the intended stroke fails. Throws InputError like shot_margin, or for a source out of range.
-Tolerance stroke_tolerance(const Scene& scene, const MarginOptions& options, int source);
+// The Tolerance of one noise source (NoiseSource) alone, searched in steps of half its deviation in `options.noise`
+// and bisected to `resolution` in its units (0: as shot_margin, 0.1 % of a step); both bounds 0 when the intended
+// stroke fails. Throws InputError like shot_margin, or for a source out of range.
+Tolerance stroke_tolerance(const Scene& scene, const MarginOptions& options, int source, double resolution = 0);
 
 // The margin of `scene`'s cue strike (it must have one). progress(done, total) counts runs. Throws InputError when
 // the scene has no cue strike or the goal names no ball of the scene.
