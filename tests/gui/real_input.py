@@ -285,9 +285,12 @@ def player(binary, root, display, work):
     check(ball(s3, "1")["position"] != start and s3["history"] == s2["history"] + 1, "ctrl+drag moves the ball")
     app.key("u")
     check(ball(app.state(), "1")["position"] == start, "U puts it back where it was")
+    app.click(*ball(app.state(), "cue")["screen"])  # the cue ball: selected (the ctrl+drag selected ball 1)
+    selected = app.state()["selected"]
     app.click(ox, oy)  # on the object ball: aim at its centre, move nothing
     s = app.state()
     check(ball(s, "1")["position"] == start, "a click on the object ball does not move it")
+    check(s["selected"] == selected == 0, f"nor does it move the selection's ring off the cue ball ({selected})")
     app.key("p")  # snap: the pocket line (checked off the UI thread: a busy machine may take a frame or two)
     s = app.wait(lambda s: abs(s["cue"]["aim_deg"] + 75) < 0.5, 5, "P aims the ball at the preset's pocket")
     check(abs(s["cue"]["aim_deg"] + 75) < 0.5, f"P aims the ball at the preset's pocket ({s['cue']['aim_deg']:.2f})")
