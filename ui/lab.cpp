@@ -277,6 +277,7 @@ void Lab::undo() {
   if (in_hand) {  // putting the ball back where it was picked up
     in_hand = false;
     if (history.can_undo()) take_step(history.undo(scene, [this] { return current_file(); }));
+    say(MessageKind::Note, "undone: ball in hand");  // not the pick-up's "click to put it down" any more
     scene_changed();
     return;
   }

@@ -246,14 +246,20 @@ void Lab::place_cue_ball(const Vec3& at, bool drop) {
 void Lab::setup_break() {
   if (scene.table && scene.table->kind != TableKind::Pool)
     return say(MessageKind::Refused, "a break needs a pool table (this scene's table has no pockets to rack for)");
+  // From another position the shots kept to compare, the A/B overlay and the last shot's ghost belong to that one
+  // (a player's trial saw a cut's kept lines over the rack): they go, and one undo brings them back as a load's does.
+  // A break after a break keeps them to compare.
+  const bool fresh = !break_position(scene);
+  history.seal();
+  if (fresh) history.record_load("set up break", scene, current_file());
+  else history.record("set up break", scene);
   if (shot) {  // a new position: the shot shown goes (its trails stay as the ghost)
     ghost = trails(shot->sim().time());
     shot.reset();
     playing = false;
     view_time = 0;
   }
-  history.seal();
-  history.record("set up break", scene);
+  if (fresh) restore(Workbench{}), ghost.clear();
   Scene s = break_scene(scene);
   s.model = scene.model;
   scene = std::move(s);

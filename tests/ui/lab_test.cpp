@@ -556,6 +556,28 @@ TEST_F(LabTest, SetUpBreakRacksAndGivesBallInHand) {
   EXPECT_EQ(lab.scene.balls.size(), 2u);  // back to the cut shot
 }
 
+// The shots kept on another position are not drawn over a new break (a player's trial saw the cut's lines over the
+// rack); undo brings them back with that position. Kept breaks stay for the next break, to compare.
+TEST_F(LabTest, SetUpBreakStartsTheKeptShotsAfresh) {
+  load("cut.json");
+  lab.shoot();
+  lab.keep_shot();
+  ASSERT_EQ(lab.kept.size(), 1u);
+  lab.setup_break();
+  EXPECT_TRUE(lab.kept.empty());
+  EXPECT_TRUE(lab.ghost.empty());
+  lab.place_cue_ball({-0.8, 0, 0.1}, true);
+  lab.shoot();
+  lab.keep_shot();
+  lab.setup_break();
+  EXPECT_EQ(lab.kept.size(), 1u);  // the first break, over the second
+  lab.undo();
+  while (lab.history.can_undo() && lab.scene.balls.size() != 2) lab.undo();
+  EXPECT_EQ(lab.scene.balls.size(), 2u);
+  EXPECT_EQ(lab.kept.size(), 1u);  // the cut's kept shot is back with the cut
+  EXPECT_NE(lab.kept[0].label.find("aim -75.0 deg"), std::string::npos) << lab.kept[0].label;
+}
+
 // A preset picked over a tuned, edited scene loses nothing: one undo brings back that scene, its file and its tuned
 // physics; redo takes the preset again. The first load of a session has nothing to undo.
 TEST_F(LabTest, LoadingAnotherSceneUndoes) {
