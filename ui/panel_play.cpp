@@ -9,7 +9,6 @@
 #include "shotlab/cue.hpp"
 #include "ui/aim.hpp"
 #include "ui/panels.hpp"
-#include "ui/ticks.hpp"
 #include "ui/widgets.hpp"
 
 namespace shotlab {
@@ -87,9 +86,8 @@ void playback_section(Lab& lab) {
       lab.view_time = t;
     }
     mark("time slider");
-    const bool fine = lab.contact_on_screen();
-    text_wrapped("t = %s%s", format_time(lab.view_time, fine).c_str(),
-                       fine ? "  (a contact: to the microsecond)" : "");
+    // The slider shows the time; while a contact is on screen it is to the microsecond, and this says why.
+    if (lab.contact_on_screen()) ImGui::TextDisabled("a contact on screen: time to the microsecond");
     if (lab.shot->finished())
       ImGui::TextColored(lab.shot->end() == ShotEnd::Rest ? ImVec4(0.6f, 0.9f, 0.6f, 1) : ImVec4(1, 0.7f, 0.3f, 1),
                          "%s after %.2f s", end_text(*lab.shot), lab.shot->sim().time());
