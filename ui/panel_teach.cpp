@@ -61,13 +61,16 @@ void ball_table(Lab& lab) {
   const Frame& f = lab.frame();
   const Model& m = shown_model(lab);
   const float rows = std::min(f.state.ball_count(), 8) + 2.5f;  // the header and the horizontal scroll bar
-  if (!ImGui::BeginTable("balls", 6, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX |
-                                         ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit,
-                         ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * rows)))
-    return;
+  // Cells padded a little less than ImGui's default, so that the six columns fit a 1280 px window's inspector.
+  ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(em(2), ImGui::GetStyle().CellPadding.y));
+  constexpr ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX |
+                                    ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
+  const bool open = ImGui::BeginTable("balls", 6, flags, ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * rows));
+  ImGui::PopStyleVar();
+  if (!open) return;
   ImGui::TableSetupScrollFreeze(0, 1);
   // The state next to the ball's name: with many balls in a narrow inspector the later columns scroll out of view.
-  for (const char* h : {"ball", "state", "v (m/s)", "w (rad/s)", "KE (J)", "x, z (m)"}) ImGui::TableSetupColumn(h);
+  for (const char* h : {"ball", "state", "v (m/s)", "w (rad/s)", "KE (J)", "x, z (cm)"}) ImGui::TableSetupColumn(h);
   ImGui::TableHeadersRow();
   for (int i = 0; i < f.state.ball_count(); ++i) {
     const Vec3 p = position(f.state.x, i);
@@ -83,15 +86,23 @@ void ball_table(Lab& lab) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", motion_meaning(mo));
     ImGui::TableNextColumn();
     const double v = glm::length(velocity(f.state.x, i));  // under the rest speed the engine counts it stopped
-    if (v > 0 && v < m.options.rest_speed) ImGui::Text("< %.3f", m.options.rest_speed);
-    else ImGui::Text("%.3f", v);
+    if (v > 0 && v < m.options.rest_speed) {
+      // As wide as "0.000": a wider cell widens the column and scrolls x, z out of a 1280 px window's inspector.
+      char below[32];
+      std::snprintf(below, sizeof below, "%g", m.options.rest_speed);
+      ImGui::Text("<%s", below[0] == '0' && below[1] == '.' ? below + 1 : below);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("under the rest speed, %g m/s: the engine counts the ball stopped", m.options.rest_speed);
+    } else {
+      ImGui::Text("%.3f", v);
+    }
     ImGui::TableNextColumn();
     ImGui::Text("%.1f", glm::length(spin(f.state.x, i)));
     ImGui::TableNextColumn();
     const BallMotion b = ball_motion(m, f.state, i);
     ImGui::Text("%.4f", b.translation + b.rotation);
     ImGui::TableNextColumn();
-    ImGui::Text("%.2f, %.2f", p.x, p.z);  // cm: the table fits a 360 px inspector (its CSV has them in full)
+    ImGui::Text("%.0f, %.0f", 100 * p.x, 100 * p.z);  // in cm, short: the table fits a 360 px inspector (CSV: in full)
   }
   ImGui::EndTable();
   if (ImGui::SmallButton("Export table (CSV)")) try {
