@@ -108,37 +108,47 @@ bool drops_in(const Scene& scene, const std::string& object, const std::string& 
 namespace {
 // The aim window around a ghost-ball aim that drops the ball: how far (deg) the aim alone may turn either way with the
 // ball still dropping in that pocket, searched in the amateur's steps of 0.25 deg out to 4 deg and bisected to
-// 0.005 deg (shotlab/io/margin.hpp).
-std::pair<double, double> aim_window(const Scene& scene, const std::string& object, const std::string& pocket) {
+// 0.005 deg (shotlab/io/margin.hpp), each try played as long as drops_in plays.
+Tolerance aim_window(Scene scene, const std::string& object, const std::string& pocket) {
+  scene.duration = std::max(scene.duration, kDropCheckSeconds);
   MarginOptions o;
   o.noise = stroke_noise("amateur");
   o.goal.ball = object, o.goal.pocket = pocket;
-  const Tolerance t = stroke_tolerance(scene, o, kAim, 0.005);
-  return {t.lo, t.hi};
+  return stroke_tolerance(scene, o, kAim, 0.005);
+}
+
+// One pocket's answer: whether the shot drops the ball there and, where it does, the aim moved to the middle of the
+// aims that drop it too (throw and the jaws put the ghost-ball aim off that middle). The middle is played once more
+// and taken only if it drops; a window open on a side (no miss within 4 deg) keeps the ghost-ball aim.
+PocketAim checked(Scene s, const std::string& id, PocketAim a) {
+  try {
+    a.drops = drops_in(s, id, a.pocket);
+    if (!a.drops) return a;
+  } catch (const std::exception&) {
+    a.drops = false;  // a scene the engine refuses drops nothing
+    return a;
+  }
+  try {
+    const Tolerance t = aim_window(s, id, a.pocket);
+    if (!t.bounded_lo || !t.bounded_hi || !(t.hi > t.lo)) return a;
+    s.cue->aim = a.aim + 0.5 * (t.lo + t.hi) * M_PI / 180;
+    if (!drops_in(s, id, a.pocket)) return a;
+    a.aim = s.cue->aim;
+    a.window_deg = 0.5 * (t.hi - t.lo);
+  } catch (const std::exception&) {  // no window: the ghost-ball aim, which drops
+  }
+  return a;
 }
 }  // namespace
 
 void check_drops(const Scene& scene, int object, std::vector<PocketAim>& aims) {
   if (!scene.cue || object < 0 || object >= static_cast<int>(scene.balls.size())) return;
-  // Each pocket's shot on its own thread: P answers in the time of the longest, not of all of them. A pocket that
-  // drops gets its aim window too, and its aim moves to the window's middle: throw and the jaws make the ghost-ball
-  // aim drop the ball off the middle of the aims that do.
+  // Each pocket's shot on its own thread: P answers in the time of the longest, not of all of them.
   std::vector<std::future<PocketAim>> jobs;
   for (const PocketAim& a : aims) {
     Scene s = scene;
     s.cue->aim = a.aim;
-    jobs.push_back(std::async(std::launch::async, [s = std::move(s), id = scene.balls[object].spec.id, a = PocketAim(a)]() mutable {
-      try {
-        a.drops = drops_in(s, id, a.pocket);
-        if (!a.drops) return a;
-        const auto [lo, hi] = aim_window(s, id, a.pocket);
-        a.aim += 0.5 * (lo + hi) * M_PI / 180;
-        a.window_deg = 0.5 * (hi - lo);
-      } catch (const std::exception&) {
-        a.drops = false;  // a scene the engine refuses drops nothing
-      }
-      return a;
-    }));
+    jobs.push_back(std::async(std::launch::async, checked, std::move(s), scene.balls[object].spec.id, a));
   }
   for (size_t k = 0; k < aims.size(); ++k) aims[k] = jobs[k].get();
   std::stable_partition(aims.begin(), aims.end(), [](const PocketAim& a) { return a.drops; });

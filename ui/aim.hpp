@@ -29,7 +29,8 @@ struct PocketAim {
   double aim;      // rad
   double cut_deg;
   bool drops = false;  // set by check_drops()
-  double window_deg = 0;  // check_drops(): the aim may turn this far either way (deg) with the ball still dropping
+  double window_deg = 0;  // check_drops(): the aim may turn this far either way (deg) with the ball still dropping,
+                          // 0 where the window was not worked out (the ghost-ball aim then)
 };
 std::vector<PocketAim> pocket_aims(const Scene& scene, const std::vector<Pocket>& pockets, int cue_ball, int object);
 // Simulates the scene's shot at each aim (its speed, spin and the other balls as they are; each aim on a thread of its

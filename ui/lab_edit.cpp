@@ -112,9 +112,10 @@ void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step, int f
   CueStrike cue = *scene.cue;
   cue.aim = aims[next].aim;
   set_cue(cue, kPocketAim);
-  char speed[32], window[64];
+  char speed[32], window[64] = "";
   std::snprintf(speed, sizeof speed, "%.2f m/s", scene.cue->speed);
-  std::snprintf(window, sizeof window, ", the middle of an aim window of +-%.2f deg", aims[next].window_deg);
+  if (aims[next].window_deg > 0)
+    std::snprintf(window, sizeof window, ", the middle of an aim window of +-%.2f deg", aims[next].window_deg);
   say(MessageKind::Note, "aimed " + scene.balls[object].spec.id + " at " + aims[next].pocket + " (cut " +
                              deg(aims[next].cut_deg * M_PI / 180) + " deg; " +
                              (aims[next].drops ? std::string("drops at ") + speed + window + ")"
@@ -251,9 +252,9 @@ void Lab::setup_break() {
   // A break after a break keeps them to compare.
   const bool fresh = !break_position(scene);
   history.seal();
-  if (fresh) history.record_load("set up break", scene, current_file());
+  if (fresh) history.record_load("set up break", scene, current_file(), true);
   else history.record("set up break", scene);
-  if (shot) {  // a new position: the shot shown goes (its trails stay as the ghost)
+  if (shot) {  // a new position: the shot shown goes (its trails stay as the ghost, unless `fresh`)
     ghost = trails(shot->sim().time());
     shot.reset();
     playing = false;

@@ -217,7 +217,9 @@ void edge_search(const Scene& scene, const MarginOptions& o, const Judge& judge,
     else if (x == floor) break;
     else good = x;
   }
-  for (int n = 0; found && (resolution > 0 ? std::abs(bad - good) > resolution : n < kToleranceBisections); ++n) {
+  // Halvings to `resolution`, at most 60 (past a double's precision on any step).
+  const int halvings = resolution > 0 ? 60 : kToleranceBisections;
+  for (int n = 0; found && n < halvings && (resolution <= 0 || std::abs(bad - good) > resolution); ++n) {
     const double mid = 0.5 * (good + bad);
     (fails(mid) ? bad : good) = mid;
   }
@@ -262,7 +264,8 @@ MarginResult shot_margin(const Scene& scene, const MarginOptions& o, const std::
 }
 
 Tolerance stroke_tolerance(const Scene& scene, const MarginOptions& o, int source, double resolution) {
-  if (source < 0 || source >= kNoiseSources) throw InputError("stroke_tolerance: no noise source " + std::to_string(source));
+  if (source < 0 || source >= kNoiseSources)
+    throw InputError("stroke_tolerance: no noise source " + std::to_string(source));
   const int ball = goal_ball(scene, o.goal);
   const Judge judge{o.goal, ball};
   const double zero[kNoiseSources] = {};
