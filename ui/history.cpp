@@ -14,10 +14,10 @@ void History::push(HistoryStep step) {
   if (undo_.size() > kLimit) undo_.erase(undo_.begin());
 }
 
-void History::record_load(const std::string& label, const Scene& before, SceneFile file) {
+void History::record_load(const std::string& label, const Scene& before, SceneFile file, bool same_table) {
   seal();
   redo_.clear();
-  push({label, before, std::move(file)});
+  push({label, before, std::move(file), same_table});
 }
 
 const std::string& History::undo_label() const {
@@ -34,7 +34,7 @@ HistoryStep History::take(std::vector<HistoryStep>& from, std::vector<HistorySte
                           const FileOf& current_file) {
   HistoryStep e = std::move(from.back());
   from.pop_back();
-  to.push_back({e.label, current, e.file ? std::optional<SceneFile>(current_file()) : std::nullopt});
+  to.push_back({e.label, current, e.file ? std::optional<SceneFile>(current_file()) : std::nullopt, e.same_table});
   return e;
 }
 

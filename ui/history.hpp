@@ -27,6 +27,8 @@ struct HistoryStep {
   std::string label;
   Scene scene;
   std::optional<SceneFile> file;  // set when the step crosses a file load: physics, path, loaded, bench go back too
+  bool same_table = false;        // with `file`: only the position changed (a break set up over another one), so the
+                                  // tuned physics and the camera stay
 };
 
 class History {
@@ -37,7 +39,7 @@ class History {
   // Ends the current gesture: the next record() opens a new entry even with the same merge key.
   void seal() { open_merge_.clear(); }
   // Records the scene and file in use before another file was loaded over them.
-  void record_load(const std::string& label, const Scene& before, SceneFile file);
+  void record_load(const std::string& label, const Scene& before, SceneFile file, bool same_table = false);
 
   bool can_undo() const { return !undo_.empty(); }
   bool can_redo() const { return !redo_.empty(); }

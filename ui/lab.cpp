@@ -302,6 +302,11 @@ void Lab::take_step(HistoryStep step) {
     if (!scene_path.empty()) remember_file(settings, scene_path);  // the next start opens the scene shown
     ghost.clear();
     restore(std::move(step.file->bench));
+    if (step.same_table) {
+      step.scene.model = scene.model;
+      scene = std::move(step.scene);
+      return;
+    }
     scene = std::move(step.scene);
     if (on_load) on_load(scene);  // the camera frames the table it goes back to
     return;

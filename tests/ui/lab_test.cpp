@@ -578,6 +578,18 @@ TEST_F(LabTest, SetUpBreakStartsTheKeptShotsAfresh) {
   EXPECT_NE(lab.kept[0].label.find("aim -75.0 deg"), std::string::npos) << lab.kept[0].label;
 }
 
+// Undoing a break set up over another position brings back that position's workbench, not its physics: physics
+// tuned after the break stays, as for any undo but a file load's.
+TEST_F(LabTest, UndoingABreakKeepsTunedPhysics) {
+  load("cut.json");
+  lab.setup_break();
+  lab.scene.model.options.friction_rate_limit = 12345;  // tuned on the break
+  lab.undo();
+  lab.undo();
+  ASSERT_EQ(lab.scene.balls.size(), 2u);
+  EXPECT_EQ(lab.scene.model.options.friction_rate_limit, 12345);
+}
+
 // A preset picked over a tuned, edited scene loses nothing: one undo brings back that scene, its file and its tuned
 // physics; redo takes the preset again. The first load of a session has nothing to undo.
 TEST_F(LabTest, LoadingAnotherSceneUndoes) {
