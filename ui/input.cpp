@@ -104,15 +104,11 @@ void left_press(Lab& lab, const Vec3& at, MouseDrag& drag, float x) {
     drag = {MouseDrag::FineAim, -1, lab.scene.cue->aim, x};
     return;
   }
-  if (ball >= 0 && lab.shot) {  // a shot is shown: nothing to aim, the click picks the ball the plots and table follow
-    lab.selected = ball;
-    return;
-  }
-  if (ball >= 0 && !(lab.scene.cue && lab.scene.balls[ball].spec.id == lab.scene.cue->ball)) {
+  if (ball >= 0 && lab.scene.cue && !lab.shot && lab.scene.balls[ball].spec.id != lab.scene.cue->ball) {
     lab.aim_at_ball(ball);  // the selection (its ring) stays: a player read its move as the cue changing balls
     return;
   }
-  if (ball >= 0) {  // the cue ball: selected, nothing else
+  if (ball >= 0) {  // the cue ball, a ball while a shot is shown or in a scene without a cue strike: selected
     lab.selected = ball;
     return;
   }

@@ -105,10 +105,9 @@ float cell_place(double v, double lo, double hi, int n, float size) {
 }
 
 // Tick labels on the map's axes: speeds (m/s) in a gutter left of the cells, aims (deg) under them.
-void map_axes(ImDrawList* d, const MarginMap& m, ImVec2 p0, float w, float h, float gutter) {
+void map_axes(ImDrawList* d, const MarginMap& m, const Ticks& sv, ImVec2 p0, float w, float h, float gutter) {
   const ImU32 ink = ImGui::GetColorU32(ImGuiCol_Text), tick = ImGui::GetColorU32(ImGuiCol_TextDisabled);
   const float line = ImGui::GetTextLineHeight();
-  const Ticks sv = nice_ticks(m.speed_lo, m.speed_hi, std::max(4, static_cast<int>(h / (2 * line))));
   for (double v : sv.values) {
     const float y = p0.y + h - cell_place(v, m.speed_lo, m.speed_hi, m.speeds, h);
     const std::string text = format_tick(v, sv);
@@ -136,7 +135,8 @@ void map_key() {
   ImGui::Dummy(ImVec2(w, 2 * line + em(2)));
   mark("margin key");
   ImDrawList* d = ImGui::GetWindowDrawList();
-  const float left = p0.x + ImGui::CalcTextSize("0 %").x / 2, span = p0.x + w - ImGui::CalcTextSize("100 %").x / 2 - left;
+  const float left = p0.x + ImGui::CalcTextSize("0 %").x / 2;
+  const float span = p0.x + w - ImGui::CalcTextSize("100 %").x / 2 - left;
   constexpr int kSteps = 32;
   for (int k = 0; k < kSteps; ++k) {
     const float a = left + span * k / kSteps, b = left + span * (k + 1) / kSteps;
@@ -154,11 +154,12 @@ void map_key() {
 // marked; a click aims there.
 void map_picture(Lab& lab, const MarginMap& m) {
   ImGui::TextUnformatted("speed (m/s) up, aim (deg) across");
+  // The speed ticks for a map as tall as the panel allows (the gutter's width depends on them, the height on it).
+  const float line = ImGui::GetTextLineHeight(), tall = std::max(em(80), 0.5f * ImGui::GetContentRegionAvail().x);
+  const Ticks sv = nice_ticks(m.speed_lo, m.speed_hi, std::max(4, static_cast<int>(tall / (2 * line))));
   float gutter = 0;
-  const Ticks sv = nice_ticks(m.speed_lo, m.speed_hi, 8);
   for (double v : sv.values) gutter = std::max(gutter, ImGui::CalcTextSize(format_tick(v, sv).c_str()).x);
   gutter += em(8);
-  const float line = ImGui::GetTextLineHeight();
   const float w = ImGui::GetContentRegionAvail().x - gutter, h = std::max(em(80), w * 0.5f);
   const ImVec2 origin = ImGui::GetCursorScreenPos(), p0(origin.x + gutter, origin.y + line / 2);
   ImGui::SetCursorScreenPos(p0);
@@ -171,7 +172,7 @@ void map_picture(Lab& lab, const MarginMap& m) {
       const ImVec2 a(p0.x + j * cw, p0.y + h - (i + 1) * ch);
       d->AddRectFilled(a, ImVec2(a.x + cw + 0.5f, a.y + ch + 0.5f), ramp(m.cells[i * m.aims + j]));
     }
-  map_axes(d, m, p0, w, h, gutter);
+  map_axes(d, m, sv, p0, w, h, gutter);
   const bool hovered = ImGui::IsItemHovered(), clicked = ImGui::IsItemClicked();
   ImGui::SetCursorScreenPos(ImVec2(origin.x, p0.y + h + em(6) + line));
   ImGui::Dummy(ImVec2(0, 0));

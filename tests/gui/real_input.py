@@ -290,7 +290,8 @@ def player(binary, root, display, work):
     app.click(ox, oy)  # on the object ball: aim at its centre, move nothing
     s = app.state()
     check(ball(s, "1")["position"] == start, "a click on the object ball does not move it")
-    check(s["selected"] == selected == 0, f"nor does it move the selection's ring off the cue ball ({selected})")
+    check(s["selected"] == selected == 0,
+          f"nor does it move the selection's ring off the cue ball (selected {selected} -> {s['selected']})")
     app.key("p")  # snap: the pocket line (checked off the UI thread: a busy machine may take a frame or two)
     s = app.wait(lambda s: abs(s["cue"]["aim_deg"] + 75) < 0.5, 5, "P aims the ball at the preset's pocket")
     check(abs(s["cue"]["aim_deg"] + 75) < 0.5, f"P aims the ball at the preset's pocket ({s['cue']['aim_deg']:.2f})")
@@ -786,8 +787,9 @@ def coach(binary, root, display, work):
     img = app.grab()
     ink = img.count(panel["x"], cells["y"], cells["x"] - 4, cells["y"] + cells["h"], lambda p: min(p) > 180)
     check(ink > 20, f"the map's speed axis is labelled ({ink} text pixels left of its cells)")
-    low, high = img.pixel(key["x"] + 14, key["y"] + 5), img.pixel(key["x"] + key["w"] - 24, key["y"] + 5)
-    check(low[2] > low[1] + 30 and high[0] > 200 and high[1] > 200 and high[2] < 100,
+    y = key["y"] + key["h"] * 0.15  # the ramp's strip is the key's upper part, its labels under it
+    low, high = img.pixel(key["x"] + key["w"] * 0.1, y), img.pixel(key["x"] + key["w"] * 0.88, y)
+    check(low[2] > low[1] + 30 and high[0] > 170 and high[1] > 190 and high[2] < 110,
           f"the map's colour key runs from dark blue {low} to yellow {high}")
     app.click_widget(s, "margin map", 0.125, 0.25)  # aim column 2 of 20, speed row 7 of 10 from the bottom
     s2 = app.state()
