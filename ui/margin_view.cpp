@@ -87,6 +87,7 @@ void update_margin(const Lab& lab, MarginView& view) {
   }
   view.problem.clear();
   const auto o = margin_options(lab, view, view.problem);
+  view.map_current = false;
   if (!o) return;
   if (const std::string key = margin_key(lab, *o); key != view.asked) {
     view.estimate.start([scene = lab.scene, opts = *o, key](const auto& progress, const std::atomic<bool>& cancel) {
@@ -97,8 +98,8 @@ void update_margin(const Lab& lab, MarginView& view) {
   if (!view.map_wanted) return;
   const std::string key = margin_map_key(lab, view, *o);
   const auto done = view.map.result();
-  const bool current = done && done->key == key && covers(done->map, *lab.scene.cue);
-  if (!current && (key != view.map_asked || (done && done->key == key && !view.map.busy())))
+  view.map_current = done && done->key == key && covers(done->map, *lab.scene.cue);
+  if (!view.map_current && (key != view.map_asked || (done && done->key == key && !view.map.busy())))
     start_map(lab, view, *o, key);
 }
 

@@ -35,6 +35,7 @@ struct MarginView {
   int map_samples = 50;     // replays per cell
   double map_aim = 2, map_speed = 15;  // half ranges: degrees, % of the speed
   bool map_wanted = false;  // asked for and not cancelled: kept up to date
+  bool map_current = false; // the map's result is for the table and goal as they are, and covers the aim and speed
   Background<MarginEstimate> estimate;
   Background<MarginMapResult> map;
   std::string asked, map_asked;  // keys of the last requests

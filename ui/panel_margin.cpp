@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
+#include "ui/aim.hpp"
 #include "ui/margin_view.hpp"
 #include "ui/panels.hpp"
 #include "ui/ticks.hpp"
@@ -37,13 +39,14 @@ void goal_choice(Lab& lab, MarginView& v) {
   std::string shown = v.target_goal ? "cue ball stops in the target"
                       : v.pocket == 0 || v.pocket > static_cast<int>(pockets.size())
                           ? "aimed-at ball into any pocket"
-                          : "aimed-at ball into " + pockets[v.pocket - 1].name;
+                          : "aimed-at ball into " + pocket_label(pockets[v.pocket - 1].name);
   const Fields f({"goal", "player"});
   f.label("goal");
   if (ImGui::BeginCombo("##margin goal", shown.c_str())) {
     if (ImGui::Selectable("aimed-at ball into any pocket", !v.target_goal && v.pocket == 0)) v.target_goal = false, v.pocket = 0;
     for (size_t k = 0; k < pockets.size(); ++k)
-      if (ImGui::Selectable(("aimed-at ball into " + pockets[k].name).c_str(), !v.target_goal && v.pocket == int(k) + 1))
+      if (ImGui::Selectable(("aimed-at ball into " + pocket_label(pockets[k].name)).c_str(),
+                            !v.target_goal && v.pocket == int(k) + 1))
         v.target_goal = false, v.pocket = static_cast<int>(k) + 1;
     if (ImGui::Selectable("cue ball stops in the target", v.target_goal)) v.target_goal = true;
     ImGui::EndCombo();
@@ -65,22 +68,26 @@ void goal_choice(Lab& lab, MarginView& v) {
   mark("margin level");
 }
 
-void estimate_readout(Lab& lab, MarginView& v) {
-  const auto e = fresh_estimate(lab, v);
-  if (!e) {
-    if (v.estimate.busy()) ImGui::ProgressBar(static_cast<float>(v.estimate.progress()), ImVec2(-1, 0), "replaying...");
-    else if (!v.estimate.error().empty()) text_wrapped("%s", v.estimate.error().c_str());
-    return;
+// The estimate's verdict and its table of errors alone. `stale` (0..1, the new estimate's progress): an earlier
+// estimate, dimmed, with the progress in its verdict's line, so that the panel keeps its height (the map below stays
+// under the pointer) while the new one is worked out; it says nothing to the readouts.
+void estimate_lines(const MarginEstimate& e, std::optional<double> stale) {
+  const MarginResult& r = e.result;
+  const std::string where = e.options.goal.kind == ShotGoal::Zone ? "in the target"
+                            : e.options.goal.pocket.empty()       ? "into a pocket"
+                                                                  : "into " + pocket_label(e.options.goal.pocket);
+  if (stale) {
+    ImGui::ProgressBar(static_cast<float>(*stale), ImVec2(-1, ImGui::GetTextLineHeight()), "replaying...");
+  } else {
+    readout("margin success", r.probability);
+    ImGui::TextColored(verdict_colour(r.probability), "%s %s: %.0f %% (+-%.0f) of %zu tries",
+                       e.options.goal.ball.c_str(), where.c_str(), 100 * r.probability, 100 * r.standard_error,
+                       r.samples.size());
+    mark("margin success");
   }
-  const MarginResult& r = e->result;
-  readout("margin success", r.probability);
-  const std::string where = e->options.goal.kind == ShotGoal::Zone ? "in the target"
-                            : e->options.goal.pocket.empty()       ? "into a pocket"
-                                                                   : "into " + e->options.goal.pocket;
-  ImGui::TextColored(verdict_colour(r.probability), "%s %s: %.0f %% (+-%.0f) of %zu tries", e->options.goal.ball.c_str(),
-                     where.c_str(), 100 * r.probability, 100 * r.standard_error, r.samples.size());
-  mark("margin success");
-  if (!r.nominal_success) ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "the intended stroke itself misses");
+  // Always a line, either way: the section keeps its height from one estimate to the next.
+  if (r.nominal_success) ImGui::TextColored(ImVec4(0.5f, 1, 0.5f, 1), "the stroke as aimed, without error, works");
+  else ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "the stroke as aimed, without error, misses");
   if (!ImGui::BeginTable("margin sources", 3, ImGuiTableFlags_SizingStretchProp)) return;
   ImGui::TableSetupColumn("error", ImGuiTableColumnFlags_WidthFixed);
   ImGui::TableSetupColumn("alone", ImGuiTableColumnFlags_WidthFixed);
@@ -93,9 +100,24 @@ void estimate_readout(Lab& lab, MarginView& v) {
     ImGui::TableNextColumn(), ImGui::TextColored(verdict_colour(r.alone[k]), "%.0f %%", 100 * r.alone[k]);
     ImGui::TableNextColumn();
     const Tolerance& t = r.tolerance[k];
-    text_wrapped("%s%.3g .. %s%.3g", t.bounded_lo ? "" : "<", t.lo, t.bounded_hi ? "" : ">", t.hi);
+    if (!r.nominal_success) ImGui::TextDisabled("-");  // no window around a stroke that misses
+    else text_wrapped("%s%.3g .. %s%.3g", t.bounded_lo ? "" : "<", t.lo, t.bounded_hi ? "" : ">", t.hi);
   }
   ImGui::EndTable();
+}
+
+void estimate_readout(Lab& lab, MarginView& v) {
+  if (const auto e = fresh_estimate(lab, v)) return estimate_lines(*e, std::nullopt);
+  const auto old = v.estimate.result();
+  if (v.estimate.busy() && old) {
+    ImGui::BeginDisabled();
+    estimate_lines(*old, v.estimate.progress());
+    ImGui::EndDisabled();
+  } else if (v.estimate.busy()) {
+    ImGui::ProgressBar(static_cast<float>(v.estimate.progress()), ImVec2(-1, 0), "replaying...");
+  } else if (!v.estimate.error().empty()) {
+    text_wrapped("%s", v.estimate.error().c_str());
+  }
 }
 
 // Where value v of a range [lo, hi] over n cells of `size` pixels sits: cell centres span the first to the last.
@@ -217,8 +239,9 @@ void map_section(Lab& lab, MarginView& v) {
   }
   if (v.map.busy()) ImGui::ProgressBar(static_cast<float>(v.map.progress()), ImVec2(-1, 0));
   readout("margin map progress", v.map.busy() ? v.map.progress() : v.map.result() ? 1.0 : 0.0);
+  // A map of another table or goal, or one the aim has left, is not drawn (nor clicked) while the new one comes.
   const auto done = v.map.result();
-  if (v.map_wanted && done) map_picture(lab, done->map);
+  if (v.map_wanted && done && v.map_current) map_picture(lab, done->map);
 }
 
 }  // namespace

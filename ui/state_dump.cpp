@@ -104,6 +104,7 @@ json margin_json(const Lab& lab) {
     j["estimate"] = {{"goal_ball", e->options.goal.ball}, {"pocket", e->options.goal.pocket},
                      {"probability", e->result.probability}, {"samples", e->result.samples.size()},
                      {"aim_window", {e->result.tolerance[kAim].lo, e->result.tolerance[kAim].hi}}};
+  j["map_current"] = v.map_current;
   if (const auto m = v.map.result())
     j["map"] = {{"aims", m->map.aims}, {"speeds", m->map.speeds}, {"aim_deg", {m->map.aim_lo_deg, m->map.aim_hi_deg}},
                 {"speed", {m->map.speed_lo, m->map.speed_hi}}, {"cells", m->map.cells}};

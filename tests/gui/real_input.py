@@ -799,6 +799,18 @@ def coach(binary, root, display, work):
     check(abs(s2["cue"]["aim_deg"] - aim) < 1e-6 and abs(s2["cue"]["speed"] - speed) < 1e-6,
           f"a click on the map aims there ({s2['cue']['aim_deg']:.3f} deg, {s2['cue']['speed']:.3f} m/s)")
     check(s2["undo_label"] != s["undo_label"] or s2["history"] == s["history"] + 1, "the map's aim can be undone")
+    # While the new aim's estimate is worked out the panel keeps its height: the map stays under the pointer (a
+    # player's trial clicked twice and the second click, 112 px off, landed on the map's buttons).
+    before = app.widget(s2, "margin map")
+    s3 = app.wait(lambda s: "estimate" in s["margin"] and not s["margin"]["estimating"], 60, "the new aim's estimate")
+    after = app.widget(s3, "margin map")
+    check(s2["margin"]["estimating"] and abs(after["y"] - before["y"]) < 3,
+          f"the map stays in place while the estimate is worked out again (y {before['y']:.0f} -> {after['y']:.0f})")
+    ox, oy = ball(s3, "1")["screen"]
+    app.drag(ox, oy, ox, oy + 60, mods=("ctrl",))  # the object ball off the aim line: the map is another table's
+    s = app.state()
+    check(not s["margin"]["map_current"] and "margin map" not in s["widgets"],
+          "the map of the table before the move is neither drawn nor clickable")
     app.close()
 
 
