@@ -154,6 +154,13 @@ void check_drops(const Scene& scene, int object, std::vector<PocketAim>& aims) {
   std::stable_partition(aims.begin(), aims.end(), [](const PocketAim& a) { return a.drops; });
 }
 
+std::string pocket_label(const std::string& name) {
+  if (name.rfind("pocket-", 0) != 0) return name;
+  std::string where = name.substr(7);
+  std::replace(where.begin(), where.end(), '-', ' ');
+  return "the " + where + " pocket";
+}
+
 int pocket_object(const Scene& scene) {
   const auto line = aim_line(scene);
   if (!line) return -1;

@@ -3,6 +3,7 @@
 // string for a break). Pure functions of the scene: the overlay draws them, the lab's snap actions use them.
 #pragma once
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "shotlab/scene.hpp"
@@ -38,6 +39,8 @@ std::vector<PocketAim> pocket_aims(const Scene& scene, const std::vector<Pocket>
 // that drop come first, each part easiest cut first. An aim that drops moves to the middle of the aims around it that
 // drop too (window_deg: half their width).
 void check_drops(const Scene& scene, int object, std::vector<PocketAim>& aims);
+// A pocket's name as a player says it: "pocket-right-front" -> "the right front pocket" (other names unchanged).
+std::string pocket_label(const std::string& name);
 // The ball P aims for: the one the aim line meets, else the object ball whose centre is nearest the aim in heading
 // (-1 when there is no cue strike or no other ball).
 int pocket_object(const Scene& scene);

@@ -277,7 +277,7 @@ void Lab::undo() {
   if (in_hand) {  // putting the ball back where it was picked up
     in_hand = false;
     if (history.can_undo()) take_step(history.undo(scene, [this] { return current_file(); }));
-    say(MessageKind::Note, "undone: ball in hand");  // not the pick-up's "click to put it down" any more
+    say(MessageKind::Note, "the cue ball is back where it was picked up");  // not "click to put it down" any more
     scene_changed();
     return;
   }

@@ -160,6 +160,7 @@ class Lab {
   bool editable(const char* what);
   bool fits(int i, const Vec3& p) const;
   void choose_pocket(std::vector<PocketAim> aims, int object, int step, int first);  // lab_edit.cpp
+  std::string pocket_note(const PocketAim& a, int object, bool only) const;  // P's note on the aim it took
   void show(double t);
   void start_shot(const Scene& start);
   void launch();  // the scene's shot starts playing; the last shot's paths stay as the ghost

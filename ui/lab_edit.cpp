@@ -96,6 +96,20 @@ void Lab::finish_pocket_aim(bool block) {
 
 // P's choice once the drops are known: `step` pockets on from the one aimed at now, among those that drop when any
 // does; off every pocket, the first press (`first`) snaps to the nearest one and the others step on from there.
+// P's note on the aim it took: the cut of the aim line as it is now (the window's middle is off the ghost-ball line
+// that PocketAim::cut_deg measures), whether it drops and how far the aim may turn.
+std::string Lab::pocket_note(const PocketAim& a, int object, bool only) const {
+  const auto line = aim_line(scene);
+  const double cut = line && line->hit == object ? line->cut_deg : a.cut_deg;
+  char speed[32], window[64] = "";
+  std::snprintf(speed, sizeof speed, "%.2f m/s", scene.cue->speed);
+  if (a.window_deg > 0) std::snprintf(window, sizeof window, ", the middle of an aim window of +-%.2f deg", a.window_deg);
+  const std::string head = "aimed " + scene.balls[object].spec.id + " at " + pocket_label(a.pocket) + " (cut " +
+                           deg(cut * M_PI / 180) + " deg; ";
+  if (!a.drops) return head + "does not drop at " + speed + ": try another speed or pocket)";
+  return head + "drops at " + speed + window + ")" + (only ? "; no other pocket drops it" : "");
+}
+
 void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step, int first) {
   if (aims.empty()) return;
   if (aims.front().drops)  // only those that drop are offered, when any does
@@ -112,15 +126,7 @@ void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step, int f
   CueStrike cue = *scene.cue;
   cue.aim = aims[next].aim;
   set_cue(cue, kPocketAim);
-  char speed[32], window[64] = "";
-  std::snprintf(speed, sizeof speed, "%.2f m/s", scene.cue->speed);
-  if (aims[next].window_deg > 0)
-    std::snprintf(window, sizeof window, ", the middle of an aim window of +-%.2f deg", aims[next].window_deg);
-  say(MessageKind::Note, "aimed " + scene.balls[object].spec.id + " at " + aims[next].pocket + " (cut " +
-                             deg(aims[next].cut_deg * M_PI / 180) + " deg; " +
-                             (aims[next].drops ? std::string("drops at ") + speed + window + ")"
-                                               : std::string("does not drop at ") + speed +
-                                                     ": more speed or another pocket)"));
+  say(MessageKind::Note, pocket_note(aims[next], object, aims.size() == 1));
   pocket_aimed_ = PocketAimed{scene.balls[object].spec.id, scene.cue->aim, message};
 }
 

@@ -203,6 +203,21 @@ TEST_F(LabTest, PocketAimTakesTheMiddleOfTheAimWindow) {
   EXPECT_NE(lab.message.find("the middle of an aim window of +-"), std::string::npos) << lab.message;
 }
 
+// P's note names the pocket as a player does and gives the cut of the aim line it took, as the table's label shows
+// it (a player's trial read "cut 30.00" in the note and 31.86 on the table: the note had the ghost-ball line's).
+TEST_F(LabTest, PocketNoteGivesTheAimLinesCut) {
+  load("cut.json");
+  lab.aim_for_pocket(1);
+  lab.finish_pocket_aim(true);
+  EXPECT_EQ(lab.message.rfind("aimed 1 at the right front pocket (cut ", 0), 0u) << lab.message;
+  const auto line = aim_line(lab.scene);
+  ASSERT_TRUE(line);
+  char cut[32];
+  std::snprintf(cut, sizeof cut, "(cut %.2f deg", line->cut_deg);
+  EXPECT_NE(lab.message.find(cut), std::string::npos) << cut << " in " << lab.message;
+  EXPECT_GT(std::abs(line->cut_deg - 30), 0.1);  // the window's middle is off the ghost-ball line's 30 deg
+}
+
 // P on a full rack plays the break out once per pocket, longer than a frame: the answer comes in a later frame, and
 // presses meanwhile add up; a ball moved or the aim turned before it comes drops it (the answer is for another shot).
 TEST_F(LabTest, PocketAimsOfALongCheckComeInALaterFrame) {
