@@ -103,7 +103,8 @@ std::string Lab::pocket_note(const PocketAim& a, int object, bool only) const {
   const double cut = line && line->hit == object ? line->cut_deg : a.cut_deg;
   char speed[32], window[64] = "";
   std::snprintf(speed, sizeof speed, "%.2f m/s", scene.cue->speed);
-  if (a.window_deg > 0) std::snprintf(window, sizeof window, ", the middle of an aim window of +-%.2f deg", a.window_deg);
+  if (a.window_deg > 0)
+    std::snprintf(window, sizeof window, ", the middle of an aim window of +-%.2f deg", a.window_deg);
   const std::string head = "aimed " + scene.balls[object].spec.id + " at " + pocket_label(a.pocket) + " (cut " +
                            deg(cut * M_PI / 180) + " deg; ";
   if (!a.drops) return head + "does not drop at " + speed + ": try another speed or pocket)";

@@ -138,9 +138,10 @@ void stroke(ImDrawList* d, const std::vector<ImVec2>& run, ImU32 colour, float w
 
 // Trails: by motion colour (the segment into a point takes that point's motion), or in one colour (kept shots, ghost,
 // A trails), dashed when `dashed`. Each run of one colour is one polyline in screen space. The sliding runs go on top:
-// a drawn-back or followed ball returns along its path rolling, and would paint over where it slid.
+// a drawn-back or followed ball returns along its path rolling, and would paint over where it slid. Ball `skip`'s
+// trail is left out.
 void paths(ImDrawList* d, const Viewport& vp, const Trails& trails, float alpha, float width, bool by_motion,
-           ImU32 colour = IM_COL32(220, 220, 220, 255), bool dashed = false) {
+           ImU32 colour = IM_COL32(220, 220, 220, 255), bool dashed = false, int skip = -1) {
   const ImU32 plain = (colour & ~IM_COL32_A_MASK) | (static_cast<ImU32>(alpha * 255) << IM_COL32_A_SHIFT);
   const ImU32 sliding = motion_color(Motion::Sliding, alpha);
   const float spacing = dashed ? kDashPixels : kTrailPixels;
@@ -150,7 +151,9 @@ void paths(ImDrawList* d, const Viewport& vp, const Trails& trails, float alpha,
     if (by_motion && c == sliding) on_top.push_back(run);
     else stroke(d, run, c, width, dashed);
   };
-  for (const auto& path : trails) {
+  for (size_t b = 0; b < trails.size(); ++b) {
+    if (static_cast<int>(b) == skip) continue;
+    const auto& path = trails[b];
     run.clear();
     ImU32 run_colour = plain;
     for (const PathPoint& point : path) {
@@ -361,6 +364,17 @@ void draw_overlay(const Lab& lab, const Viewport& vp, ImDrawList* d) {
 
 namespace {
 
+// The predicted paths; with more than three balls on the move (a break) the others' faint and the cue ball's
+// (`cue`) on top, which a rack's sixteen lines across the table otherwise hide.
+void predicted_paths(ImDrawList* d, const Viewport& vp, const Trails& trails, int cue) {
+  int moving = 0;
+  for (const auto& path : trails)
+    moving += path.size() > 1 && glm::length(path.back().position - path.front().position) > 1e-3;
+  if (moving <= 3 || cue < 0 || cue >= static_cast<int>(trails.size())) return paths(d, vp, trails, 0.7f, 2.0f, true);
+  paths(d, vp, trails, 0.3f, 1.5f, true, IM_COL32(220, 220, 220, 255), false, cue);
+  paths(d, vp, {trails[static_cast<size_t>(cue)]}, 0.9f, 2.5f, true);
+}
+
 void draw_all(const Lab& lab, const Viewport& vp, ImDrawList* d) {
   const ViewFlags& v = lab.settings.view;
   Labels labels(ImRect(static_cast<float>(vp.x0), 0, static_cast<float>(vp.x0 + vp.width), static_cast<float>(vp.height)));
@@ -377,10 +391,10 @@ void draw_all(const Lab& lab, const Viewport& vp, ImDrawList* d) {
   } else {
     if (v.predicted)
       if (const auto p = lab.predicted_paths()) {
-        paths(d, vp, p->paths, 0.7f, 2.0f, true);
+        const int c = lab.scene.cue ? scene_ball(lab.scene, lab.scene.cue->ball) : -1;
+        predicted_paths(d, vp, p->paths, c);
         // Where the cue ball stops, ringed: on a straight draw or follow its path lies on the aim line or the object
         // ball's, and its end is otherwise lost.
-        const int c = lab.scene.cue ? scene_ball(lab.scene, lab.scene.cue->ball) : -1;
         if (p->complete && c >= 0 && c < static_cast<int>(p->paths.size()))
           ends(d, vp, {p->paths[c]}, radius, IM_COL32(255, 255, 255, 220));
         size_t points = 0;
