@@ -70,7 +70,7 @@ void start_map(const Lab& lab, MarginView& view, const MarginOptions& o, const s
   MarginOptions cell = o;
   cell.samples = static_cast<size_t>(view.map_samples);
   const int aims = kMapSizes[view.map_size][0], speeds = kMapSizes[view.map_size][1];
-  view.map.start([scene = lab.scene, cell, key, aims, speeds, aim = view.map_aim, speed = view.map_speed](
+  view.map.start([scene = lab.scene, cell, key, aims, speeds, aim = view.map_aim(), speed = view.map_speed](
                      const auto& progress, const std::atomic<bool>& cancel) {
     return MarginMapResult{key, margin_map(scene, cell, aims, speeds, aim, speed, progress, &cancel)};
   });

@@ -33,7 +33,10 @@ struct MarginView {
   bool scatter = true;      // draw where the replays left the balls
   int map_size = 0;         // index in kMapSizes
   int map_samples = 50;     // replays per cell
-  double map_aim = 2, map_speed = 15;  // half ranges: degrees, % of the speed
+  double map_speed = 15;    // the map's half range of speed, % of the speed
+  // The map's half range of aim, degrees: four of the player's aim deviations (amateur 2, pro 1), past which the
+  // success of a shot whose own window is a fraction of a degree has fallen to nothing.
+  double map_aim() const { return 4 * stroke_noise(stroke_levels()[static_cast<size_t>(level)]).aim_deg; }
   bool map_wanted = false;  // asked for and not cancelled: kept up to date
   bool map_current = false; // the map's result is for the table and goal as they are, and covers the aim and speed
   Background<MarginEstimate> estimate;
