@@ -103,9 +103,7 @@ bool drops_in(const Scene& scene, const std::string& object, const std::string& 
   }
   return false;
 }
-}  // namespace
 
-namespace {
 // The aim window around a ghost-ball aim that drops the ball: how far (deg) the aim alone may turn either way with the
 // ball still dropping in that pocket, searched in the amateur's steps of 0.25 deg out to 4 deg and bisected to
 // 0.005 deg (shotlab/io/margin.hpp), each try played as long as drops_in plays.

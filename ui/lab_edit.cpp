@@ -94,8 +94,6 @@ void Lab::finish_pocket_aim(bool block) {
   choose_pocket(std::move(*aims), done.object, done.steps, done.first);
 }
 
-// P's choice once the drops are known: `step` pockets on from the one aimed at now, among those that drop when any
-// does; off every pocket, the first press (`first`) snaps to the nearest one and the others step on from there.
 // P's note on the aim it took: the cut of the aim line as it is now (the window's middle is off the ghost-ball line
 // that PocketAim::cut_deg measures), whether it drops and how far the aim may turn.
 std::string Lab::pocket_note(const PocketAim& a, int object, bool only) const {
@@ -111,6 +109,8 @@ std::string Lab::pocket_note(const PocketAim& a, int object, bool only) const {
   return head + "drops at " + speed + window + ")" + (only ? "; no other pocket drops it" : "");
 }
 
+// P's choice once the drops are known: `step` pockets on from the one aimed at now, among those that drop when any
+// does; off every pocket, the first press (`first`) snaps to the nearest one and the others step on from there.
 void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step, int first) {
   if (aims.empty()) return;
   if (aims.front().drops)  // only those that drop are offered, when any does
