@@ -36,8 +36,8 @@ extern "C" void on_signal(int) { interrupted = true; }
 extern "C" void on_dump_signal(int) { dump_requested = true; }
 
 // Presentation mode's fonts and widgets, times the UI scale: 1.7 on a 1920 x 1080 window, less on a smaller one in
-// proportion (projected full screen, its pixels are larger), down to 1.25: text keeps its size on the wall and the
-// panels their room.
+// proportion (projected full screen, its pixels are larger), down to 1.25: text keeps its size on the wall. The
+// panels do not widen with it past 40 % of the width (kPresentationViewShare): the table keeps its size.
 float presentation_scale(int w, int h) {
   return std::clamp(1.7f * std::min(static_cast<float>(w) / 1920, static_cast<float>(h) / 1080), 1.25f, 1.7f);
 }
@@ -132,7 +132,8 @@ Layout frame_layout(const Settings& s, int w, int h) {
   const float bar = ImGui::GetFrameHeight();
   return layout_panels(static_cast<float>(w), static_cast<float>(h),
                        {s.panels.left_open, s.panels.left_width * scale, bar},
-                       {s.panels.right_open, s.panels.right_width * scale, bar});
+                       {s.panels.right_open, s.panels.right_width * scale, bar},
+                       view_share(s));
 }
 
 // ImGui's GLFW backend (1.86) reads the pointer only once the window has the focus or the pointer has entered it:

@@ -4,13 +4,13 @@
 
 namespace shotlab {
 
-Layout layout_panels(float W, float H, const PanelRequest& left, const PanelRequest& right) {
+Layout layout_panels(float W, float H, const PanelRequest& left, const PanelRequest& right, float view_share) {
   W = std::max(W, 1.0f);
   H = std::max(H, 1.0f);
   float lw = std::max(left.width, 1.0f), rw = std::max(right.width, 1.0f);
-  // Open panels share at most (1 - kMinViewShare) of the width, narrowed in proportion, each down to kMinPanelWidth;
+  // Open panels share at most (1 - view_share) of the width, narrowed in proportion, each down to kMinPanelWidth;
   // in a window too small even for that, they split what is left over after the view's share.
-  const float budget = widest_panel(W, {false, 0, 0});  // the panels' share: one's with the other closed
+  const float budget = widest_panel(W, {false, 0, 0}, view_share);  // the panels' share: one's with the other closed
   const float wanted = (left.open ? lw : 0) + (right.open ? rw : 0);
   if (wanted > budget) {
     const float k = budget / wanted;
@@ -33,8 +33,8 @@ Layout layout_panels(float W, float H, const PanelRequest& left, const PanelRequ
   return out;
 }
 
-float widest_panel(float window_w, const PanelRequest& other) {
-  return window_w * (1 - kMinViewShare) - (other.open ? other.width : 0);
+float widest_panel(float window_w, const PanelRequest& other, float view_share) {
+  return window_w * (1 - view_share) - (other.open ? other.width : 0);
 }
 
 }  // namespace shotlab

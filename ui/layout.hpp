@@ -27,14 +27,18 @@ struct Layout {
 };
 
 inline constexpr float kMinViewShare = 0.45f;  // of the window width, kept for the 3D view
+// In presentation mode: the table is what a class watches, so the larger text wraps in narrower panels instead.
+inline constexpr float kPresentationViewShare = 0.6f;
 inline constexpr float kMinPanelWidth = 200;   // pixels: narrower, a panel's sliders are unusable
 inline constexpr float kBaseFontPx = 15;       // the UI font at scale 1: the panels' widths are given at it
 // Pixels: the gutter at the inner edge of an open left panel, its width grip (the panel's scrollbar takes the edge of
 // its window, so the grip lies beside it).
 inline constexpr float kLeftGripPx = 6;
 
-Layout layout_panels(float window_w, float window_h, const PanelRequest& left, const PanelRequest& right);
+// `view_share`: the share of the width kept for the view (kMinViewShare, or kPresentationViewShare).
+Layout layout_panels(float window_w, float window_h, const PanelRequest& left, const PanelRequest& right,
+                     float view_share = kMinViewShare);
 // Pixels: the widest a panel may be beside the `other` one before layout_panels narrows either of them.
-float widest_panel(float window_w, const PanelRequest& other);
+float widest_panel(float window_w, const PanelRequest& other, float view_share = kMinViewShare);
 
 }  // namespace shotlab

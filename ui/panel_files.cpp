@@ -179,7 +179,7 @@ void scene_section(Lab& lab) {
   }
   mark("Open...");
   browser_popup(lab, browse_dir);
-  ImGui::SameLine();
+  same_line_if_fits("Save");
   static std::string save_path;
   const std::string stem = lab.scene_path.empty() ? "scene" : fs::path(lab.scene_path).stem().string();
   const std::string mine = (fs::path(folder) / (stem + "-mine.json")).string();
@@ -194,7 +194,7 @@ void scene_section(Lab& lab) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(shipped ? "a shipped preset is not overwritten: choose a file" : "save to %s",
                       lab.scene_path.c_str());
-  ImGui::SameLine();
+  same_line_if_fits("Save as...");
   if (ImGui::Button("Save as...")) {
     save_path = shipped ? mine : lab.scene_path;
     ImGui::OpenPopup("Save scene as");

@@ -124,13 +124,12 @@ void tool_buttons(Lab& lab) {
                {Tool::Move, "Move balls", "drag a ball to move it; shift+click the cloth adds one (also Ctrl+drag in Aim)"},
                {Tool::Target, "Target", "click where the cue ball should stop: the miss shows after the shot"}};
   for (const auto& t : tools) {
+    if (t.tool != Tool::Aim) same_line_if_checkbox_fits(t.name);  // a radio button is a checkbox's size
     // "##tool": the Aim section's header has the label "Aim" too; one ID for both left this button dead.
     if (ImGui::RadioButton((std::string(t.name) + "##tool").c_str(), lab.tool == t.tool)) lab.tool = t.tool;
     mark(std::string("tool ") + t.name);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.tip);
-    ImGui::SameLine();
   }
-  ImGui::NewLine();
 }
 
 void aim_readouts(const Lab& lab, const CueStrike& cue) {
@@ -248,7 +247,7 @@ bool left_panel(Lab& lab, Camera& camera, const Layout& layout) {
     const Rect& grip = layout.left_grip;
     const float bar = ImGui::GetFrameHeight();
     const PanelWidths widths{panels.left_width, panels.right_width, layout.left_shown(),
-                             layout.right_shown(panels.right_open)};
+                             layout.right_shown(panels.right_open), view_share(lab.settings)};
     panel_width_grip("left panel width grip", Rect{grip.x, grip.y + bar, grip.w, grip.h - bar}, layout.left.x, widths,
                      ImGui::GetFontSize() / kBaseFontPx, PanelState{}.left_width);
     text_wrapped("%s", lab.scene.name.c_str());

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ui/camera.hpp"
+#include "ui/layout.hpp"
 
 namespace shotlab {
 
@@ -47,6 +48,9 @@ struct Settings {
   std::vector<std::string> recent;  // scene files opened, newest first
   std::string export_dir;       // where plots, tables, strobe pictures and trajectories go; empty: the current folder
 };
+
+// The share of the window's width the panels leave to the table (layout.hpp): larger while presenting.
+inline float view_share(const Settings& s) { return s.presentation ? kPresentationViewShare : kMinViewShare; }
 
 inline constexpr size_t kRecentFiles = 8;
 void remember_file(Settings& s, const std::string& path);  // to the front of `recent`

@@ -162,7 +162,8 @@ void panel_width_grip(const char* name, const Rect& strip, float outer_x, PanelW
     storage->SetBool(kMoved, true);
     if (w.other_shown > 0) w.other_width = w.other_shown / scale;
   }
-  const float widest = widest_panel(ImGui::GetMainViewport()->Size.x, {w.other_shown > 0, w.other_shown}) / scale;
+  const float widest =
+      widest_panel(ImGui::GetMainViewport()->Size.x, {w.other_shown > 0, w.other_shown}, w.view_share) / scale;
   w.width = std::clamp((reach + storage->GetFloat(kGrab)) / scale, kMinPanelWidth, std::max(widest, kMinPanelWidth));
 }
 

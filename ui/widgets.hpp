@@ -53,6 +53,7 @@ struct PanelWidths {
   float& width;
   float& other_width;
   float shown, other_shown;
+  float view_share = kMinViewShare;  // what layout_panels keeps for the view (kPresentationViewShare presenting)
 };
 // Inside a side panel's window: dragging `strip` (on screen: the panel's inner edge) moves the panel's inner edge with
 // the pointer, `outer_x` being its edge at the window's side (`scale`: font size over the base size), from

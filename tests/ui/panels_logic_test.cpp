@@ -113,6 +113,19 @@ TEST(Layout, PanelsStayAtTheEdgesAtEveryWindowSize) {
   EXPECT_EQ(wide.right.w, 360);
 }
 
+// Presentation mode's 1.7x text would widen both panels to leave the table 45 % of a 1920 px window (a teacher's
+// trial: "F5 enlarges the text, not the table"); presenting, the panels leave it 60 %, each still usable.
+TEST(Layout, PresentingKeepsTheTableLarge) {
+  const PanelRequest left{true, 330 * 1.7f, 34}, right{true, 360 * 1.7f, 34};
+  const Layout normal = layout_panels(1920, 1080, {true, 330, 20}, {true, 360, 20});
+  const Layout presenting = layout_panels(1920, 1080, left, right, kPresentationViewShare);
+  EXPECT_NEAR(layout_panels(1920, 1080, left, right).view.w, kMinViewShare * 1920, 1.0f);
+  EXPECT_NEAR(presenting.view.w, kPresentationViewShare * 1920, 1.0f);
+  EXPECT_GT(presenting.view.w, 0.9f * normal.view.w);
+  EXPECT_GE(presenting.left.w + presenting.left_grip.w, kMinPanelWidth);
+  EXPECT_GE(presenting.right.w, kMinPanelWidth);
+}
+
 TEST(Layout, ACollapsedPanelGivesItsWidthToTheView) {
   const Layout l = layout_panels(1280, 720, {false, 330, 20}, {true, 360, 20});
   EXPECT_EQ(l.view.x, 0);
