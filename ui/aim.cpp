@@ -153,9 +153,10 @@ void check_drops(const Scene& scene, int object, std::vector<PocketAim>& aims) {
 }
 
 std::string pocket_label(const std::string& name) {
-  if (name.rfind("pocket-", 0) != 0) return name;
+  if (name.rfind("pocket-", 0) != 0 || name.size() == 7) return name;
   std::string where = name.substr(7);
   std::replace(where.begin(), where.end(), '-', ' ');
+  if (where.rfind("side ", 0) == 0) where = where.substr(5) + " side";  // "the back side pocket", as players say
   return "the " + where + " pocket";
 }
 

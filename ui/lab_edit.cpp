@@ -106,7 +106,7 @@ std::string Lab::pocket_note(const PocketAim& a, int object, bool only) const {
   const std::string head = "aimed " + scene.balls[object].spec.id + " at " + pocket_label(a.pocket) + " (cut " +
                            deg(cut * M_PI / 180) + " deg; ";
   if (!a.drops) return head + "does not drop at " + speed + ": try another speed or pocket)";
-  return head + "drops at " + speed + window + ")" + (only ? "; no other pocket drops it" : "");
+  return head + "drops at " + speed + window + ")" + (only ? "; no other pocket in reach drops it" : "");
 }
 
 // P's choice once the drops are known: `step` pockets on from the one aimed at now, among those that drop when any

@@ -60,10 +60,12 @@ std::string margin_map_key(const Lab& lab, const MarginView& view, const MarginO
 
 namespace {
 
-// The map still answers for the current aim and speed: they lie inside its range.
+// The map still answers for the current aim and speed: they lie inside its range (to round-off: a click on an edge
+// cell sets its centre, converted to radians and back).
 bool covers(const MarginMap& m, const CueStrike& cue) {
-  const double aim = cue.aim * 180 / std::numbers::pi;
-  return aim >= m.aim_lo_deg && aim <= m.aim_hi_deg && cue.speed >= m.speed_lo && cue.speed <= m.speed_hi;
+  const double aim = cue.aim * 180 / std::numbers::pi, slack = 1e-9;
+  return aim >= m.aim_lo_deg - slack && aim <= m.aim_hi_deg + slack && cue.speed >= m.speed_lo - slack &&
+         cue.speed <= m.speed_hi + slack;
 }
 
 void start_map(const Lab& lab, MarginView& view, const MarginOptions& o, const std::string& key) {
@@ -80,6 +82,7 @@ void start_map(const Lab& lab, MarginView& view, const MarginOptions& o, const s
 }  // namespace
 
 void update_margin(const Lab& lab, MarginView& view) {
+  view.map_current = false;  // until shown to hold below
   if (!view.open || lab.shot) {  // nothing to work out: leave the cores to the shot
     if (view.estimate.busy()) view.estimate.cancel(), view.asked.clear();
     if (view.map.busy()) view.map.cancel(), view.map_asked.clear();
@@ -87,7 +90,6 @@ void update_margin(const Lab& lab, MarginView& view) {
   }
   view.problem.clear();
   const auto o = margin_options(lab, view, view.problem);
-  view.map_current = false;
   if (!o) return;
   if (const std::string key = margin_key(lab, *o); key != view.asked) {
     view.estimate.start([scene = lab.scene, opts = *o, key](const auto& progress, const std::atomic<bool>& cancel) {

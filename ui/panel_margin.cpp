@@ -231,7 +231,7 @@ void map_section(Lab& lab, MarginView& v) {
     if (ImGui::Button("Map aim x speed")) v.map_wanted = true;
     mark("Map aim x speed");
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("success over the aim (+-%.0f deg) and the speed (+-%.0f %%) around the current ones, on every "
+      ImGui::SetTooltip("success over the aim (+-%.2g deg) and the speed (+-%.0f %%) around the current ones, on every "
                         "core; kept up to date as you aim", v.map_aim(), v.map_speed);
   } else {
     if (ImGui::Button(v.map.busy() ? "Cancel map" : "Hide map")) v.map_wanted = false, v.map.cancel(), v.map_asked.clear();

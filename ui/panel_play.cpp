@@ -247,7 +247,7 @@ bool left_panel(Lab& lab, Camera& camera, const Layout& layout) {
     const Rect& grip = layout.left_grip;
     const float bar = ImGui::GetFrameHeight();
     const PanelWidths widths{panels.left_width, panels.right_width, layout.left_shown(),
-                             layout.right_shown(panels.right_open), view_share(lab.settings)};
+                             layout.right_shown(panels.right_open), lab.settings.presentation};
     panel_width_grip("left panel width grip", Rect{grip.x, grip.y + bar, grip.w, grip.h - bar}, layout.left.x, widths,
                      ImGui::GetFontSize() / kBaseFontPx, PanelState{}.left_width);
     text_wrapped("%s", lab.scene.name.c_str());

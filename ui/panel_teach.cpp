@@ -335,7 +335,7 @@ bool inspector_panel(Lab& lab, Tuning& tuning, const Layout& layout) {
     const float bar = ImGui::GetFrameHeight();
     const Rect edge{where.x, where.y + bar, 0.75f * ImGui::GetStyle().WindowPadding.x, where.h - bar};
     const PanelWidths widths{panels.right_width, panels.left_width, layout.right_shown(true), layout.left_shown(),
-                             view_share(lab.settings)};
+                             lab.settings.presentation};
     panel_width_grip("panel width grip", edge, where.right(), widths, ImGui::GetFontSize() / kBaseFontPx,
                      PanelState{}.right_width);
     if (ImGui::BeginTabBar("tabs")) {

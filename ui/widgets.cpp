@@ -129,6 +129,7 @@ bool begin_side_panel(const char* name, const Rect& where, bool want_open, bool 
 }
 
 void panel_width_grip(const char* name, const Rect& strip, float outer_x, PanelWidths w, float scale, float standard) {
+  if (w.locked) return;
   // The drag's state, kept by ImGui under the strip's id (values, not references: a new key may move the others).
   ImGuiStorage* storage = ImGui::GetStateStorage();
   const ImGuiID id = ImGui::GetID(name), kDragging = id, kGrab = id + 1, kStartX = id + 2, kMoved = id + 3;
@@ -162,8 +163,7 @@ void panel_width_grip(const char* name, const Rect& strip, float outer_x, PanelW
     storage->SetBool(kMoved, true);
     if (w.other_shown > 0) w.other_width = w.other_shown / scale;
   }
-  const float widest =
-      widest_panel(ImGui::GetMainViewport()->Size.x, {w.other_shown > 0, w.other_shown}, w.view_share) / scale;
+  const float widest = widest_panel(ImGui::GetMainViewport()->Size.x, {w.other_shown > 0, w.other_shown}) / scale;
   w.width = std::clamp((reach + storage->GetFloat(kGrab)) / scale, kMinPanelWidth, std::max(widest, kMinPanelWidth));
 }
 

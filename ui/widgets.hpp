@@ -53,7 +53,7 @@ struct PanelWidths {
   float& width;
   float& other_width;
   float shown, other_shown;
-  float view_share = kMinViewShare;  // what layout_panels keeps for the view (kPresentationViewShare presenting)
+  bool locked = false;  // presentation mode: the layout narrows the panels, and a drag would store them narrowed
 };
 // Inside a side panel's window: dragging `strip` (on screen: the panel's inner edge) moves the panel's inner edge with
 // the pointer, `outer_x` being its edge at the window's side (`scale`: font size over the base size), from

@@ -806,11 +806,13 @@ def coach(binary, root, display, work):
     after = app.widget(s3, "margin map")
     check(s2["margin"]["estimating"] and abs(after["y"] - before["y"]) < 3,
           f"the map stays in place while the estimate is worked out again (y {before['y']:.0f} -> {after['y']:.0f})")
-    ox, oy = ball(s3, "1")["screen"]
-    app.drag(ox, oy, ox, oy + 60, mods=("ctrl",))  # the object ball off the aim line: the map is another table's
+    # Ball 1 moved a little along the line from the cue ball: still aimed at, but the map is another table's.
+    (ox, oy), (cx, cy) = ball(s3, "1")["screen"], ball(s3, "cue")["screen"]
+    length = max(1.0, ((ox - cx) ** 2 + (oy - cy) ** 2) ** 0.5)
+    app.drag(ox, oy, ox + 12 * (ox - cx) / length, oy + 12 * (oy - cy) / length, mods=("ctrl",))
     s = app.state()
-    check(not s["margin"]["map_current"] and "margin map" not in s["widgets"],
-          "the map of the table before the move is neither drawn nor clickable")
+    check(s["margin"]["problem"] == "" and not s["margin"]["map_current"] and "margin map" not in s["widgets"],
+          f"the map of the table before the move is neither drawn nor clickable (problem {s['margin']['problem']!r})")
     app.close()
 
 

@@ -203,6 +203,14 @@ TEST_F(LabTest, PocketAimTakesTheMiddleOfTheAimWindow) {
   EXPECT_NE(lab.message.find("the middle of an aim window of +-"), std::string::npos) << lab.message;
 }
 
+// Pockets as players name them; names of other tables' pockets are left as they are.
+TEST(PocketLabel, SaysWhereThePocketIs) {
+  EXPECT_EQ(pocket_label("pocket-right-front"), "the right front pocket");
+  EXPECT_EQ(pocket_label("pocket-side-back"), "the back side pocket");
+  EXPECT_EQ(pocket_label("pocket-"), "pocket-");
+  EXPECT_EQ(pocket_label("corner 3"), "corner 3");
+}
+
 // P's note names the pocket as a player does and gives the cut of the aim line it took, as the table's label shows
 // it (a player's trial read "cut 30.00" in the note and 31.86 on the table: the note had the ghost-ball line's).
 TEST_F(LabTest, PocketNoteGivesTheAimLinesCut) {

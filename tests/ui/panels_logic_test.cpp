@@ -122,8 +122,8 @@ TEST(Layout, PresentingKeepsTheTableLarge) {
   EXPECT_NEAR(layout_panels(1920, 1080, left, right).view.w, kMinViewShare * 1920, 1.0f);
   EXPECT_NEAR(presenting.view.w, kPresentationViewShare * 1920, 1.0f);
   EXPECT_GT(presenting.view.w, 0.9f * normal.view.w);
-  EXPECT_GE(presenting.left.w + presenting.left_grip.w, kMinPanelWidth);
-  EXPECT_GE(presenting.right.w, kMinPanelWidth);
+  EXPECT_GE(presenting.left.w + presenting.left_grip.w, 1.7f * kMinPanelWidth);  // usable at the larger text
+  EXPECT_GE(presenting.right.w, 1.7f * kMinPanelWidth);
 }
 
 TEST(Layout, ACollapsedPanelGivesItsWidthToTheView) {
