@@ -121,9 +121,9 @@ void save_as_popup(Lab& lab, std::string& typed, const std::string& folder) {
   const bool exists = !path.empty() && fs::exists(path, ec);
   const bool preset = inside(path, lab.data_root + "/presets");
   const bool blocked = path.empty() || preset || folder_typed;
-  if (folder_typed) ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "that is a folder: add a file name");
-  else if (preset) ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "that is a shipped preset: choose another name");
-  else if (exists) ImGui::TextColored(ImVec4(1, 0.8f, 0.4f, 1), "a file of that name exists: Replace writes over it");
+  if (folder_typed) coloured_wrapped(ImVec4(1, 0.7f, 0.3f, 1), "that is a folder: add a file name");
+  else if (preset) coloured_wrapped(ImVec4(1, 0.7f, 0.3f, 1), "that is a shipped preset: choose another name");
+  else if (exists) coloured_wrapped(ImVec4(1, 0.8f, 0.4f, 1), "a file of that name exists: Replace writes over it");
   if (!path.empty() && !folder_typed) {
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + em(420));  // a long path wraps under the box, not past the window
     ImGui::TextDisabled("saves %s", path.c_str());

@@ -80,14 +80,14 @@ void estimate_lines(const MarginEstimate& e, std::optional<double> stale) {
     ImGui::ProgressBar(static_cast<float>(*stale), ImVec2(-1, ImGui::GetTextLineHeight()), "replaying...");
   } else {
     readout("margin success", r.probability);
-    ImGui::TextColored(verdict_colour(r.probability), "%s %s: %.0f %% (+-%.0f) of %zu tries",
+    coloured_wrapped(verdict_colour(r.probability), "%s %s: %.0f %% (+-%.0f) of %zu tries",
                        e.options.goal.ball.c_str(), where.c_str(), 100 * r.probability, 100 * r.standard_error,
                        r.samples.size());
     mark("margin success");
   }
   // Always a line, either way: the section keeps its height from one estimate to the next.
-  if (r.nominal_success) ImGui::TextColored(ImVec4(0.5f, 1, 0.5f, 1), "the stroke as aimed, without error, works");
-  else ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "the stroke as aimed, without error, misses");
+  if (r.nominal_success) coloured_wrapped(ImVec4(0.5f, 1, 0.5f, 1), "as aimed, without error: works");
+  else coloured_wrapped(ImVec4(1, 0.6f, 0.3f, 1), "as aimed, without error: misses");
   if (!ImGui::BeginTable("margin sources", 3, ImGuiTableFlags_SizingStretchProp)) return;
   ImGui::TableSetupColumn("error", ImGuiTableColumnFlags_WidthFixed);
   ImGui::TableSetupColumn("alone", ImGuiTableColumnFlags_WidthFixed);

@@ -37,7 +37,7 @@ void measured_section(Lab& lab) {
     if (lab.shot) hint("back to aiming (Undo) to fit");
   }
   readout("fit progress", v.fit.busy() ? v.fit.progress() : v.last ? 1.0 : 0.0);
-  if (!v.fit.error().empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", v.fit.error().c_str());
+  if (!v.fit.error().empty()) coloured_wrapped(ImVec4(1, 0.5f, 0.4f, 1), "%s", v.fit.error().c_str());
   if (!v.last || v.last->shots.empty()) return;
   const ShotFit& f = v.last->shots[0];
   ImGui::Text("fitted: %.3f m/s, aim %.2f deg, side %+.2f R, height %+.2f R", f.cue.speed, f.cue.aim_deg, f.cue.side,

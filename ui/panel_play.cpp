@@ -89,7 +89,7 @@ void playback_section(Lab& lab) {
     // The slider shows the time; while a contact is on screen it is to the microsecond, and this says why.
     if (lab.contact_on_screen()) ImGui::TextDisabled("a contact on screen: time to the microsecond");
     if (lab.shot->finished())
-      ImGui::TextColored(lab.shot->end() == ShotEnd::Rest ? ImVec4(0.6f, 0.9f, 0.6f, 1) : ImVec4(1, 0.7f, 0.3f, 1),
+      coloured_wrapped(lab.shot->end() == ShotEnd::Rest ? ImVec4(0.6f, 0.9f, 0.6f, 1) : ImVec4(1, 0.7f, 0.3f, 1),
                          "%s after %.2f s", end_text(*lab.shot), lab.shot->sim().time());
     if (lab.shot->end() == ShotEnd::SafetyLimit && lab.shot_over()) {
       if (ImGui::Button("Run on")) lab.run_on();
@@ -97,7 +97,7 @@ void playback_section(Lab& lab) {
       ImGui::TextDisabled("for another %.0f s", lab.settings.safety_limit);
     }
     if (lab.playing && lab.achieved_speed < 0.95)
-      ImGui::TextColored(ImVec4(1, 0.7f, 0.2f, 1), "physics behind: clock slowed to %.0f%% of the set speed",
+      coloured_wrapped(ImVec4(1, 0.7f, 0.2f, 1), "physics behind: clock slowed to %.0f%% of the set speed",
                          100 * lab.achieved_speed);
   }
   f.label("safety limit");

@@ -252,7 +252,8 @@ void diagnostics(const Lab& lab) {
     text_wrapped("rigid model: %ld collisions and changes of motion", s.steps);
     text_wrapped("last frame: %ld event(s), %.2f ms", lab.shot->last_steps(), lab.shot->last_wall() * 1e3);
     text_wrapped("%zu ball(s) moving", sim.island_balls().size());
-    if (sim.status() != Status::Ok) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "stopped: %s", status_name(sim.status()));
+    if (sim.status() != Status::Ok)
+      coloured_wrapped(ImVec4(1, 0.4f, 0.3f, 1), "stopped: %s", status_name(sim.status()));
     return;
   }
   text_wrapped("%s: %ld steps, %ld rejected, %ld rhs", method_name(sim.model().integrator.method), s.steps,
@@ -265,9 +266,9 @@ void diagnostics(const Lab& lab) {
   for (const auto& balls : islands) largest = std::max(largest, balls.size());
   text_wrapped("islands: %zu (the largest holds %zu ball%s)", islands.size(), largest, largest == 1 ? "" : "s");
   if (sim.status() == Status::StepLimit)
-    ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "STEP LIMIT HIT: raise max steps or loosen the model");
+    coloured_wrapped(ImVec4(1, 0.4f, 0.3f, 1), "STEP LIMIT HIT: raise max steps or loosen the model");
   else if (sim.status() != Status::Ok)
-    ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "stopped: %s", status_name(sim.status()));
+    coloured_wrapped(ImVec4(1, 0.4f, 0.3f, 1), "stopped: %s", status_name(sim.status()));
 }
 
 void step_plot(Lab& lab) {

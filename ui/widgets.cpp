@@ -167,12 +167,9 @@ void panel_width_grip(const char* name, const Rect& strip, float outer_x, PanelW
   w.width = std::clamp((reach + storage->GetFloat(kGrab)) / scale, kMinPanelWidth, std::max(widest, kMinPanelWidth));
 }
 
-void text_wrapped(const char* fmt, ...) {
-  char text[4096];
-  va_list args;
-  va_start(args, fmt);
-  std::vsnprintf(text, sizeof text, fmt, args);
-  va_end(args);
+namespace {
+// The lines of text_wrapped, for an already formatted text.
+void wrap_lines(const char* text) {
   ImGuiWindow* window = ImGui::GetCurrentWindow();
   const float wrap_x = std::max(window->DC.TextWrapPos, 0.0f);  // 0: the content region's edge
   const float width = std::max(ImGui::CalcWrapWidthForPos(ImGui::GetCursorScreenPos(), wrap_x), 1.0f);
@@ -205,6 +202,27 @@ void text_wrapped(const char* fmt, ...) {
   }
   ImGui::EndGroup();
 }
+}  // namespace
+
+void text_wrapped(const char* fmt, ...) {
+  char text[4096];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(text, sizeof text, fmt, args);
+  va_end(args);
+  wrap_lines(text);
+}
+
+void coloured_wrapped(const ImVec4& colour, const char* fmt, ...) {
+  char text[4096];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(text, sizeof text, fmt, args);
+  va_end(args);
+  ImGui::PushStyleColor(ImGuiCol_Text, colour);
+  wrap_lines(text);
+  ImGui::PopStyleColor();
+}
 
 void flat_arrow(ImDrawList* d, ImVec2 from, ImVec2 to, ImU32 color, float width) {
   const float dx = to.x - from.x, dy = to.y - from.y, len = std::hypot(dx, dy);
@@ -216,9 +234,7 @@ void flat_arrow(ImDrawList* d, ImVec2 from, ImVec2 to, ImU32 color, float width)
 }
 
 void hint(const std::string& text) {
-  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-  text_wrapped("%s", text.c_str());
-  ImGui::PopStyleColor();
+  coloured_wrapped(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled], "%s", text.c_str());
 }
 
 ImVec4 panel_background() {
