@@ -286,6 +286,7 @@ void Lab::undo() {
   HistoryStep previous = history.undo(scene, [this] { return current_file(); });
   if (shot && !previous.file) ghost = trails(shot->sim().time());
   take_step(std::move(previous));
+  if (what == kNextLabel) return back_before_next();
   shot.reset();
   playing = false;
   view_time = 0;
@@ -337,6 +338,7 @@ void Lab::redo() {
   take_step(history.redo(scene, [this] { return current_file(); }));
   say(MessageKind::Note, "redone: " + what);
   if (what == "shot") return launch();  // the shot runs again; the redo entries after it stay
+  if (shot && what == kNextLabel) ghost = trails(shot->sim().time());
   shot.reset();
   playing = false;
   view_time = 0;
@@ -362,11 +364,22 @@ void Lab::continue_from_rest() {
   next.balls = std::move(kept_balls);
   if (next.cue && scene_ball(next, next.cue->ball) < 0) next.cue.reset();  // the cue ball was pocketed
   ghost = trails(shot->sim().time());
+  history.seal();
+  history.record(kNextLabel, scene);  // undo shows this shot at its end again
   scene = std::move(next);
   shot.reset();
   playing = false;
   view_time = 0;
   scene_changed();
+}
+
+// Undoing Next: the shot that ended in the position Next started from is run again and shown at its end, paused, as
+// it was when Next was pressed (the trial's undo went straight back to aiming it).
+void Lab::back_before_next() {
+  start_shot(scene);
+  playing = false;
+  if (shot) seek(shot->safety_limit());
+  say(MessageKind::Note, "undone: Next (the shot is shown at its end again)");
 }
 
 void Lab::show(double t) {

@@ -103,6 +103,7 @@ class Lab {
   void undo();
   void redo();
   void continue_from_rest();  // the next shot starts where the balls stopped
+  static constexpr const char* kNextLabel = "Next";  // its undo entry's label
   void step(int direction);   // one display frame of simulated time, forward (+1) or back (-1), paused
   void seek(double t);        // pause at simulated time t (simulating up to it if needed)
   void run_on();              // a shot stopped at the safety limit runs on for as long again
@@ -164,6 +165,7 @@ class Lab {
   void show(double t);
   void start_shot(const Scene& start);
   void launch();  // the scene's shot starts playing; the last shot's paths stay as the ghost
+  void back_before_next();  // undoing Next: the shot before it, shown at its end
   void pause_on_events(double from, double to);
   void finish_playing();
 

@@ -361,6 +361,17 @@ def player(binary, root, display, work):
     rest2 = ball(s, "cue")["position"]
     moved = sum((a - b) ** 2 for a, b in zip(rest1, rest2)) ** 0.5
     check(moved > 0.02, f"more draw leaves the cue ball elsewhere ({moved * 100:.1f} cm away)")
+    on_bed = lambda s: [ball(s, "cue")["position"][k] for k in (0, 2)]  # Next lifts a ball off its sink onto the bed
+    app.key("n")  # Next: the next shot starts where the balls stopped; its undo shows this shot at its end again
+    s = app.state()
+    check(not s["has_shot"] and on_bed(s) == [rest2[0], rest2[2]], "N starts from where the cue ball stopped")
+    app.key("u")
+    s = app.state()
+    # The shot runs again for it, in other slices than the frames it played in: the same end within the tolerance.
+    again = sum((a - b) ** 2 for a, b in zip(ball(s, "cue")["position"], rest2)) ** 0.5
+    check(s["has_shot"] and s["shot_over"] and not s["playing"] and again < 1e-5,
+          f"U after N shows the shot at its end again (shown {s['has_shot']}, over {s['shot_over']}, playing "
+          f"{s['playing']}, the cue ball {again * 1e6:.1f} um from where N started; {s['undo_label']!r} left to undo)")
 
     app.click_widget(s, "Set up break")
     s = app.state()

@@ -535,6 +535,34 @@ TEST_F(LabTest, RedoingAShotKeepsTheStepsAfterIt) {
   EXPECT_TRUE(lab.history.can_redo()) << "and the way back is there again";
 }
 
+// Next starts from where the balls stopped; a player's undo after it goes back to that shot shown at its end (it went
+// straight back to aiming the shot, a step too far), the next undo to aiming it, and redo walks forward again.
+TEST_F(LabTest, UndoingNextShowsTheShotAtItsEnd) {
+  load("cut.json");
+  lab.shoot();
+  lab.seek(100);
+  ASSERT_TRUE(lab.shot_over());
+  const Vec3 rest = position(lab.shot->sim().state().x, 0);
+  lab.continue_from_rest();
+  ASSERT_FALSE(lab.shot);
+  EXPECT_NEAR(ball("cue").x, rest.x, 1e-9);
+  lab.undo();
+  ASSERT_TRUE(lab.shot) << "undo brings the shot back";
+  EXPECT_TRUE(lab.shot_over());
+  EXPECT_FALSE(lab.playing);
+  EXPECT_EQ(lab.view_time, lab.shot->sim().time());
+  EXPECT_NEAR(glm::length(position(lab.frame().state.x, 0) - rest), 0, 1e-9);
+  lab.undo();
+  EXPECT_FALSE(lab.shot);
+  EXPECT_NEAR(lab.scene.cue->aim * 180 / M_PI, -75.0, 1e-9);
+  EXPECT_NEAR(ball("cue").x, 0.6801793249039285, 1e-12);  // back to aiming the cut
+  lab.redo();
+  ASSERT_TRUE(lab.shot);
+  lab.redo();
+  EXPECT_FALSE(lab.shot);
+  EXPECT_NEAR(ball("cue").x, rest.x, 1e-9);
+}
+
 // A kept shot is named by its tip first, as a coach names it (the panel cuts long labels at the end).
 TEST_F(LabTest, KeptShotsAreNamedByTheirTipFirst) {
   load("stun.json");
