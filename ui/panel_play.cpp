@@ -1,6 +1,7 @@
 // The left panel (players and coaches, and the teacher's presets): scene, playback, aim, practice, balls and view;
 // the help panel; the message banner; the status line.
 #include <imgui.h>
+#include <imgui_internal.h>  // BringWindowToDisplayFront: the banner stays over the help window
 #include <imgui_stdlib.h>
 
 #include <algorithm>
@@ -304,11 +305,14 @@ void help_panel(bool* open) {
 
 void message_banner(Lab& lab, const Rect& view) {
   if (lab.message_kind == MessageKind::None || lab.message.empty()) return;
-  ImGui::SetNextWindowPos(ImVec2(view.x + view.w / 2, view.y + em(8)), ImGuiCond_Always, ImVec2(0.5f, 0));
+  // Below a title bar's height: a collapsed panel's title lies over the view's top corner.
+  ImGui::SetNextWindowPos(ImVec2(view.x + view.w / 2, view.y + ImGui::GetFrameHeight() + em(6)), ImGuiCond_Always,
+                          ImVec2(0.5f, 0));
   ImGui::SetNextWindowSizeConstraints(ImVec2(em(200), 0), ImVec2(std::max(view.w * 0.9f, em(200)), em(300)));
   ImGui::Begin("##message", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                          ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
   mark("banner");
+  ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());  // over the help window and the panels: it says why
   const bool problem = lab.message_kind == MessageKind::LoadError || lab.message_kind == MessageKind::EngineStop;
   ImGui::PushStyleColor(ImGuiCol_Text, problem ? ImVec4(1, 0.45f, 0.4f, 1)
                                                : lab.message_kind == MessageKind::Refused ? ImVec4(1, 0.8f, 0.4f, 1)

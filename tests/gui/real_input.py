@@ -910,6 +910,15 @@ def layout(binary, root, display, work):
         s2 = app.state()
         check(s2["view"]["w"] > view["w"] + 100 and all(inside(s2["view"], *c) for c in s2["table_corners"]),
               f"{size}: F3 collapses the inspector, the view widens ({view['w']:.0f} -> {s2['view']['w']:.0f} px)")
+        app.key("F3")
+        title = app.widget(app.state(), "panel Inspector")
+        app.click(title["x"] + 10, title["y"] + 8)  # its title's arrow: collapsed to the title over the view's corner
+        app.key("b")  # ball in hand: a note in the banner
+        s2 = app.state()
+        title, banner = app.widget(s2, "panel Inspector"), app.widget(s2, "banner")
+        apart = banner["y"] >= title["y"] + title["h"] or banner["x"] + banner["w"] <= title["x"]
+        check(title["h"] < 40 and apart, f"{size}: the banner leaves the collapsed inspector's title clear (title "
+              f"{title['x']:.0f},{title['y']:.0f} {title['w']:.0f}x{title['h']:.0f}, banner at y {banner['y']:.0f})")
         app.close()
 
 
