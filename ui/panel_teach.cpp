@@ -195,6 +195,25 @@ void momentum_diagram(const Lab& lab, const std::vector<std::pair<int, Vec3>>& m
                       "line.");
 }
 
+// The balls that take part in the shot: moving at its start, or moved by the last frame worked out or in the
+// predicted paths (which run ahead of a first playback). Their bars stay from the start, at zero until they are hit,
+// so that a class sees the momentum pass from ball to ball.
+std::vector<bool> balls_in_shot(const Lab& lab, const Model& m) {
+  if (!lab.shot) return {};
+  const State& start = lab.shot->frames().front().state;
+  const State& last = lab.shot->frames().back().state;
+  std::vector<bool> in(start.ball_count());
+  const auto predicted = lab.prediction();
+  for (int i = 0; i < start.ball_count(); ++i) {
+    in[i] = glm::length(ball_motion(m, start, i).momentum) > 1e-6 || last.in_play[i] != start.in_play[i] ||
+            glm::length(position(last.x, i) - position(start.x, i)) > 1e-6;
+    if (predicted && i < static_cast<int>(predicted->paths.size()))
+      for (const PathPoint& q : predicted->paths[i])
+        in[i] = in[i] || glm::length(q.position - position(start.x, i)) > 1e-6;
+  }
+  return in;
+}
+
 void momentum_bars(const Lab& lab) {
   const Frame& f = lab.frame();
   const Model& m = shown_model(lab);
@@ -213,16 +232,19 @@ void momentum_bars(const Lab& lab) {
     }
     scale = std::max(scale, glm::length(start_total));
   }
+  const std::vector<bool> in_shot = balls_in_shot(lab, m);
   for (int i = 0; i < f.state.ball_count(); ++i) {
     if (!f.state.in_play[i]) continue;
     const Vec3 p = ball_motion(m, f.state, i).momentum;
     total += p;
     scale = std::max(scale, glm::length(p));
     if (glm::length(p) > 1e-3 * scale) momenta.emplace_back(i, p);
-    if (bars.size() < 8 && (glm::length(p) > 1e-6 || i == lab.selected))
+    const bool part = i < static_cast<int>(in_shot.size()) && in_shot[i];
+    if (bars.size() < 8 && (glm::length(p) > 1e-6 || i == lab.selected || part))
       bars.push_back({lab.scene.balls[i].spec.id, glm::length(p), IM_COL32(80, 170, 255, 255)});
   }
   bars.push_back({"total", glm::length(total), kTotalColour});
+  readout("momentum bars", static_cast<double>(bars.size()));
   scale = std::max(scale, glm::length(total));
   auto shown = [](double v) { return std::abs(v) < 5e-4 ? 0.0 : v; };  // no "-0.000" at rest
   // One line where it fits, else the pair on a line of its own: wrapping breaks after a '.', inside a number.

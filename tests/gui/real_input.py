@@ -539,6 +539,8 @@ def cut_lesson(binary, root, display, work):
     s = app.state()
     start = s["view_time"]
     check(s["shot"]["contact_on_screen"], f"the impact: the balls touch (t = {start:.6f} s)")
+    bars = s["readouts"].get("momentum bars")
+    check(bars == 3, f"the momentum bars list the 1 ball still at rest beside the cue ball and the total ({bars} bars)")
     forces = [k for k in s["widgets"] if k.startswith("label ") and k.endswith("each way")]
     check(len(forces) == 1, f"the force between the balls is labelled as pushing both ({forces})")
     touching = 0
