@@ -57,54 +57,113 @@ std::string table_csv(const Lab& lab) {
   return out.str();
 }
 
-void ball_table(Lab& lab) {
-  const Frame& f = lab.frame();
-  const Model& m = shown_model(lab);
-  const float rows = std::min(f.state.ball_count(), 8) + 2.5f;  // the header and the horizontal scroll bar
+constexpr const char* kBallColumns[6] = {"ball", "state", "v (m/s)", "w (rad/s)", "KE (J)", "x, z (cm)"};
+
+// One ball's row of the table, as text: the cells of kBallColumns.
+struct BallRow {
+  std::string cells[6];
+  Motion motion = Motion::Stationary;
+  std::string speed_tip;  // the speed cell's tooltip ("" for none)
+};
+
+BallRow ball_row(const Lab& lab, const Model& m, const Frame& f, int i) {
+  BallRow r;
+  auto text = [](const char* fmt, double a, double b = 0) {
+    char out[96];
+    std::snprintf(out, sizeof out, fmt, a, b);
+    return std::string(out);
+  };
+  r.cells[0] = lab.scene.balls[i].spec.id;
+  r.motion = i < static_cast<int>(f.motion.size()) ? f.motion[i] : Motion::Stationary;
+  r.cells[1] = r.motion == Motion::Stationary ? "at rest" : motion_name(r.motion);  // short: the table fits
+  const double v = glm::length(velocity(f.state.x, i));  // under the rest speed the engine counts it stopped
+  if (v > 0 && v < m.options.rest_speed) {
+    // As wide as "0.000": "<.001", not "<0.001".
+    const std::string below = text("%g", m.options.rest_speed);
+    r.cells[2] = "<" + (below.rfind("0.", 0) == 0 ? below.substr(1) : below);
+    r.speed_tip = text("under the rest speed, %g m/s: the engine counts the ball stopped", m.options.rest_speed);
+  } else {
+    r.cells[2] = text("%.3f", v);
+  }
+  r.cells[3] = text("%.1f", glm::length(spin(f.state.x, i)));
+  const BallMotion b = ball_motion(m, f.state, i);
+  r.cells[4] = text("%.4f", b.translation + b.rotation);
+  const Vec3 p = position(f.state.x, i);
+  r.cells[5] = text("%.0f, %.0f", 100 * p.x, 100 * p.z);  // in cm, short (the CSV has it in full)
+  return r;
+}
+
+// The table of `columns` (indices into BallRow::cells; the first is the ball's name, a row selects its ball).
+void ball_rows(Lab& lab, const char* id, const std::vector<BallRow>& rows, const std::vector<int>& columns) {
+  const float shown = std::min(static_cast<float>(rows.size()), 8.0f) + 1.6f;  // and the header
   // Cells padded a little less than ImGui's default, so that the six columns fit a 1280 px window's inspector.
   ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(em(2), ImGui::GetStyle().CellPadding.y));
   constexpr ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX |
                                     ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
-  const bool open = ImGui::BeginTable("balls", 6, flags, ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * rows));
+  const bool open = ImGui::BeginTable(id, static_cast<int>(columns.size()), flags,
+                                      ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * shown));
   ImGui::PopStyleVar();
   if (!open) return;
   ImGui::TableSetupScrollFreeze(0, 1);
-  // The state next to the ball's name: with many balls in a narrow inspector the later columns scroll out of view.
-  for (const char* h : {"ball", "state", "v (m/s)", "w (rad/s)", "KE (J)", "x, z (cm)"}) ImGui::TableSetupColumn(h);
+  for (int c : columns) ImGui::TableSetupColumn(kBallColumns[c]);
   ImGui::TableHeadersRow();
-  for (int i = 0; i < f.state.ball_count(); ++i) {
-    const Vec3 p = position(f.state.x, i);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const BallRow& r = rows[i];
     ImGui::TableNextRow();
-    ImGui::TableNextColumn();
-    if (ImGui::Selectable(lab.scene.balls[i].spec.id.c_str(), lab.selected == i, ImGuiSelectableFlags_SpanAllColumns))
-      lab.selected = i;
-    ImGui::TableNextColumn();
-    const Motion mo = i < static_cast<int>(f.motion.size()) ? f.motion[i] : Motion::Stationary;
-    ImGui::PushStyleColor(ImGuiCol_Text, motion_color(mo));
-    ImGui::TextUnformatted(mo == Motion::Stationary ? "at rest" : motion_name(mo));  // short: the table fits
-    ImGui::PopStyleColor();
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", motion_meaning(mo));
-    ImGui::TableNextColumn();
-    const double v = glm::length(velocity(f.state.x, i));  // under the rest speed the engine counts it stopped
-    if (v > 0 && v < m.options.rest_speed) {
-      // As wide as "0.000": a wider cell widens the column and scrolls x, z out of a 1280 px window's inspector.
-      char below[32];
-      std::snprintf(below, sizeof below, "%g", m.options.rest_speed);
-      ImGui::Text("<%s", below[0] == '0' && below[1] == '.' ? below + 1 : below);
-      if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("under the rest speed, %g m/s: the engine counts the ball stopped", m.options.rest_speed);
-    } else {
-      ImGui::Text("%.3f", v);
+    for (int c : columns) {
+      ImGui::TableNextColumn();
+      if (c == 0) {
+        const int ball = static_cast<int>(i);
+        if (ImGui::Selectable(r.cells[0].c_str(), lab.selected == ball, ImGuiSelectableFlags_SpanAllColumns))
+          lab.selected = ball;
+      } else if (c == 1) {
+        ImGui::PushStyleColor(ImGuiCol_Text, motion_color(r.motion));
+        ImGui::TextUnformatted(r.cells[1].c_str());
+        ImGui::PopStyleColor();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", motion_meaning(r.motion));
+      } else {
+        ImGui::TextUnformatted(r.cells[c].c_str());
+        if (c == 2 && !r.speed_tip.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.speed_tip.c_str());
+      }
     }
-    ImGui::TableNextColumn();
-    ImGui::Text("%.1f", glm::length(spin(f.state.x, i)));
-    ImGui::TableNextColumn();
-    const BallMotion b = ball_motion(m, f.state, i);
-    ImGui::Text("%.4f", b.translation + b.rotation);
-    ImGui::TableNextColumn();
-    ImGui::Text("%.0f, %.0f", 100 * p.x, 100 * p.z);  // in cm, short: the table fits a 360 px inspector (CSV: in full)
   }
   ImGui::EndTable();
+}
+
+// The width (px) the table of `columns` needs to show every cell without scrolling sideways.
+float rows_width(const std::vector<BallRow>& rows, const std::vector<int>& columns) {
+  float width = 0;
+  for (int c : columns) {
+    float widest = ImGui::CalcTextSize(kBallColumns[c]).x;
+    for (const BallRow& r : rows) widest = std::max(widest, ImGui::CalcTextSize(r.cells[c].c_str()).x);
+    width += widest + 2 * em(2) + 1;  // the cell's padding and the border between columns
+  }
+  return width;
+}
+
+// Every ball at the time shown. Where the six columns do not fit (a narrow inspector, presentation mode's large
+// text) they go into as many tables as it takes, up to three, each led by the ball's name, instead of scrolling
+// sideways.
+void ball_table(Lab& lab) {
+  const Frame& f = lab.frame();
+  const Model& m = shown_model(lab);
+  std::vector<BallRow> rows;
+  for (int i = 0; i < f.state.ball_count(); ++i) rows.push_back(ball_row(lab, m, f, i));
+  const float room = ImGui::GetContentRegionAvail().x;
+  std::vector<std::vector<int>> tables{{0}};
+  for (int c = 1; c < 6; ++c) {
+    std::vector<int> wider = tables.back();
+    wider.push_back(c);
+    const bool last = tables.size() == 3;  // and no more: beyond that the third scrolls sideways
+    if (last || tables.back().size() == 1 || rows_width(rows, wider) <= room) tables.back() = std::move(wider);
+    else tables.push_back({0, c});
+  }
+  float overflow = 0;  // px the widest table scrolls sideways
+  for (const auto& t : tables) overflow = std::max(overflow, rows_width(rows, t) - room);
+  readout("ball tables", static_cast<double>(tables.size()));
+  readout("ball table overflow px", overflow);
+  for (size_t k = 0; k < tables.size(); ++k)
+    ball_rows(lab, k == 0 ? "balls" : ("balls " + std::to_string(k + 1)).c_str(), rows, tables[k]);
   if (ImGui::SmallButton("Export table (CSV)")) try {
       const std::string path = export_path(lab, "table", "csv");
       write_file_atomic(path, table_csv(lab));

@@ -510,9 +510,13 @@ def teacher(binary, root, display, work):
     time.sleep(0.6)
     check(app.state()["tab"] == "teaching", "and Teaching can still be chosen")
     # Presentation mode on a 1280 x 720 projector: larger text, and the energy bars' values still inside the panel.
-    normal = app.state()["readouts"]["font size"]
+    s = app.state()
+    normal, tables = s["readouts"]["font size"], s["readouts"]["ball tables"]
     app.key("F5")
     s = app.wait(lambda s: s["readouts"]["font size"] > normal, 10, "F5 turns presentation mode on")
+    check(tables == 1 and s["readouts"]["ball tables"] >= 2 and s["readouts"]["ball table overflow px"] <= 0,
+          f"the ball table, one at normal size, splits into {s['readouts']['ball tables']:.0f} rather than scroll "
+          f"sideways ({s['readouts']['ball table overflow px']:.0f} px over)")
     bars, panel = app.widget(s, "bars energy"), app.widget(s, "panel Inspector")
     check(s["readouts"]["font size"] >= 1.2 * normal, f"its text is larger ({normal:.1f} -> {s['readouts']['font size']:.1f} px)")
     check(bars["x"] + bars["w"] <= panel["x"] + panel["w"],
