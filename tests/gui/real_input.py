@@ -640,7 +640,8 @@ def developer(binary, root, display, work):
         app.click_widget(s, "ball_pocket")
         s = app.wait(lambda s: "restitution ball_pocket" in s["readouts"], 30, "the lining's probe is shown")
         e = s["readouts"]["restitution ball_pocket"]
-        check(0.25 < e < 0.45, f"the lining gives back {e:.3f} of a head-on hit")
+        # Hunt-Crossley's 0.3 at 1 m/s falls with speed: 0.16 at the probe's 2 m/s (docs/model.md#parameters).
+        check(0.1 < e < 0.25, f"the lining gives back {e:.3f} of a head-on hit at the probe's 2 m/s")
         before = s["readouts"]["contact_time ball_pocket"]
         header = app.widget(s, "ball_pocket")
         app.scroll(header["x"] + 100, header["y"] - 100, 10)  # the lining's section is the last one: bring it up
