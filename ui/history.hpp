@@ -29,6 +29,7 @@ struct HistoryStep {
   std::optional<SceneFile> file;  // set when the step crosses a file load: physics, path, loaded, bench go back too
   bool same_table = false;        // with `file`: only the position changed (a break set up over another one), so the
                                   // tuned physics and the camera stay
+  std::optional<std::optional<Vec3>> target;  // set for a practice target's step: the target then (none: no target)
 };
 
 class History {
@@ -40,6 +41,8 @@ class History {
   void seal() { open_merge_.clear(); }
   // Records the scene and file in use before another file was loaded over them.
   void record_load(const std::string& label, const Scene& before, SceneFile file, bool same_table = false);
+  // Records the practice target as it was before it was set, moved or cleared (the scene does not change).
+  void record_target(const std::string& label, const Scene& current, const std::optional<Vec3>& before);
 
   bool can_undo() const { return !undo_.empty(); }
   bool can_redo() const { return !redo_.empty(); }
@@ -48,16 +51,17 @@ class History {
   size_t size() const { return undo_.size(); }
 
   // The step to go back to; `current` (and, when the step crosses a load, what `current_file` gives: called only then,
-  // since it copies the workbench) is kept for the way back. Call only when can_undo() / can_redo().
+  // since it copies the workbench; for a target's step, `current_target`) is kept for the way back. Call only when
+  // can_undo() / can_redo().
   using FileOf = std::function<SceneFile()>;
-  HistoryStep undo(const Scene& current, const FileOf& current_file);
-  HistoryStep redo(const Scene& current, const FileOf& current_file);
+  HistoryStep undo(const Scene& current, const FileOf& current_file, const std::optional<Vec3>& current_target = {});
+  HistoryStep redo(const Scene& current, const FileOf& current_file, const std::optional<Vec3>& current_target = {});
   void clear();
 
  private:
   void push(HistoryStep step);
   static HistoryStep take(std::vector<HistoryStep>& from, std::vector<HistoryStep>& to, const Scene& current,
-                          const FileOf& current_file);
+                          const FileOf& current_file, const std::optional<Vec3>& current_target);
   std::vector<HistoryStep> undo_, redo_;
   std::string open_merge_;
   static constexpr size_t kLimit = 200;  // entries kept; the oldest go first

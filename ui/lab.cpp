@@ -276,14 +276,18 @@ void Lab::replay() {
 void Lab::undo() {
   if (in_hand) {  // putting the ball back where it was picked up
     in_hand = false;
-    if (history.can_undo()) take_step(history.undo(scene, [this] { return current_file(); }));
+    if (history.can_undo()) take_step(history.undo(scene, [this] { return current_file(); }, target));
     say(MessageKind::Note, "the cue ball is back where it was picked up");  // not "click to put it down" any more
     scene_changed();
     return;
   }
   if (!history.can_undo()) return say(MessageKind::Note, "nothing to undo");
   const std::string what = history.undo_label();
-  HistoryStep previous = history.undo(scene, [this] { return current_file(); });
+  HistoryStep previous = history.undo(scene, [this] { return current_file(); }, target);
+  if (previous.target) {  // only the practice target moves: the shot on screen stays
+    take_step(std::move(previous));
+    return say(MessageKind::Note, "undone: " + what);
+  }
   if (shot && !previous.file) ghost = trails(shot->sim().time());
   take_step(std::move(previous));
   if (what == kNextLabel) return back_before_next();
@@ -297,6 +301,7 @@ void Lab::undo() {
 
 // Undo and redo restore positions and aim; tuned physics stays (Reset in Tuning) unless the step crosses a file load.
 void Lab::take_step(HistoryStep step) {
+  if (step.target) target = *step.target;
   if (step.file) {
     scene_path = std::move(step.file->path);
     loaded = std::move(step.file->loaded);
@@ -335,8 +340,11 @@ void Lab::restore(Workbench bench) {
 void Lab::redo() {
   if (!history.can_redo()) return say(MessageKind::Note, "nothing to redo");
   const std::string what = history.redo_label();
-  take_step(history.redo(scene, [this] { return current_file(); }));
+  HistoryStep next = history.redo(scene, [this] { return current_file(); }, target);
+  const bool target_only = next.target.has_value();
+  take_step(std::move(next));
   say(MessageKind::Note, "redone: " + what);
+  if (target_only) return;  // the shot on screen stays
   if (what == "shot") return launch();  // the shot runs again; the redo entries after it stay
   if (shot && what == kNextLabel) ghost = trails(shot->sim().time());
   shot.reset();

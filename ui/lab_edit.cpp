@@ -134,7 +134,14 @@ void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step, int f
 void Lab::set_target(const Vec3& at) {
   if (scene.table && (std::abs(at.x) > scene.table->length / 2 || std::abs(at.z) > scene.table->width / 2))
     return say(MessageKind::Refused, "the target goes on the cloth, inside the cushions");
+  history.record_target(target ? "move target" : "set target", scene, target);
   target = Vec3{at.x, 0, at.z};
+}
+
+void Lab::clear_target() {
+  if (!target) return;
+  history.record_target("clear target", scene, target);
+  target.reset();
 }
 
 CueStrike turned(const CueStrike& cue, double degrees) {

@@ -30,7 +30,7 @@ void practice_section(Lab& lab) {
       ImGui::TextColored(*miss <= lab.target_radius ? ImVec4(0.5f, 1, 0.5f, 1) : ImVec4(1, 0.7f, 0.3f, 1),
                          "%s: %.0f mm from the target%s", lab.shot ? "the cue ball stopped" : "predicted",
                          *miss * 1e3, *miss <= lab.target_radius ? " (inside)" : "");
-    if (ImGui::SmallButton("clear target")) lab.target.reset();
+    if (ImGui::SmallButton("clear target")) lab.clear_target();
   }
   ImGui::Separator();
   if (ImGui::Button("Keep this shot (K)")) lab.keep_shot();

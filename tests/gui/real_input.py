@@ -333,6 +333,11 @@ def player(binary, root, display, work):
         s2 = app.state()
         check(s2.get("target") == s.get("target") and "on the cloth" in s2["message"],
               f"a click past the cushions moves no target ({s2['message']})")
+    app.key("u")
+    s2 = app.state()
+    check("target" not in s2 and s2["redo_label"] == "set target", "U takes the target back")
+    app.key("ctrl+y")
+    check(app.state().get("target") == s.get("target"), "Ctrl+Y puts it back")
     app.click_widget(app.state(), "tool Aim")
     check(app.state()["tool"] == "aim", "the Aim button brings the Aim tool back")
 

@@ -535,6 +535,40 @@ TEST_F(LabTest, RedoingAShotKeepsTheStepsAfterIt) {
   EXPECT_TRUE(lab.history.can_redo()) << "and the way back is there again";
 }
 
+// Setting, moving and clearing the practice target are undo steps, between the edits and shots around them, and
+// undoing one leaves the shot on screen (a player trial found a target no undo could take back).
+TEST_F(LabTest, TheTargetIsAnUndoStep) {
+  load("cut.json");
+  lab.set_target({0.5, 0, 0.2});
+  lab.nudge_aim(1.0);
+  lab.set_target({-0.5, 0, 0.1});
+  lab.shoot();
+  lab.seek(1.0);
+  lab.clear_target();
+  EXPECT_FALSE(lab.target);
+  lab.undo();
+  ASSERT_TRUE(lab.target);
+  EXPECT_EQ(*lab.target, Vec3(-0.5, 0, 0.1));
+  EXPECT_TRUE(lab.shot) << "the shot stays on screen";
+  EXPECT_EQ(lab.message, "undone: clear target");
+  lab.undo();  // the shot
+  EXPECT_FALSE(lab.shot);
+  lab.undo();  // the move
+  EXPECT_EQ(*lab.target, Vec3(0.5, 0, 0.2));
+  EXPECT_NEAR(lab.scene.cue->aim * 180 / M_PI, -74.0, 1e-9);
+  lab.undo();  // the aim
+  lab.undo();  // the first target
+  EXPECT_FALSE(lab.target);
+  lab.redo();
+  ASSERT_TRUE(lab.target);
+  EXPECT_EQ(*lab.target, Vec3(0.5, 0, 0.2));
+  lab.redo();
+  lab.redo();
+  EXPECT_EQ(*lab.target, Vec3(-0.5, 0, 0.1));
+  lab.set_target({3.0, 0, 0});  // off the cloth: refused, no step
+  EXPECT_EQ(lab.history.undo_label(), "move target");
+}
+
 // Next starts from where the balls stopped; a player's undo after it goes back to that shot shown at its end (it went
 // straight back to aiming the shot, a step too far), the next undo to aiming it, and redo walks forward again.
 TEST_F(LabTest, UndoingNextShowsTheShotAtItsEnd) {
