@@ -272,9 +272,11 @@ bool left_panel(Lab& lab, Camera& camera, const Layout& layout) {
 }
 
 void help_panel(bool* open) {
-  if (!*open) return;
+  static int frames_open = 0;  // centred over its first frames: the first one's size is not the table's yet
+  if (!*open) return void(frames_open = 0);
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y / 2), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y / 2), frames_open++ < 3 ? ImGuiCond_Always : ImGuiCond_Once,
+                          ImVec2(0.5f, 0.5f));
   ImGui::Begin("Help", open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
   static const char* rows[][2] = {
       {"Left click cloth / drag", "aim the cue there (Aim tool)"}, {"Left click a ball", "aim at its centre"},
