@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <string>
 
 #include "ui/framing.hpp"
 #include "ui/panels.hpp"
@@ -103,7 +105,13 @@ void view_section(Lab& lab, Camera& camera) {
   ImGui::SetNextItemWidth(-1);
   static char dir[512];
   snprintf(dir, sizeof dir, "%s", lab.settings.export_dir.c_str());
-  if (ImGui::InputTextWithHint("##exportdir", "(the current folder)", dir, sizeof dir)) lab.settings.export_dir = dir;
+  // Empty: the folder the program was started in, named in full so that a teacher knows where the files go.
+  static const std::string here = [] {
+    std::error_code ec;
+    const std::string cwd = std::filesystem::current_path(ec).string();
+    return "(" + (cwd.empty() ? std::string("the current folder") : cwd) + ")";
+  }();
+  if (ImGui::InputTextWithHint("##exportdir", here.c_str(), dir, sizeof dir)) lab.settings.export_dir = dir;
 }
 
 }  // namespace shotlab
