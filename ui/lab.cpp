@@ -381,13 +381,20 @@ void Lab::continue_from_rest() {
   scene_changed();
 }
 
-// Undoing Next: the shot that ended in the position Next started from is run again and shown at its end, paused, as
-// it was when Next was pressed (the trial's undo went straight back to aiming it).
+// Undoing Next: the shot that ended in the position Next started from is run again (with the physics as tuned now)
+// and shown at its end, paused, as it was when Next was pressed (the trial's undo went straight back to aiming it).
+// Next needs a shot at rest, but it may have been run on past the safety limit: so is the rerun, a few times at most.
 void Lab::back_before_next() {
+  scene_changed();  // the predicted paths are the shot's again, not the position after it
   start_shot(scene);
   playing = false;
-  if (shot) seek(shot->safety_limit());
-  say(MessageKind::Note, "undone: Next (the shot is shown at its end again)");
+  for (int k = 0; shot && k < 8; ++k) {
+    seek(shot->safety_limit());
+    if (shot->end() != ShotEnd::SafetyLimit) break;
+    shot->extend_limit(settings.safety_limit);
+  }
+  say(MessageKind::Note, shot && shot->end() == ShotEnd::Rest ? "undone: Next (the shot is shown at its end again)"
+                                                               : "undone: Next (the shot, as far as it ran again)");
 }
 
 void Lab::show(double t) {

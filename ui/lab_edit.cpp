@@ -12,6 +12,8 @@ namespace shotlab {
 namespace {
 constexpr double kMaxCueSpeed = 15.0;  // m/s
 constexpr double kMinCueSpeed = 0.05;  // m/s
+// A target change while the cue ball is in hand: the next undo (Esc) is the pick-up's.
+constexpr const char* kPutDownFirst = "the cue ball is in hand: a click puts it down (Esc puts it back), then the target";
 
 std::string deg(double rad) {
   char text[32];
@@ -132,6 +134,7 @@ void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step, int f
 }
 
 void Lab::set_target(const Vec3& at) {
+  if (in_hand) return say(MessageKind::Refused, kPutDownFirst);  // its undo is the pick-up's
   if (scene.table && (std::abs(at.x) > scene.table->length / 2 || std::abs(at.z) > scene.table->width / 2))
     return say(MessageKind::Refused, "the target goes on the cloth, inside the cushions");
   history.record_target(target ? "move target" : "set target", scene, target);
@@ -140,6 +143,7 @@ void Lab::set_target(const Vec3& at) {
 
 void Lab::clear_target() {
   if (!target) return;
+  if (in_hand) return say(MessageKind::Refused, kPutDownFirst);
   history.record_target("clear target", scene, target);
   target.reset();
 }
@@ -278,8 +282,7 @@ void Lab::setup_break() {
   Scene s = break_scene(scene);
   s.model = scene.model;
   scene = std::move(s);
-  selected = 0;
-  target.reset();
+  selected = 0;  // the target stays over a break (where the cue ball should end); a fresh set-up cleared it above
   tool = Tool::Aim;  // a click on the apex aims there (the Target tool left on moved the target to it)
   scene_changed();
   pick_up_cue_ball();

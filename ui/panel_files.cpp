@@ -69,11 +69,8 @@ void browser_popup(Lab& lab, std::string& dir) {
   }
   ImGui::SameLine();
   if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
-  if (lab.message_kind == MessageKind::LoadError) {  // wrapped: a load error names the whole path
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.4f, 1));
-    text_wrapped("%s", lab.message.c_str());
-    ImGui::PopStyleColor();
-  }
+  if (lab.message_kind == MessageKind::LoadError)  // wrapped: a load error names the whole path
+    coloured_wrapped(ImVec4(1, 0.6f, 0.4f, 1), "%s", lab.message.c_str());
   text_wrapped("%s", dir.c_str());
   if (ImGui::Button("Up")) dir = fs::path(dir).parent_path().string();
   ImGui::SameLine();

@@ -314,7 +314,8 @@ void message_banner(Lab& lab, const Rect& view) {
   ImGui::Begin("##message", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                          ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
   mark("banner");
-  ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());  // over the help window and the panels: it says why
+  // Over the help window and the panels (it says why), but not over an open dialog or list, which would lose clicks.
+  if (!ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
   const bool problem = lab.message_kind == MessageKind::LoadError || lab.message_kind == MessageKind::EngineStop;
   ImGui::PushStyleColor(ImGuiCol_Text, problem ? ImVec4(1, 0.45f, 0.4f, 1)
                                                : lab.message_kind == MessageKind::Refused ? ImVec4(1, 0.8f, 0.4f, 1)

@@ -94,8 +94,11 @@ BallRow ball_row(const Lab& lab, const Model& m, const Frame& f, int i) {
 }
 
 // The table of `columns` (indices into BallRow::cells; the first is the ball's name, a row selects its ball).
-void ball_rows(Lab& lab, const char* id, const std::vector<BallRow>& rows, const std::vector<int>& columns) {
-  const float shown = std::min(static_cast<float>(rows.size()), 8.0f) + 1.6f;  // and the header
+// Returns how far (px) it scrolls sideways, as ImGui laid it out.
+float ball_rows(Lab& lab, const char* id, const std::vector<BallRow>& rows, const std::vector<int>& columns,
+                bool scrolls) {
+  // At most 8 rows, the header, and the sideways scroll bar when it has one.
+  const float shown = std::min(static_cast<float>(rows.size()), 8.0f) + (scrolls ? 2.5f : 1.6f);
   // Cells padded a little less than ImGui's default, so that the six columns fit a 1280 px window's inspector.
   ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(em(2), ImGui::GetStyle().CellPadding.y));
   constexpr ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX |
@@ -103,7 +106,7 @@ void ball_rows(Lab& lab, const char* id, const std::vector<BallRow>& rows, const
   const bool open = ImGui::BeginTable(id, static_cast<int>(columns.size()), flags,
                                       ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * shown));
   ImGui::PopStyleVar();
-  if (!open) return;
+  if (!open) return 0;
   ImGui::TableSetupScrollFreeze(0, 1);
   for (int c : columns) ImGui::TableSetupColumn(kBallColumns[c]);
   ImGui::TableHeadersRow();
@@ -127,12 +130,15 @@ void ball_rows(Lab& lab, const char* id, const std::vector<BallRow>& rows, const
       }
     }
   }
+  const float overflow = ImGui::GetScrollMaxX();  // the table's own scrolling region
   ImGui::EndTable();
+  return overflow;
 }
 
-// The width (px) the table of `columns` needs to show every cell without scrolling sideways.
+// The width (px) the table of `columns` needs to show every cell without scrolling sideways: more than 8 rows bring
+// a vertical scroll bar.
 float rows_width(const std::vector<BallRow>& rows, const std::vector<int>& columns) {
-  float width = 0;
+  float width = rows.size() > 8 ? ImGui::GetStyle().ScrollbarSize : 0;
   for (int c : columns) {
     float widest = ImGui::CalcTextSize(kBallColumns[c]).x;
     for (const BallRow& r : rows) widest = std::max(widest, ImGui::CalcTextSize(r.cells[c].c_str()).x);
@@ -159,11 +165,12 @@ void ball_table(Lab& lab) {
     else tables.push_back({0, c});
   }
   float overflow = 0;  // px the widest table scrolls sideways
-  for (const auto& t : tables) overflow = std::max(overflow, rows_width(rows, t) - room);
+  for (size_t k = 0; k < tables.size(); ++k) {
+    const std::string id = k == 0 ? "balls" : "balls " + std::to_string(k + 1);
+    overflow = std::max(overflow, ball_rows(lab, id.c_str(), rows, tables[k], rows_width(rows, tables[k]) > room));
+  }
   readout("ball tables", static_cast<double>(tables.size()));
   readout("ball table overflow px", overflow);
-  for (size_t k = 0; k < tables.size(); ++k)
-    ball_rows(lab, k == 0 ? "balls" : ("balls " + std::to_string(k + 1)).c_str(), rows, tables[k]);
   if (ImGui::SmallButton("Export table (CSV)")) try {
       const std::string path = export_path(lab, "table", "csv");
       write_file_atomic(path, table_csv(lab));
@@ -254,15 +261,17 @@ void momentum_diagram(const Lab& lab, const std::vector<std::pair<int, Vec3>>& m
                       "line.");
 }
 
-// The balls that take part in the shot: moving at its start, or moved by the last frame worked out or in the
-// predicted paths (which run ahead of a first playback). Their bars stay from the start, at zero until they are hit,
-// so that a class sees the momentum pass from ball to ball.
+// The balls that take part in the shot: moving at its start, or moved by the last frame worked out or, while it is
+// still worked out, in the predicted paths (which run ahead of a first playback). With at most 8 balls on the table
+// (a bar each) their bars stay from the start, at zero until they are hit, so that a class sees the momentum pass from
+// ball to ball; with more (a break) only the moving balls have bars, as the resting ones would crowd them out.
 std::vector<bool> balls_in_shot(const Lab& lab, const Model& m) {
   if (!lab.shot) return {};
   const State& start = lab.shot->frames().front().state;
   const State& last = lab.shot->frames().back().state;
+  if (std::count_if(start.in_play.begin(), start.in_play.end(), [](uint8_t p) { return p != 0; }) > 8) return {};
   std::vector<bool> in(start.ball_count());
-  const auto predicted = lab.prediction();
+  const auto predicted = lab.shot->finished() ? std::nullopt : lab.prediction();
   for (int i = 0; i < start.ball_count(); ++i) {
     in[i] = glm::length(ball_motion(m, start, i).momentum) > 1e-6 || last.in_play[i] != start.in_play[i] ||
             glm::length(position(last.x, i) - position(start.x, i)) > 1e-6;

@@ -381,6 +381,9 @@ def player(binary, root, display, work):
     app.click_widget(s, "Set up break")
     s = app.state()
     check(len(s["balls"]) == 16 and s["in_hand"], "Set up break racks 15 balls and gives ball in hand")
+    over = s["readouts"].get("ball table overflow px")
+    check(over is not None and over <= 0, f"the 16 balls' table does not scroll sideways ({over} px; "
+          f"{s['readouts'].get('ball tables'):.0f} table(s))")
     cx, cy = ball(s, "cue")["screen"]  # on the head spot: put it down a little towards the head rail (left)
     app.move(cx - 40, cy)
     app.move(cx - 30, cy)

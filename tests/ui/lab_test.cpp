@@ -567,6 +567,27 @@ TEST_F(LabTest, TheTargetIsAnUndoStep) {
   EXPECT_EQ(*lab.target, Vec3(-0.5, 0, 0.1));
   lab.set_target({3.0, 0, 0});  // off the cloth: refused, no step
   EXPECT_EQ(lab.history.undo_label(), "move target");
+  // With the ball in hand, Esc (undo) must take back the pick-up: target changes wait until it is down.
+  lab.pick_up_cue_ball();
+  lab.clear_target();
+  lab.set_target({0.2, 0, 0.2});
+  EXPECT_EQ(*lab.target, Vec3(-0.5, 0, 0.1));
+  EXPECT_EQ(lab.message_kind, MessageKind::Refused);
+  lab.undo();
+  EXPECT_FALSE(lab.in_hand);
+  EXPECT_EQ(lab.history.undo_label(), "move target");
+  // A break set up over a break keeps the target (where the cue ball should end); one over another position does not,
+  // and its undo brings it back.
+  lab.setup_break();
+  lab.place_cue_ball(ball("cue"), true);
+  EXPECT_FALSE(lab.target);
+  lab.set_target({-0.8, 0, 0.3});
+  lab.setup_break();
+  ASSERT_TRUE(lab.target);
+  EXPECT_EQ(*lab.target, Vec3(-0.8, 0, 0.3));
+  for (int k = 0; k < 8 && lab.history.undo_label() != "move target"; ++k) lab.undo();  // back before the first break
+  ASSERT_TRUE(lab.target);
+  EXPECT_EQ(*lab.target, Vec3(-0.5, 0, 0.1));
 }
 
 // Next starts from where the balls stopped; a player's undo after it goes back to that shot shown at its end (it went
