@@ -1,8 +1,9 @@
 // One undo stack for everything the user does to the table: ball moves, adds and removals, aim and cue changes, a
-// break set up, the practice target, shots and Next. Each entry is the scene as it was before the action, with a label for the menu. A run of
-// edits of the same kind (dragging the aim, nudging the speed) merges into one entry, so that one undo takes back
-// the whole gesture. Tuned physics is not part of it (the tuning panel has its own reset), except across a file load:
-// undoing a load brings back the whole scene before it, its file, its tuned physics and the lab's workbench.
+// break set up, the practice target, shots and Next. Each entry is the scene as it was before the action, with a
+// label for the menu. A run of edits of the same kind (dragging the aim, nudging the speed) merges into one entry, so
+// that one undo takes back the whole gesture. Tuned physics is not part of it (the tuning panel has its own reset),
+// except across a file load: undoing a load brings back the whole scene before it, its file, its tuned physics and
+// the lab's workbench.
 #pragma once
 #include <functional>
 #include <optional>

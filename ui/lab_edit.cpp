@@ -13,7 +13,8 @@ namespace {
 constexpr double kMaxCueSpeed = 15.0;  // m/s
 constexpr double kMinCueSpeed = 0.05;  // m/s
 // A target change while the cue ball is in hand: the next undo (Esc) is the pick-up's.
-constexpr const char* kPutDownFirst = "the cue ball is in hand: a click puts it down (Esc puts it back), then the target";
+constexpr const char* kPutDownFirst =
+    "the cue ball is in hand: a click puts it down (Esc puts it back), then the target";
 
 std::string deg(double rad) {
   char text[32];
