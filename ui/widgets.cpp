@@ -287,25 +287,34 @@ void bar_chart(const char* id, const std::vector<Bar>& shown, double scale, cons
   }
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float width = ImGui::GetContentRegionAvail().x;
+  // Values in a column of their own where that leaves the bars at least half the width; else (a narrow panel,
+  // presentation mode's large text) each bar goes across the whole width under its label and value.
+  const bool column = width - label_w - value_w - em(8) >= 0.5f * width;
+  const float row = column ? line : 2 * line, height = row * bars.size();
   const ImVec2 o = ImGui::GetCursorScreenPos();
-  ImGui::InvisibleButton(id, ImVec2(std::max(width, 1.0f), line * bars.size() + 2));
+  ImGui::InvisibleButton(id, ImVec2(std::max(width, 1.0f), height + 2));
   ImDrawList* d = ImGui::GetWindowDrawList();
-  d->PushClipRect(o, ImVec2(o.x + width, o.y + line * bars.size() + 2), true);
-  const float x0 = o.x + label_w, span = std::max(width - label_w - value_w - em(8), 10.0f);
-  const float zero = signed_values ? x0 + span / 2 : x0;
-  const float unit_px = static_cast<float>((signed_values ? span / 2 : span) / scale);
+  d->PushClipRect(o, ImVec2(o.x + width, o.y + height + 2), true);
+  const float x0 = column ? o.x + label_w : o.x + em(2);
+  const float span = std::max(column ? width - label_w - value_w - em(8) : width - em(4), 10.0f);
+  const float zero = signed_values ? x0 + span / 2 : x0, reach = signed_values ? span / 2 : span;
+  const float unit_px = static_cast<float>(reach / scale);
+  const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text), axis = IM_COL32(160, 160, 160, 255);
   for (size_t k = 0; k < bars.size(); ++k) {
     const Bar& b = bars[k];
-    const float y = o.y + k * line;
-    d->AddText({o.x, y}, ImGui::GetColorU32(ImGuiCol_Text), b.label.c_str());
-    const float reach = signed_values ? span / 2 : span;  // never into the values' column
-    const float len = std::clamp(static_cast<float>(b.value) * unit_px, -reach, reach);
-    d->AddRectFilled({std::min(zero, zero + len), y + 2}, {std::max(zero, zero + len), y + line - 3}, b.colour);
-    d->AddText({x0 + span + em(6), y}, ImGui::GetColorU32(ImGuiCol_Text), values[k].c_str());
+    const float y = o.y + k * row, bar_y = column ? y : y + line;
+    d->AddText({o.x, y}, text, b.label.c_str());
+    const float len = std::clamp(static_cast<float>(b.value) * unit_px, -reach, reach);  // never into the values
+    d->AddRectFilled({std::min(zero, zero + len), bar_y + 2}, {std::max(zero, zero + len), bar_y + line - 3}, b.colour);
+    const float vx = column ? x0 + span + em(6) : o.x + width - ImGui::CalcTextSize(values[k].c_str()).x;
+    d->AddText({vx, y}, text, values[k].c_str());
+    if (!column) d->AddLine({zero, bar_y}, {zero, bar_y + line}, axis);
   }
-  d->AddLine({zero, o.y}, {zero, o.y + line * bars.size()}, IM_COL32(160, 160, 160, 255));
+  if (column) d->AddLine({zero, o.y}, {zero, o.y + height}, axis);
   d->PopClipRect();
-  mark_rect(std::string("bars ") + id, Rect{o.x, o.y, label_w + span + em(6) + value_w, line * bars.size()});
+  const float drawn = column ? label_w + span + em(6) + value_w : width;
+  mark_rect(std::string("bars ") + id, Rect{o.x, o.y, drawn, height});
+  readout(std::string("bars ") + id + " share", span / std::max(width, 1.0f));  // of the width the bars may take
 }
 
 void mark(const std::string& name) {

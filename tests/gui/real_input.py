@@ -529,6 +529,8 @@ def teacher(binary, root, display, work):
     check(s["readouts"]["font size"] >= 1.2 * normal, f"its text is larger ({normal:.1f} -> {s['readouts']['font size']:.1f} px)")
     check(bars["x"] + bars["w"] <= panel["x"] + panel["w"],
           f"the energy values end inside the inspector ({bars['x'] + bars['w']:.0f} <= {panel['x'] + panel['w']:.0f} px)")
+    share = s["readouts"].get("bars energy share", 0)
+    check(share >= 0.5, f"the energy bars keep {share:.0%} of the inspector's width (a trial saw slivers of 30 px)")
     app.key("F5")
     app.close()
     cut_lesson(binary, root, display, work)
