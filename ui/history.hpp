@@ -58,6 +58,7 @@ class History {
   HistoryStep undo(const Scene& current, const FileOf& current_file, const std::optional<Vec3>& current_target = {});
   HistoryStep redo(const Scene& current, const FileOf& current_file, const std::optional<Vec3>& current_target = {});
   void clear();
+  void drop_redo() { if (!redo_.empty()) redo_.pop_back(); }  // the last undo was a cancel, nothing to redo
 
  private:
   void push(HistoryStep step);

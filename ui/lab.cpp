@@ -276,7 +276,10 @@ void Lab::replay() {
 void Lab::undo() {
   if (in_hand) {  // putting the ball back where it was picked up
     in_hand = false;
-    if (history.can_undo()) take_step(history.undo(scene, [this] { return current_file(); }, target));
+    if (history.can_undo()) {
+      take_step(history.undo(scene, [this] { return current_file(); }, target));
+      history.drop_redo();  // a cancelled pick-up: Redo would only put the ball where the pointer left it
+    }
     say(MessageKind::Note, "the cue ball is back where it was picked up");  // not "click to put it down" any more
     scene_changed();
     return;

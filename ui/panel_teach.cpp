@@ -64,6 +64,7 @@ struct BallRow {
   std::string cells[6];
   Motion motion = Motion::Stationary;
   std::string speed_tip;  // the speed cell's tooltip ("" for none)
+  std::string rod_tip;    // the state's tooltip for a ball on a rod ("" for the motion's meaning)
 };
 
 BallRow ball_row(const Lab& lab, const Model& m, const Frame& f, int i) {
@@ -77,6 +78,12 @@ BallRow ball_row(const Lab& lab, const Model& m, const Frame& f, int i) {
   r.motion = i < static_cast<int>(f.motion.size()) ? f.motion[i] : Motion::Stationary;
   r.cells[1] = r.motion == Motion::Stationary ? "at rest" : motion_name(r.motion);  // short: the table fits
   const double v = glm::length(velocity(f.state.x, i));  // under the rest speed the engine counts it stopped
+  // A pendulum's ball (a cradle's) is off any cloth but not flying: it hangs or swings on its rod.
+  const bool on_rod = std::any_of(m.rods.begin(), m.rods.end(), [i](const Rod& rod) { return rod.ball == i; });
+  if (on_rod && r.motion == Motion::Airborne) {
+    r.cells[1] = v < m.options.rest_speed ? "hanging" : "swinging";
+    r.rod_tip = v < m.options.rest_speed ? "hanging still on its rod" : "swinging on its rod, off any cloth";
+  }
   if (v > 0 && v < m.options.rest_speed) {
     // As wide as "0.000": "<.001", not "<0.001".
     const std::string below = text("%g", m.options.rest_speed);
@@ -123,7 +130,8 @@ float ball_rows(Lab& lab, const char* id, const std::vector<BallRow>& rows, cons
         ImGui::PushStyleColor(ImGuiCol_Text, motion_color(r.motion));
         ImGui::TextUnformatted(r.cells[1].c_str());
         ImGui::PopStyleColor();
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", motion_meaning(r.motion));
+        if (ImGui::IsItemHovered())
+          ImGui::SetTooltip("%s", r.rod_tip.empty() ? motion_meaning(r.motion) : r.rod_tip.c_str());
       } else {
         ImGui::TextUnformatted(r.cells[c].c_str());
         if (c == 2 && !r.speed_tip.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.speed_tip.c_str());

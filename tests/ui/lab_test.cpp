@@ -576,6 +576,7 @@ TEST_F(LabTest, TheTargetIsAnUndoStep) {
   lab.undo();
   EXPECT_FALSE(lab.in_hand);
   EXPECT_EQ(lab.history.undo_label(), "move target");
+  EXPECT_FALSE(lab.history.can_redo()) << "a cancelled pick-up is nothing to redo";
   // A break set up over a break keeps the target (where the cue ball should end); one over another position does not,
   // and its undo brings it back.
   lab.setup_break();
