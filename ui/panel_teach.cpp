@@ -290,6 +290,13 @@ std::vector<bool> balls_in_shot(const Lab& lab, const Model& m) {
   return in;
 }
 
+// A ball's momentum along the table (kg m/s): the bars, the total and the diagram are all seen from above, as the
+// heading's "along x, z" says (a cradle's swinging balls also move up and down).
+Vec3 level_momentum(const Model& m, const State& s, int i) {
+  const Vec3 p = ball_motion(m, s, i).momentum;
+  return {p.x, 0.0, p.z};
+}
+
 void momentum_bars(const Lab& lab) {
   const Frame& f = lab.frame();
   const Model& m = shown_model(lab);
@@ -302,7 +309,7 @@ void momentum_bars(const Lab& lab) {
   if (lab.shot) {
     const State& start = lab.shot->frames().front().state;
     for (int i = 0; i < start.ball_count(); ++i) {
-      const Vec3 p = ball_motion(m, start, i).momentum;
+      const Vec3 p = level_momentum(m, start, i);
       start_total += p;
       scale = std::max(scale, glm::length(p));
     }
@@ -311,7 +318,7 @@ void momentum_bars(const Lab& lab) {
   const std::vector<bool> in_shot = balls_in_shot(lab, m);
   for (int i = 0; i < f.state.ball_count(); ++i) {
     if (!f.state.in_play[i]) continue;
-    const Vec3 p = ball_motion(m, f.state, i).momentum;
+    const Vec3 p = level_momentum(m, f.state, i);
     total += p;
     scale = std::max(scale, glm::length(p));
     if (glm::length(p) > 1e-3 * scale) momenta.emplace_back(i, p);
@@ -351,7 +358,9 @@ void centre_of_mass(const Lab& lab) {
       v += ball_motion(m, f.state, i).momentum;
     }
   if (mass <= 0) return;
-  text_wrapped("centre of mass (%.3f, %.3f) m, moving %.3f m/s", p.x / mass, p.z / mass, glm::length(v) / mass);
+  const double speed = glm::length(v) / mass;  // under the rest speed, as the ball table's "<.001": round-off
+  if (speed < m.options.rest_speed) text_wrapped("centre of mass (%.3f, %.3f) m, at rest", p.x / mass, p.z / mass);
+  else text_wrapped("centre of mass (%.3f, %.3f) m, moving %.3f m/s", p.x / mass, p.z / mass, speed);
   same_line_if_checkbox_fits("show");
   ImGui::Checkbox("show", &lab.settings.view.centre_of_mass);
 }
