@@ -90,7 +90,11 @@ void left_press(Lab& lab, const Vec3& at, MouseDrag& drag, float x) {
   const ImGuiIO& io = ImGui::GetIO();
   if (lab.in_hand) return lab.place_cue_ball(at, true);
   const int ball = ball_under(lab, at);
-  if (lab.tool == Tool::Target) return lab.set_target(at);
+  if (lab.tool == Tool::Target) {  // a click sets it, a drag carries it along (one undo step)
+    lab.set_target(at);
+    if (lab.target) drag.kind = MouseDrag::Target;
+    return;
+  }
   if (lab.tool == Tool::Move || (io.KeyCtrl && ball >= 0)) {
     if (ball >= 0) {
       lab.selected = ball;
@@ -125,6 +129,7 @@ void drag_move(Lab& lab, Camera& camera, const Viewport& vp, MouseDrag& drag, co
     case MouseDrag::Pan: camera.pan(d.x, d.y, vp.height); break;
     case MouseDrag::Ball: if (at) lab.move_ball(drag.ball, *at); break;
     case MouseDrag::Aim: if (at) lab.aim_at(*at); break;
+    case MouseDrag::Target: if (at) lab.drag_target(*at); break;
     case MouseDrag::FineAim:
       if (lab.scene.cue) {
         CueStrike c = *lab.scene.cue;

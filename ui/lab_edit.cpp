@@ -16,6 +16,11 @@ constexpr double kMinCueSpeed = 0.05;  // m/s
 constexpr const char* kPutDownFirst =
     "the cue ball is in hand: a click puts it down (Esc puts it back), then the target";
 
+// Where a practice target may go: on the bed, inside the cushions.
+bool on_the_cloth(const Scene& s, const Vec3& at) {
+  return !s.table || (std::abs(at.x) <= s.table->length / 2 && std::abs(at.z) <= s.table->width / 2);
+}
+
 std::string deg(double rad) {
   char text[32];
   std::snprintf(text, sizeof text, "%.2f", rad * 180 / M_PI);
@@ -136,10 +141,13 @@ void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step, int f
 
 void Lab::set_target(const Vec3& at) {
   if (in_hand) return say(MessageKind::Refused, kPutDownFirst);  // its undo is the pick-up's
-  if (scene.table && (std::abs(at.x) > scene.table->length / 2 || std::abs(at.z) > scene.table->width / 2))
-    return say(MessageKind::Refused, "the target goes on the cloth, inside the cushions");
+  if (!on_the_cloth(scene, at)) return say(MessageKind::Refused, "the target goes on the cloth, inside the cushions");
   history.record_target(target ? "move target" : "set target", scene, target);
   target = Vec3{at.x, 0, at.z};
+}
+
+void Lab::drag_target(const Vec3& at) {
+  if (target && !in_hand && on_the_cloth(scene, at)) target = Vec3{at.x, 0, at.z};  // past the cushions it stays
 }
 
 void Lab::clear_target() {

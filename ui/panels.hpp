@@ -70,7 +70,7 @@ ImU32 kept_colour(int k, float alpha = 1.0f);
 
 // Mouse and keyboard on the 3D view (input.cpp).
 struct MouseDrag {
-  enum Kind { None, Ball, Aim, FineAim, Orbit, Pan } kind = None;
+  enum Kind { None, Ball, Aim, FineAim, Orbit, Pan, Target } kind = None;
   int ball = -1;
   double aim0 = 0;     // rad, the aim when a fine-aim drag began
   float x0 = 0;        // pixels, where it began

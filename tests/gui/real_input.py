@@ -338,6 +338,12 @@ def player(binary, root, display, work):
     check("target" not in s2 and s2["redo_label"] == "set target", "U takes the target back")
     app.key("ctrl+y")
     check(app.state().get("target") == s.get("target"), "Ctrl+Y puts it back")
+    app.drag(ox - 40, oy + 70, ox + 40, oy + 70)  # the ring carried along the cloth (a trial found it would not go)
+    s2 = app.state()
+    moved = s2.get("target", [0, 0])[0] - s["target"][0]
+    check(moved > 0.05 and s2["undo_label"] == "move target", f"a drag carries the target {moved * 100:.0f} cm")
+    app.key("u")
+    check(app.state().get("target") == s.get("target"), "and one U takes the whole drag back")
     app.click_widget(app.state(), "tool Aim")
     check(app.state()["tool"] == "aim", "the Aim button brings the Aim tool back")
 

@@ -567,6 +567,15 @@ TEST_F(LabTest, TheTargetIsAnUndoStep) {
   EXPECT_EQ(*lab.target, Vec3(-0.5, 0, 0.1));
   lab.set_target({3.0, 0, 0});  // off the cloth: refused, no step
   EXPECT_EQ(lab.history.undo_label(), "move target");
+  // A drag carries the target (past the cushions it stays at the last point on the cloth): one undo step in all.
+  const size_t steps = lab.history.size();
+  lab.set_target({-0.4, 0, 0.1});
+  lab.drag_target({-0.3, 0, 0.1});
+  lab.drag_target({3.0, 0, 0.1});
+  EXPECT_EQ(*lab.target, Vec3(-0.3, 0, 0.1));
+  EXPECT_EQ(lab.history.size(), steps + 1);
+  lab.undo();
+  EXPECT_EQ(*lab.target, Vec3(-0.5, 0, 0.1));
   // With the ball in hand, Esc (undo) must take back the pick-up: target changes wait until it is down.
   lab.pick_up_cue_ball();
   lab.clear_target();
