@@ -91,8 +91,7 @@ void left_press(Lab& lab, const Vec3& at, MouseDrag& drag, float x) {
   if (lab.in_hand) return lab.place_cue_ball(at, true);
   const int ball = ball_under(lab, at);
   if (lab.tool == Tool::Target) {  // a click sets it, a drag carries it along (one undo step)
-    lab.set_target(at);
-    if (lab.target) drag.kind = MouseDrag::Target;
+    if (lab.set_target(at)) drag.kind = MouseDrag::Target;  // a refused press (off the cloth) carries nothing
     return;
   }
   if (lab.tool == Tool::Move || (io.KeyCtrl && ball >= 0)) {

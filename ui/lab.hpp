@@ -149,7 +149,7 @@ class Lab {
   void pick_up_cue_ball();                // ball in hand
   void place_cue_ball(const Vec3& at, bool drop);  // follows the pointer; `drop` puts it down
   void setup_break();                     // rack, cue ball in hand behind the head string, a cue strike
-  void set_target(const Vec3& at);        // on the bed inside the cushions (refused elsewhere); an undo step
+  bool set_target(const Vec3& at);        // on the bed inside the cushions (refused elsewhere: false); an undo step
   void clear_target();                    // an undo step too
   void drag_target(const Vec3& at);       // carried by a drag after set_target: part of its undo step
   std::optional<double> target_miss() const;  // m from the cue ball's rest position (or predicted one) to the target

@@ -139,11 +139,13 @@ void Lab::choose_pocket(std::vector<PocketAim> aims, int object, int step, int f
   pocket_aimed_ = PocketAimed{scene.balls[object].spec.id, scene.cue->aim, message};
 }
 
-void Lab::set_target(const Vec3& at) {
-  if (in_hand) return say(MessageKind::Refused, kPutDownFirst);  // its undo is the pick-up's
-  if (!on_the_cloth(scene, at)) return say(MessageKind::Refused, "the target goes on the cloth, inside the cushions");
+bool Lab::set_target(const Vec3& at) {
+  if (in_hand) return say(MessageKind::Refused, kPutDownFirst), false;  // its undo is the pick-up's
+  if (!on_the_cloth(scene, at))
+    return say(MessageKind::Refused, "the target goes on the cloth, inside the cushions"), false;
   history.record_target(target ? "move target" : "set target", scene, target);
   target = Vec3{at.x, 0, at.z};
+  return true;
 }
 
 void Lab::drag_target(const Vec3& at) {

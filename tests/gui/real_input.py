@@ -329,10 +329,11 @@ def player(binary, root, display, work):
     check("target" in s, "with Target, a click on the cloth sets the target")
     below = max(y for _, y in s["table_corners"]) + 12
     if check(below < view["y"] + view["h"] - 2, "there is room below the table in the view"):
-        app.click(view["x"] + view["w"] / 2, below)
+        # Pressed past the cushions and dragged onto the cloth: refused at the press, nothing carried (no undo step).
+        app.drag(view["x"] + view["w"] / 2, below, view["x"] + view["w"] / 2, below - 100)
         s2 = app.state()
         check(s2.get("target") == s.get("target") and "on the cloth" in s2["message"],
-              f"a click past the cushions moves no target ({s2['message']})")
+              f"a press past the cushions moves no target, nor does its drag onto the cloth ({s2['message']})")
     app.key("u")
     s2 = app.state()
     check("target" not in s2 and s2["redo_label"] == "set target", "U takes the target back")
