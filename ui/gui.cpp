@@ -238,10 +238,10 @@ int run_gui(const GuiOptions& options) {
 
         settings.panels.left_open = left_panel(lab, settings.camera, layout);
         settings.panels.right_open = inspector_panel(lab, tuning, layout);
-        help_panel(&settings.view.help);
         readout("popup open", ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) ? 1.0 : 0.0);  // for the GUI tests
         if (std::string note = take_slider_note(); !note.empty()) lab.say(MessageKind::Refused, std::move(note));
-        message_banner(lab, layout.view);
+        const float banner_bottom = message_banner(lab, layout.view);
+        help_panel(&settings.view.help, banner_bottom > 0 ? banner_bottom + em(4) : 0.0f);
         status_line(lab, layout.view, frame_seconds, slept);
         lab.finish_pocket_aim();  // before the wait: P's new aim gets its paths in this frame too
         lab.await_prediction();

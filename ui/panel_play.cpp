@@ -5,6 +5,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include "shotlab/cue.hpp"
@@ -271,13 +272,20 @@ bool left_panel(Lab& lab, Camera& camera, const Layout& layout) {
   return shown;
 }
 
-void help_panel(bool* open) {
+void help_panel(bool* open, float top) {
   static int frames_open = 0;  // centred over its first frames: the first one's size is not the table's yet
+  static ImVec2 at;            // its corner in the last frame (the user may drag it)
   if (!*open) return void(frames_open = 0);
+  // Below `top` (the banner), with its title and close box; what does not fit below it scrolls.
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y / 2), frames_open++ < 3 ? ImGuiCond_Always : ImGuiCond_Once,
-                          ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(FLT_MAX, std::max(display.y - top - em(4), em(120))));
+  if (frames_open++ < 3)
+    ImGui::SetNextWindowPos(ImVec2(display.x / 2, (top + display.y) / 2), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  else if (at.y < top)
+    ImGui::SetNextWindowPos(ImVec2(at.x, top), ImGuiCond_Always);
   ImGui::Begin("Help", open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+  at = ImGui::GetWindowPos();
+  mark_rect("help window", Rect{at.x, at.y, ImGui::GetWindowWidth(), ImGui::GetWindowHeight()});
   static const char* rows[][2] = {
       {"Left click cloth / drag", "aim the cue there (Aim tool)"}, {"Left click a ball", "aim at its centre"},
       {"Shift + left drag", "fine aim (0.01 deg a pixel)"}, {"Ctrl + left drag a ball", "move it"},
@@ -302,11 +310,13 @@ void help_panel(bool* open) {
     ImGui::EndTable();
   }
   text_wrapped("Trail colours: orange sliding, blue rolling, magenta airborne, yellow spinning in place.");
+  readout("help scroll px", ImGui::GetScrollY());
+  readout("help scroll max px", ImGui::GetScrollMaxY());
   ImGui::End();
 }
 
-void message_banner(Lab& lab, const Rect& view) {
-  if (lab.message_kind == MessageKind::None || lab.message.empty()) return;
+float message_banner(Lab& lab, const Rect& view) {
+  if (lab.message_kind == MessageKind::None || lab.message.empty()) return 0;
   // Below a title bar's height: a collapsed panel's title lies over the view's top corner.
   ImGui::SetNextWindowPos(ImVec2(view.x + view.w / 2, view.y + ImGui::GetFrameHeight() + em(6)), ImGuiCond_Always,
                           ImVec2(0.5f, 0));
@@ -332,7 +342,11 @@ void message_banner(Lab& lab, const Rect& view) {
     ImGui::SameLine();
     if (ImGui::SmallButton("Undo the shot")) lab.undo();
   }
+  const ImVec2 at = ImGui::GetWindowPos();
+  const Rect banner{at.x, at.y, ImGui::GetWindowWidth(), ImGui::GetWindowHeight()};
+  mark_rect("banner window", banner);
   ImGui::End();
+  return banner.bottom();
 }
 
 void status_line(const Lab& lab, const Rect& view, double frame_seconds, bool slept) {

@@ -49,8 +49,9 @@ void teach_plots(Lab& lab);           // panel_plots.cpp
 void tune_panel(Lab& lab, Tuning& tuning);  // panel_tune.cpp
 void contacts_section(Lab& lab);      // panel_contacts.cpp: every contact of the shot, its force history
 void measured_section(Lab& lab);      // panel_measured.cpp: a measured shot and the fit of its strike
-void help_panel(bool* open);          // panel_play.cpp: shortcuts
-void message_banner(Lab& lab, const Rect& view);  // panel_play.cpp: errors and notes over the 3D view
+void help_panel(bool* open, float top);  // panel_play.cpp: shortcuts, below y = top (px: the banner's bottom)
+// panel_play.cpp: errors and notes over the 3D view; returns the banner's bottom (px), 0 when none is shown.
+float message_banner(Lab& lab, const Rect& view);
 // The frame's timing in the view's corner: frame time and rate, physics time this frame (developers).
 void status_line(const Lab& lab, const Rect& view, double frame_seconds, bool slept);
 

@@ -1014,15 +1014,36 @@ def bad_scene(binary, root, display, work):
     check("undone" in s["message"], f"the banner says so ({s['message']})")
     app.wait(lambda s: s["message"] == "", 10, "the note goes by itself after 6 s without input")
     app.close()
-    app = App(binary, display, work, bad, config=config)
-    s = app.state()
-    check(s["message_kind"] == "load_error" and "broken.json" in s["message"], "the banner names the broken file")
-    app.close()
+    for size in ((1280, 720), (1024, 600)):
+        app = App(binary, display, work, bad, config=config, size=size)
+        s = app.state()
+        check(s["message_kind"] == "load_error" and "broken.json" in s["message"],
+              f"{size}: the banner names the broken file")
+        help_below_banner(app, size)
+        app.close()
     with open(os.path.join(work, "shotlab.log")) as f:
         check("broken.json" in f.read(), "stderr names the broken file")
     with open(os.path.join(config, "shotlab", "settings.json")) as f:
         last = json.load(f)["last_scene"]
     check(last.endswith("cut.json"), f"the settings still name the last good scene ({os.path.basename(last)})")
+
+
+def help_below_banner(app, size):
+    """H with a two-line error in the banner: the help window opens below it, its title and close box clear and its
+    bottom on screen; what does not fit scrolls under the wheel. H closes it again."""
+    app.key("h")
+    s = app.state()
+    banner, help_window = app.widget(s, "banner window"), app.widget(s, "help window")
+    banner_end, help_end = banner["y"] + banner["h"], help_window["y"] + help_window["h"]
+    check(banner["h"] > 50 and banner_end <= help_window["y"] and help_end <= size[1],
+          f"{size}: the help opens below the banner ({banner['h']:.0f} px high, ends at y {banner_end:.0f}): "
+          f"y {help_window['y']:.0f} to {help_end:.0f}")
+    if s["readouts"]["help scroll max px"] > 0:
+        app.scroll(help_window["x"] + help_window["w"] / 2, help_window["y"] + help_window["h"] / 2, 3)
+        check(app.state()["readouts"]["help scroll px"] > 0,
+              f"{size}: the wheel scrolls the rest of the help into view")
+    app.key("h")
+    check("help window" not in app.state()["widgets"], f"{size}: H closes the help")
 
 
 JOURNEYS = {"player": player, "teacher": teacher, "developer": developer, "coach": coach, "measured": measured,
