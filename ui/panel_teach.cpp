@@ -156,19 +156,21 @@ float rows_width(const std::vector<BallRow>& rows, const std::vector<int>& colum
 }
 
 // Every ball at the time shown. Where the six columns do not fit (a narrow inspector, presentation mode's large
-// text) they go into as many tables as it takes, up to three, each led by the ball's name, instead of scrolling
-// sideways.
+// text) they go into as many tables as it takes, each led by the ball's name, instead of scrolling sideways: as many
+// as fit the height of three tables of eight rows (five of a few balls), beyond that the last scrolls sideways.
 void ball_table(Lab& lab) {
   const Frame& f = lab.frame();
   const Model& m = shown_model(lab);
   std::vector<BallRow> rows;
   for (int i = 0; i < f.state.ball_count(); ++i) rows.push_back(ball_row(lab, m, f, i));
   const float room = ImGui::GetContentRegionAvail().x;
+  const float lines = std::min(static_cast<float>(rows.size()), 8.0f) + 1.6f;  // a table's height (ball_rows)
+  const size_t most = std::max<size_t>(3, static_cast<size_t>(3 * (8 + 1.6f) / lines));
   std::vector<std::vector<int>> tables{{0}};
   for (int c = 1; c < 6; ++c) {
     std::vector<int> wider = tables.back();
     wider.push_back(c);
-    const bool last = tables.size() == 3;  // and no more: beyond that the third scrolls sideways
+    const bool last = tables.size() == most;
     if (last || tables.back().size() == 1 || rows_width(rows, wider) <= room) tables.back() = std::move(wider);
     else tables.push_back({0, c});
   }

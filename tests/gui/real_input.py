@@ -914,6 +914,15 @@ def layout(binary, root, display, work):
             app.double_click(grip["x"] + grip["w"] / 2, grip["y"] + 200)
             s = app.state()
             view = s["view"]
+        if size == (1024, 600):  # presentation mode on a small screen: the ball table splits, none scrolls sideways
+            normal = s["readouts"]["font size"]
+            app.key("F5")
+            s = app.wait(lambda s: s["readouts"]["font size"] > normal, 10, f"{size}: F5 turns presentation mode on")
+            tables, over = s["readouts"]["ball tables"], s["readouts"]["ball table overflow px"]
+            check(over <= 0, f"{size}: in presentation mode the cut's ball table splits into {tables:.0f}, none "
+                  f"scrolls sideways ({over:.0f} px over)")
+            app.key("F5")
+            s = app.wait(lambda s: s["readouts"]["font size"] == normal, 10, f"{size}: F5 turns it off again")
         if size == (1920, 1080):  # room to spare: the inspector's left edge dragged 300 px widens it
             grip = app.widget(s, "panel width grip")
             gx, gy = grip["x"] + grip["w"] / 2, grip["y"] + grip["h"] / 2
