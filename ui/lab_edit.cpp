@@ -244,10 +244,13 @@ void Lab::pick_up_cue_ball() {
   if (!scene.cue || scene_ball(scene, scene.cue->ball) < 0)
     return say(MessageKind::Refused, "this scene has no cue ball to take in hand");
   if (!scene.table) return say(MessageKind::Refused, "ball in hand needs a table");
-  if (!editable("ball in hand")) return;
-  history.seal();
-  history.record("ball in hand", scene);
-  in_hand = true;
+  // B again while in hand: the note again, no second step (Esc would then only undo the second).
+  if (!in_hand) {
+    if (!editable("ball in hand")) return;
+    history.seal();
+    history.record("ball in hand", scene);
+    in_hand = true;
+  }
   say(MessageKind::Note, break_position(scene) ? "ball in hand behind the head string: click to put it down"
                                                : "ball in hand: click to put it down, Esc puts it back");
 }

@@ -672,6 +672,22 @@ TEST_F(LabTest, SetUpBreakRacksAndGivesBallInHand) {
   EXPECT_EQ(lab.scene.balls.size(), 2u);  // back to the cut shot
 }
 
+// B pressed again with the ball in hand (a player's trial) adds no second step: one Esc puts the ball back.
+TEST_F(LabTest, BallInHandTwiceIsOneStep) {
+  load("cut.json");
+  const Vec3 start = ball("cue");
+  const size_t steps = lab.history.size();
+  lab.pick_up_cue_ball();
+  lab.pick_up_cue_ball();
+  EXPECT_TRUE(lab.in_hand);
+  EXPECT_EQ(lab.history.size(), steps + 1);
+  EXPECT_EQ(lab.message_kind, MessageKind::Note);
+  lab.place_cue_ball({-0.5, 0, 0.2}, false);  // following the pointer
+  lab.undo();
+  EXPECT_FALSE(lab.in_hand);
+  EXPECT_EQ(ball("cue"), start);
+}
+
 // The shots kept on another position are not drawn over a new break (a player's trial saw the cut's lines over the
 // rack); undo brings them back with that position. Kept breaks stay for the next break, to compare.
 TEST_F(LabTest, SetUpBreakStartsTheKeptShotsAfresh) {
