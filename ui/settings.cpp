@@ -80,7 +80,7 @@ Settings load_settings() {
   const auto& e = section(j, "pause_on");
   get(e, "ball_ball", s.pause_on.ball_ball), get(e, "cushion", s.pause_on.cushion), get(e, "pocketed", s.pause_on.pocketed);
   get(j, "slowmo", s.slowmo), get(j, "impact_speed", s.impact_speed), get(j, "budget_ms", s.budget_ms);
-  get(j, "safety_limit", s.safety_limit), get(j, "ui_scale", s.ui_scale), get(j, "presentation", s.presentation);
+  get(j, "safety_limit", s.safety_limit), get(j, "ui_scale", s.ui_scale);
   get(j, "last_scene", s.last_scene), get(j, "recent", s.recent), get(j, "export_dir", s.export_dir);
   s.slowmo = std::clamp(s.slowmo, 1e-3, 4.0);
   s.safety_limit = std::clamp(s.safety_limit, 1.0, 3600.0);
@@ -107,7 +107,7 @@ bool save_settings(const Settings& s, std::string* error) {
         {"left_width", s.panels.left_width}, {"right_width", s.panels.right_width}}},
       {"pause_on", {{"ball_ball", s.pause_on.ball_ball}, {"cushion", s.pause_on.cushion}, {"pocketed", s.pause_on.pocketed}}},
       {"slowmo", s.slowmo}, {"impact_speed", s.impact_speed}, {"budget_ms", s.budget_ms},
-      {"safety_limit", s.safety_limit}, {"ui_scale", s.ui_scale}, {"presentation", s.presentation},
+      {"safety_limit", s.safety_limit}, {"ui_scale", s.ui_scale},
       {"last_scene", s.last_scene}, {"recent", s.recent}, {"export_dir", s.export_dir}};
   try {
     // Paths are bytes; a name that is not UTF-8 is written with replacement characters rather than lost.

@@ -43,7 +43,7 @@ struct Settings {
   double budget_ms = 10.0;      // physics wall time per frame
   double safety_limit = 60.0;   // s of simulated time a shot may run while balls still move
   float ui_scale = 1.0f;        // fonts and widgets; presentation mode uses its own
-  bool presentation = false;    // large fonts and thick lines for a projector
+  bool presentation = false;    // large fonts and thick lines for a projector; not saved: F5 always turns it on
   std::string last_scene;       // path
   std::vector<std::string> recent;  // scene files opened, newest first
   std::string export_dir;       // where plots, tables, strobe pictures and trajectories go; empty: the current folder
