@@ -56,24 +56,30 @@ ImU32 ink(const PlotSpec& spec, ImU32 colour) {
   return ImGui::GetColorU32(ImVec4(0.7f * c.x, 0.7f * c.y, 0.7f * c.z, 1.0f));
 }
 
-// Title and legend above the plot area; returns the height used.
+// Title and legend above the plot area; returns the height used. With no draw list, only measures it.
 float header(ImDrawList* d, ImVec2 o, float width, const PlotSpec& spec, const std::vector<PlotSeries>& series) {
   const float line = ImGui::GetTextLineHeight();
+  const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
   const std::string title = spec.title + " (" + spec.unit + ")";
   const float title_w = ImGui::CalcTextSize(title.c_str()).x;
   float x = o.x + title_w + em(16), y = o.y;
   if (title_w > width) {  // wrapped in a narrow panel; the legend starts below it
-    d->AddText(ImGui::GetFont(), ImGui::GetFontSize(), o, ImGui::GetColorU32(ImGuiCol_Text), title.c_str(), nullptr,
-               width);
+    if (d) d->AddText(ImGui::GetFont(), ImGui::GetFontSize(), o, text, title.c_str(), nullptr, width);
     x = o.x + em(8), y = o.y + ImGui::CalcTextSize(title.c_str(), nullptr, false, width).y;
-  } else {
-    d->AddText(o, ImGui::GetColorU32(ImGuiCol_Text), title.c_str());
+  } else if (d) {
+    d->AddText(o, text, title.c_str());
   }
   for (const PlotSeries& s : series) {
     const float w = ImGui::CalcTextSize(s.name.c_str()).x + em(16);
     if (x + w > o.x + width) x = o.x + em(8), y += line;
-    d->AddRectFilled({x, y + line * 0.3f}, {x + em(10), y + line * 0.7f}, ink(spec, s.colour));
-    d->AddText({x + em(13), y}, ImGui::GetColorU32(ImGuiCol_Text), s.name.c_str());
+    // A name longer than the line wraps under itself (a narrow panel, presentation mode's large text).
+    const float wrap = o.x + width - (x + em(13));
+    if (d) {
+      d->AddRectFilled({x, y + line * 0.3f}, {x + em(10), y + line * 0.7f}, ink(spec, s.colour));
+      d->AddText(ImGui::GetFont(), ImGui::GetFontSize(), {x + em(13), y}, text, s.name.c_str(), nullptr, wrap);
+    }
+    const float lines = ImGui::CalcTextSize(s.name.c_str(), nullptr, false, wrap).y;
+    if (lines > line * 1.5f) x = o.x + width, y += lines - line;  // the next name starts a line of its own
     x += w + em(8);
   }
   return y - o.y + line + em(4);
@@ -113,7 +119,7 @@ void time_axis(ImDrawList* d, const Area& p, const PlotSpec& spec, float left, f
   const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
   const TimeUnit unit = time_unit(p.t1 - p.t0);
   const Ticks ticks = nice_ticks((p.t0 - spec.origin) * unit.per_second, (p.t1 - spec.origin) * unit.per_second,
-                                 std::max(2, static_cast<int>((p.b.x - p.a.x) / em(60))));
+                                 std::max(3, static_cast<int>((p.b.x - p.a.x) / em(60))));
   for (double x : ticks.values) {
     const float X = p.x(spec.origin + x / unit.per_second);
     if (X < p.a.x - 0.5f || X > p.b.x + 0.5f) continue;
@@ -178,12 +184,14 @@ PlotAction plot(const char* id, const PlotSpec& spec, const std::vector<PlotSeri
   ImGui::PushID(id);
   const ImVec2 o = ImGui::GetCursorScreenPos();
   const float width = std::max(ImGui::GetContentRegionAvail().x, em(120));
+  const float line = ImGui::GetTextLineHeight();
+  // However tall the title and legend grow (wrapped in a narrow panel), the curves keep em(90) of height.
+  height = std::max(height, header(nullptr, o, width, spec, series) + em(90) + 2 * line + em(2));
   ImGui::InvisibleButton("plot", ImVec2(width, height));
   const bool hovered = ImGui::IsItemHovered(), active = ImGui::IsItemActive();
   out.rect = Rect{o.x, o.y, width, height};
   mark(std::string("plot ") + id);
   ImDrawList* d = ImGui::GetWindowDrawList();
-  const float line = ImGui::GetTextLineHeight();
   const float top = o.y + header(d, o, width, spec, series);
   const auto [t0, t1] = time_extent(spec, series);
   const Range v = value_range(spec, series, t0, t1);
