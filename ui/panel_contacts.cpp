@@ -41,6 +41,7 @@ int contacts_table(const ContactLog& log, int selected) {
     ImGui::TableNextColumn();
     ImGui::Text("%.1f", c.max_depth() * 1e6);
   }
+  pass_wheel_on();
   ImGui::EndTable();
   return selected;
 }

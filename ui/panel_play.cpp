@@ -216,7 +216,10 @@ void notes_section(Lab& lab) {
     const char* text = lab.scene.description.c_str();
     const float cap = std::max(ImGui::GetMainViewport()->Size.y / 6, 4 * ImGui::GetTextLineHeightWithSpacing());
     const float tall = ImGui::CalcTextSize(text, nullptr, false, ImGui::GetContentRegionAvail().x).y;
-    if (tall > cap && ImGui::BeginChild("##notes view", ImVec2(0, cap))) text_wrapped("%s", text);
+    if (tall > cap && ImGui::BeginChild("##notes view", ImVec2(0, cap))) {
+      text_wrapped("%s", text);
+      pass_wheel_on();
+    }
     if (tall > cap) ImGui::EndChild();
     else if (*text) text_wrapped("%s", text);
     if (ImGui::SmallButton(lab.scene.description.empty() ? "Add notes" : "Edit notes")) editing = true;

@@ -139,6 +139,7 @@ float ball_rows(Lab& lab, const char* id, const std::vector<BallRow>& rows, cons
     }
   }
   const float overflow = ImGui::GetScrollMaxX();  // the table's own scrolling region
+  pass_wheel_on();
   ImGui::EndTable();
   return overflow;
 }
@@ -407,6 +408,7 @@ void events_list(Lab& lab) {
     for (const std::string& b : e.bodies) who += (who.empty() ? "" : " - ") + b;
     ImGui::TextUnformatted(who.c_str());
   }
+  pass_wheel_on();
   ImGui::EndTable();
 }
 

@@ -165,6 +165,7 @@ void changes_section(Lab& lab) {
     ImGui::Bullet();
     text_wrapped("%s", c.c_str());
   }
+  pass_wheel_on();
   ImGui::EndChild();
   ImGui::BeginDisabled(changes.empty());
   if (ImGui::Button("Reset to the scene's values")) lab.reset_physics();

@@ -332,6 +332,15 @@ void new_marks_frame() {
 }
 
 void readout(const std::string& name, double value) { current_readouts[name] = value; }
+
+void pass_wheel_on() {
+  ImGuiWindow* box = ImGui::GetCurrentWindow();
+  ImGuiWindow* around = box->ParentWindow;
+  const float wheel = ImGui::GetIO().MouseWheel;
+  if (!around || wheel == 0 || !ImGui::IsWindowHovered()) return;
+  if (wheel > 0 ? box->Scroll.y > 0 : box->Scroll.y < box->ScrollMax.y) return;  // the box scrolls itself
+  ImGui::SetScrollY(around, around->Scroll.y - wheel * 5 * ImGui::GetFontSize());  // ImGui's step per notch
+}
 const std::map<std::string, double>& readouts() { return last_readouts; }
 
 const std::map<std::string, Rect>& marks() { return last_marks; }

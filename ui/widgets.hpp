@@ -98,4 +98,9 @@ void simplified_polyline(ImDrawList* d, const std::vector<ImVec2>& points, ImU32
 // Scales a size given in unscaled pixels by the current font size (ui scale and presentation mode).
 float em(float pixels);
 
+// Called inside a scrolling box (a child window, a table with ScrollY) before its end: a wheel turned over it once it
+// is at its top or bottom scrolls the window around it, as a browser does (ImGui keeps the wheel in the box, and a
+// hand on the wheel over a list got stuck there).
+void pass_wheel_on();
+
 }  // namespace shotlab

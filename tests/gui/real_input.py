@@ -488,6 +488,12 @@ def teacher(binary, root, display, work):
         app.click_widget(app.state(), first)
     s = app.state()
     check(s["shot"]["contact_on_screen"], f"scrubbed to the impact, the balls touch (t = {s['view_time']:.6f} s)")
+    if first is not None:  # the wheel over the list, turned past its end, goes on to the inspector (it stuck there)
+        row, header = s["widgets"][first], s["widgets"]["Events"]["y"]
+        app.scroll(row["x"] + 20, row["y"] + row["h"] / 2, 25)
+        moved = header - app.state()["widgets"]["Events"]["y"]
+        check(moved > 100, f"the wheel over the events list scrolls the inspector once the list is at its end "
+                           f"({moved:.0f} px)")
     app.key("bracketleft", 7)  # 1/1024: a step of 16 microseconds
     app.key("period", 4)
     s = app.state()
