@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -382,12 +383,25 @@ bool momentary(const std::vector<Event>& events, size_t k) {
   return false;
 }
 
+// An event's kind (shotlab/event.hpp) as a class reads it.
+const char* event_words(const std::string& kind) {
+  static const std::map<std::string, const char*> words{
+      {"contact_begin", "contact begins"}, {"contact_end", "contact ends"}, {"landed", "lands"},
+      {"stopped", "stops"},                {"spinning", "spins in place"}, {"rolling", "rolls"},
+      {"sliding", "slides"},               {"airborne", "leaves the cloth"}, {"pocketed", "pocketed"},
+      {"off_table", "off the table"}};
+  const auto it = words.find(kind);
+  return it != words.end() ? it->second : kind.c_str();
+}
+
+// Two lines an event, a click on either goes there: its time, then who and what happened, wrapped (three columns had
+// cut "contact begins" and "contact ends" to the same "contact" in a narrow inspector).
 void events_list(Lab& lab) {
   static bool bed = false;
   ImGui::Checkbox("with the bed's contacts", &bed);
   const auto& events = lab.shot->sim().events();
-  if (!ImGui::BeginTable("events", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp,
-                         ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * 8)))
+  if (!ImGui::BeginTable("events", 1, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY,
+                         ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * 12)))
     return;
   for (size_t k = 0; k < events.size(); ++k) {
     const Event& e = events[k];
@@ -395,18 +409,27 @@ void events_list(Lab& lab) {
     if (momentary(events, k)) continue;
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
+    std::string what;
+    for (const std::string& b : e.bodies) what += (what.empty() ? "" : " - ") + b;
+    what += std::string(": ") + event_words(e.kind);
+    // The whole event is one selectable, as high as its two lines; the text is drawn over it.
+    const ImVec2 start = ImGui::GetCursorPos();
+    const float indent = em(12);
+    const float high = ImGui::GetTextLineHeight() +
+                       ImGui::CalcTextSize(what.c_str(), nullptr, false, ImGui::GetContentRegionAvail().x - indent).y;
     ImGui::PushID(static_cast<int>(k));
-    if (ImGui::Selectable(format_time(e.time, true).c_str(), std::abs(e.time - lab.view_time) < 1e-9,
-                          ImGuiSelectableFlags_SpanAllColumns))
+    if (ImGui::Selectable("##event", std::abs(e.time - lab.view_time) < 1e-9, ImGuiSelectableFlags_AllowItemOverlap,
+                          ImVec2(0, high)))
       lab.seek(e.time);
     mark("event " + std::to_string(k));
     ImGui::PopID();
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(e.kind.c_str());
-    ImGui::TableNextColumn();
-    std::string who;
-    for (const std::string& b : e.bodies) who += (who.empty() ? "" : " - ") + b;
-    ImGui::TextUnformatted(who.c_str());
+    ImGui::SetCursorPos(start);
+    ImGui::TextUnformatted(format_time(e.time, true).c_str());
+    ImGui::Indent(indent);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(what.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::Unindent(indent);
   }
   pass_wheel_on();
   ImGui::EndTable();
@@ -428,9 +451,12 @@ void teach_panel(Lab& lab) {
     hint("Plots and events appear once a shot runs.");
     return;
   }
-  const bool events_open = ImGui::CollapsingHeader("Events (click one to go there)");
+  const bool events_open = ImGui::CollapsingHeader("Events");
   mark("Events");
-  if (events_open) events_list(lab);
+  if (events_open) {
+    hint("Click an event to go to that moment.");
+    events_list(lab);
+  }
   teach_plots(lab);
 }
 

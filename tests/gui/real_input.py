@@ -433,7 +433,7 @@ def first_event(app):
 def scroll_into_view(app, name):
     """Wheel over the inspector until the widget lies wholly inside the window; returns the state then."""
     s = app.state()
-    for _ in range(12):
+    for _ in range(30):
         r = s["widgets"].get(name)
         if r and r["y"] >= 0 and r["y"] + r["h"] <= s["window"][1]:
             break
@@ -462,7 +462,7 @@ def export_plot_png(app):
           f"the plot's picture is {w} x {h} px, at least twice the panel's {plot['w']:.0f} x {plot['h']:.0f}")
     check("plot motion" in app.state()["widgets"] and app.widget(app.state(), "plot motion")["w"] == plot["w"],
           "the plot is back in its panel after the picture")
-    for _ in range(12):  # the inspector scrolled back to its tabs
+    for _ in range(30):  # the inspector scrolled back to its tabs
         s = app.state()
         if s["widgets"].get("tab Tuning", {"y": -1})["y"] >= 0:
             break
