@@ -143,7 +143,7 @@ void aim_readouts(const Lab& lab, const CueStrike& cue) {
   if (const auto line = aim_line(lab.scene); line && line->hit >= 0)
     ImGui::Text("first ball %s, cut %.1f deg", lab.scene.balls[line->hit].spec.id.c_str(), line->cut_deg);
   if (const auto miss = lab.target_miss())
-    ImGui::Text("%s miss of the target: %.0f mm", lab.shot ? "cue ball's" : "predicted", *miss * 1e3);
+    ImGui::Text("%s miss of the target: %.1f cm", lab.shot ? "cue ball's" : "predicted", *miss * 100);
 }
 
 void aim_section(Lab& lab) {

@@ -30,8 +30,8 @@ void practice_section(Lab& lab) {
     slider("##target radius", lab.target_radius, 0.01, 0.3, "%.2f m");
     if (const auto miss = lab.target_miss())
       coloured_wrapped(*miss <= lab.target_radius ? ImVec4(0.5f, 1, 0.5f, 1) : ImVec4(1, 0.7f, 0.3f, 1),
-                         "%s: %.0f mm from the target%s", lab.shot ? "the cue ball stopped" : "predicted",
-                         *miss * 1e3, *miss <= lab.target_radius ? " (inside)" : "");
+                         "%s: %.1f cm from the target%s", lab.shot ? "the cue ball stopped" : "predicted",
+                         *miss * 100, *miss <= lab.target_radius ? " (inside)" : "");
     if (ImGui::SmallButton("clear target")) lab.clear_target();
   }
   ImGui::Separator();
