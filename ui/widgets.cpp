@@ -276,12 +276,15 @@ void bar_chart(const char* id, const std::vector<Bar>& shown, double scale, cons
   float label_w = 0;
   for (const Bar& b : bars) label_w = std::max(label_w, ImGui::CalcTextSize(b.label.c_str()).x);
   label_w += em(8);
-  // The values' column as wide as its widest text, so that the bars give way to it in a narrow panel.
+  // The values to three digits of the scale, in fixed notation (a class read "4.19e-08 J" left at rest as something
+  // still moving), and their column as wide as its widest text, so that the bars give way to it in a narrow panel.
+  const int decimals = std::clamp(2 - static_cast<int>(std::floor(std::log10(scale))), 0, 4);
   std::vector<std::string> values;
   float value_w = 0;
   for (const Bar& b : bars) {
     char text[48];
-    std::snprintf(text, sizeof text, "%.3g %s", b.value, unit);
+    const double step = std::pow(10.0, -decimals), value = std::abs(b.value) < 0.5 * step ? 0.0 : b.value;
+    std::snprintf(text, sizeof text, "%.*f %s", decimals, value, unit);
     values.emplace_back(text);
     value_w = std::max(value_w, ImGui::CalcTextSize(text).x);
   }
