@@ -134,11 +134,16 @@ void tool_buttons(Lab& lab) {
   }
 }
 
+std::string speed_text(const CueStrike& cue, const BallSpec& ball) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f m/s", glm::length(strike(cue, ball.mass, ball.radius).velocity));
+  return text;
+}
+
 void aim_readouts(const Lab& lab, const CueStrike& cue) {
   const int c = scene_ball(lab.scene, cue.ball);
   if (c < 0) return;
   const StrikeResult r = strike(cue, lab.scene.balls[c].spec.mass, lab.scene.balls[c].spec.radius);
-  ImGui::Text("cue ball leaves at %.2f m/s", glm::length(r.velocity));
   if (r.squirt != 0) ImGui::Text("squirt %.2f deg %s of the cue line", std::abs(r.squirt) * 180 / M_PI, r.squirt > 0 ? "left" : "right");
   if (const auto line = aim_line(lab.scene); line && line->hit >= 0)
     ImGui::Text("first ball %s, cut %.1f deg", lab.scene.balls[line->hit].spec.id.c_str(), line->cut_deg);
@@ -174,7 +179,10 @@ void aim_section(Lab& lab) {
   mark("speed slider");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("the cue stick's speed at the tip; the ball leaves faster, as the stick is heavier (the speed "
-                      "it leaves at is shown under the tip picture)\nUp/Down 0.25 m/s, Shift 1 m/s, Ctrl 0.02 m/s");
+                      "it leaves at is shown under the slider)\nUp/Down 0.25 m/s, Shift 1 m/s, Ctrl 0.02 m/s");
+  // Right under it: a preset's notes speak of the ball's speed, which a trial compared with the stick's.
+  if (const int c = scene_ball(lab.scene, cue.ball); c >= 0)
+    text_wrapped("the cue ball leaves at %s", speed_text(cue, lab.scene.balls[c].spec).c_str());
   double aim = cue.aim * 180 / M_PI, elevation = cue.elevation * 180 / M_PI;
   f.label("aim");
   if (ImGui::DragScalar("##aim", ImGuiDataType_Double, &aim, 0.01f, nullptr, nullptr, "%.2f deg")) {
