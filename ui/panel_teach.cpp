@@ -439,10 +439,15 @@ void events_list(Lab& lab) {
 
 void teach_panel(Lab& lab) {
   ImGui::Text("at t = %s", format_time(lab.view_time, lab.contact_on_screen()).c_str());
-  ball_table(lab);
-  energy_bars(lab);
-  momentum_bars(lab);
-  centre_of_mass(lab);
+  // Sections a teacher can fold: in presentation mode the split ball table pushed the bars below the panel's edge.
+  const bool balls_open = ImGui::CollapsingHeader("Balls", ImGuiTreeNodeFlags_DefaultOpen);
+  mark("section Balls");
+  if (balls_open) ball_table(lab);
+  if (ImGui::CollapsingHeader("Energy", ImGuiTreeNodeFlags_DefaultOpen)) energy_bars(lab);
+  if (ImGui::CollapsingHeader("Momentum", ImGuiTreeNodeFlags_DefaultOpen)) {
+    momentum_bars(lab);
+    centre_of_mass(lab);
+  }
   ImGui::Checkbox("velocity", &lab.settings.view.velocity), same_line_if_checkbox_fits("spin");
   ImGui::Checkbox("spin", &lab.settings.view.spin), same_line_if_checkbox_fits("forces");
   ImGui::Checkbox("forces", &lab.settings.view.forces), same_line_if_checkbox_fits("labels");

@@ -931,6 +931,12 @@ def layout(binary, root, display, work):
             tables, over = s["readouts"]["ball tables"], s["readouts"]["ball table overflow px"]
             check(over <= 0, f"{size}: in presentation mode the cut's ball table splits into {tables:.0f}, none "
                   f"scrolls sideways ({over:.0f} px over)")
+            bars = s["widgets"]["bars energy"]
+            app.click_widget(s, "section Balls")  # folded, the table leaves the energy bars on screen
+            folded = app.state()["widgets"]["bars energy"]
+            check(folded["y"] + folded["h"] <= size[1] < bars["y"] + bars["h"],
+                  f"{size}: folding Balls brings the energy bars up (y {bars['y']:.0f} -> {folded['y']:.0f})")
+            app.click_widget(app.state(), "section Balls")
             app.key("F5")
             s = app.wait(lambda s: s["readouts"]["font size"] == normal, 10, f"{size}: F5 turns it off again")
         if size == (1920, 1080):  # room to spare: the inspector's left edge dragged 300 px widens it
