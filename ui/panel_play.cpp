@@ -79,7 +79,7 @@ void playback_section(Lab& lab) {
   slider("##clock", lab.settings.slowmo, 1e-3, 4.0, "%.3gx real time", true);
   mark("clock slider");
   if (!lab.shot) {
-    ImGui::TextDisabled("aiming: S or Space shoots");
+    hint("aiming: S or Space shoots");
   } else {
     double t = lab.view_time;
     f.label("time");
@@ -89,7 +89,7 @@ void playback_section(Lab& lab) {
     }
     mark("time slider");
     // The slider shows the time; while a contact is on screen it is to the microsecond, and this says why.
-    if (lab.contact_on_screen()) ImGui::TextDisabled("a contact on screen: time to the microsecond");
+    if (lab.contact_on_screen()) hint("a contact on screen: time to the microsecond");
     if (lab.shot->finished())
       coloured_wrapped(lab.shot->end() == ShotEnd::Rest ? ImVec4(0.6f, 0.9f, 0.6f, 1) : ImVec4(1, 0.7f, 0.3f, 1),
                          "%s after %.2f s", end_text(*lab.shot), lab.shot->sim().time());
@@ -222,7 +222,9 @@ void notes_section(Lab& lab) {
     // Long notes scroll in a box of at most a sixth of the window's height: on a laptop they pushed the aim and the
     // tip picture below the panel's edge.
     const char* text = lab.scene.description.c_str();
-    const float cap = std::max(ImGui::GetMainViewport()->Size.y / 6, 4 * ImGui::GetTextLineHeightWithSpacing());
+    // Whole lines: a trial read the box's last line cut in half.
+    const float line = ImGui::GetTextLineHeight();
+    const float cap = line * std::floor(std::max(ImGui::GetMainViewport()->Size.y / 6, 4 * line + 4) / line);
     const float tall = ImGui::CalcTextSize(text, nullptr, false, ImGui::GetContentRegionAvail().x).y;
     if (tall > cap && ImGui::BeginChild("##notes view", ImVec2(0, cap))) {
       text_wrapped("%s", text);
