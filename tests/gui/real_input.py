@@ -462,10 +462,13 @@ def export_plot_png(app):
           f"the plot's picture is {w} x {h} px, at least twice the panel's {plot['w']:.0f} x {plot['h']:.0f}")
     check("plot motion" in app.state()["widgets"] and app.widget(app.state(), "plot motion")["w"] == plot["w"],
           "the plot is back in its panel after the picture")
-    for _ in range(30):  # the inspector scrolled back to its tabs
+    last = None
+    for _ in range(30):  # the inspector scrolled back to its top: its tabs clear of its title bar
         s = app.state()
-        if s["widgets"].get("tab Tuning", {"y": -1})["y"] >= 0:
+        y = s["widgets"].get("tab Tuning", {"y": -1})["y"]
+        if y >= 0 and y == last:
             break
+        last = y
         app.scroll(app.widget(s, "panel Inspector")["x"] + 60, s["window"][1] // 2, -3)
     return s
 
