@@ -101,12 +101,16 @@ BallRow ball_row(const Lab& lab, const Model& m, const Frame& f, int i) {
   return r;
 }
 
+// Lines of text a ball table is high: at most 8 rows, the header, and the sideways scroll bar when it has one.
+float table_lines(size_t rows, bool scrolls) {
+  return std::min(static_cast<float>(rows), 8.0f) + (scrolls ? 2.5f : 1.6f);
+}
+
 // The table of `columns` (indices into BallRow::cells; the first is the ball's name, a row selects its ball).
 // Returns how far (px) it scrolls sideways, as ImGui laid it out.
 float ball_rows(Lab& lab, const char* id, const std::vector<BallRow>& rows, const std::vector<int>& columns,
                 bool scrolls) {
-  // At most 8 rows, the header, and the sideways scroll bar when it has one.
-  const float shown = std::min(static_cast<float>(rows.size()), 8.0f) + (scrolls ? 2.5f : 1.6f);
+  const float shown = table_lines(rows.size(), scrolls);
   // Cells padded a little less than ImGui's default, so that the six columns fit a 1280 px window's inspector.
   ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(em(2), ImGui::GetStyle().CellPadding.y));
   constexpr ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX |
@@ -166,8 +170,8 @@ void ball_table(Lab& lab) {
   std::vector<BallRow> rows;
   for (int i = 0; i < f.state.ball_count(); ++i) rows.push_back(ball_row(lab, m, f, i));
   const float room = ImGui::GetContentRegionAvail().x;
-  const float lines = std::min(static_cast<float>(rows.size()), 8.0f) + 1.6f;  // a table's height (ball_rows)
-  const size_t most = std::max<size_t>(3, static_cast<size_t>(3 * (8 + 1.6f) / lines));
+  const size_t most =
+      std::max<size_t>(3, static_cast<size_t>(3 * table_lines(8, false) / table_lines(rows.size(), false)));
   std::vector<std::vector<int>> tables{{0}};
   for (int c = 1; c < 6; ++c) {
     std::vector<int> wider = tables.back();

@@ -279,11 +279,12 @@ void bar_chart(const char* id, const std::vector<Bar>& shown, double scale, cons
   // The values to three digits of the scale, in fixed notation (a class read "4.19e-08 J" left at rest as something
   // still moving), and their column as wide as its widest text, so that the bars give way to it in a narrow panel.
   const int decimals = std::clamp(2 - static_cast<int>(std::floor(std::log10(scale))), 0, 4);
+  const double step = std::pow(10.0, -decimals);  // what rounds to zero prints without a sign
   std::vector<std::string> values;
   float value_w = 0;
   for (const Bar& b : bars) {
     char text[48];
-    const double step = std::pow(10.0, -decimals), value = std::abs(b.value) < 0.5 * step ? 0.0 : b.value;
+    const double value = std::abs(b.value) < 0.5 * step ? 0.0 : b.value;
     std::snprintf(text, sizeof text, "%.*f %s", decimals, value, unit);
     values.emplace_back(text);
     value_w = std::max(value_w, ImGui::CalcTextSize(text).x);
@@ -336,6 +337,10 @@ void new_marks_frame() {
 
 void readout(const std::string& name, double value) { current_readouts[name] = value; }
 
+const std::map<std::string, double>& readouts() { return last_readouts; }
+
+const std::map<std::string, Rect>& marks() { return last_marks; }
+
 void pass_wheel_on() {
   ImGuiWindow* box = ImGui::GetCurrentWindow();
   ImGuiWindow* around = box->ParentWindow;
@@ -344,8 +349,5 @@ void pass_wheel_on() {
   if (wheel > 0 ? box->Scroll.y > 0 : box->Scroll.y < box->ScrollMax.y) return;  // the box scrolls itself
   ImGui::SetScrollY(around, around->Scroll.y - wheel * 5 * ImGui::GetFontSize());  // ImGui's step per notch
 }
-const std::map<std::string, double>& readouts() { return last_readouts; }
-
-const std::map<std::string, Rect>& marks() { return last_marks; }
 
 }  // namespace shotlab
