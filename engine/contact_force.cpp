@@ -7,13 +7,27 @@ double sharpness_for(const Smoothing& s, double strength, double mobility) {
   return s.rate_limit > 0 && rate > s.rate_limit ? s.sharpness * s.rate_limit / rate : s.sharpness;
 }
 
-bool friction_switched(const FrictionState& a, const FrictionState& b) {
-  if (a.bands != b.bands) return true;
-  // Turned around while saturated at both ends (inside the band a term is smooth through zero, and a resting contact's
-  // round-off turns it every which way).
+namespace {
+
+// A term saturated at both ends whose force turned around (inside the band a term is smooth through zero, and a
+// resting contact's round-off turns it every which way).
+bool turned_around(const FrictionState& a, const FrictionState& b) {
   return (!(a.bands & kSlipInBand) && glm::dot(a.friction, b.friction) < 0) ||
          (!(a.bands & kRollInBand) && glm::dot(a.rolling, b.rolling) < 0) ||
          (!(a.bands & kSpinInBand) && a.spin_torque * b.spin_torque < 0);
+}
+
+}  // namespace
+
+bool friction_switched(const FrictionState& a, const FrictionState& b) {
+  return a.bands != b.bands || turned_around(a, b);
+}
+
+bool band_edges_only(const FrictionState& a, const FrictionState& b) {
+  const unsigned changed = a.bands ^ b.bands;
+  constexpr unsigned kInBand = kSlipInBand | kRollInBand | kSpinInBand;
+  // A term's limited bit may change only with its in-band bit (it is set inside the band alone).
+  return (changed >> 3 & ~changed & kInBand) == 0 && !turned_around(a, b);
 }
 
 double elastic_energy(const ContactMaterial& mat, double depth) {

@@ -59,6 +59,10 @@ struct FrictionState {
 // around (the motion it opposes went through the whole band in between). Such a kink inside an integrator step is
 // what its error estimate misjudges: the island ends the step there (EventDetector::first_law_change).
 bool friction_switched(const FrictionState& a, const FrictionState& b);
+// Whether such a switch is only terms entering or leaving their bands. fricstep is C1 at its band's edge (its slope is
+// 0 there, docs/model.md#fricstep), so the force keeps its first derivative through such a switch: a kink in the
+// second, which costs a step that crosses it near its start far less than its error (EventDetector::first_law_change).
+bool band_edges_only(const FrictionState& a, const FrictionState& b);
 
 // Friction smoothing: the sharpness k of fricstep (s/m) and the largest rate (1/s) at which a smoothed friction term
 // may relax the motion it opposes (Options::friction_rate_limit; 0: no limit).

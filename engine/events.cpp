@@ -187,6 +187,7 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
     }
   };
   const double resolution = switch_resolution(span.t1 - span.t0);
+  const double crossed = span.t0 + band_edge_share(model_.integrator.method) * (span.t1 - span.t0);
   // Contacts within kTouch of zero depth carry nothing worth a cut (frozen balls touch at zero depth, and round-off
   // makes their forces of 1e-17 N come and go), as for contact changes.
   for (size_t a = 0, b = 0; a < start.size(); ++a) {
@@ -203,23 +204,26 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
     } else if (e->depth > kTouch && friction_switched(s0.friction, e->friction) &&
                moves(k, s0.friction, e->friction, span.t1 - span.t0)) {
       // Where the law first differs from the start's; where the contact stops pushing on the way, it has none. A
-      // switch within `resolution` of the start is where the last step was cut: the law after it is the one to keep
-      // (and one within it of the end is where this trial was cut).
+      // switch within `resolution` of the start is where the last step was cut, and a band edge before `crossed` is
+      // crossed: the law after either is the one to keep (and a switch within `resolution` of the end is where this
+      // trial was cut).
       FrictionState law = s0.friction;
+      auto law_at = [&](double t) { return FrictionState(force_at(k, balls_at(span, t, k))); };
       auto switched_at = [&](double t) {
         const ContactForce f = force_at(k, balls_at(span, t, k));
         return f.normal > 0 && friction_switched(law, FrictionState(f));
       };
+      // One pass for the switch at the start, one for each of the three terms' band edges crossed, one to find.
       double from = span.t0;
-      for (int pass = 0; pass < 2; ++pass) {
+      for (int pass = 0; pass < 5; ++pass) {
         const double at = locate(switched_at, from, resolution);
         if (at >= span.t1 - resolution) break;  // +inf included
-        if (at > span.t0 + resolution) {
+        if (at > span.t0 + resolution && (at >= crossed || pass == 4 || !band_edges_only(law, law_at(at)))) {
           found(at, false);
           break;
         }
         from = at;
-        law = FrictionState(force_at(k, balls_at(span, at, k)));
+        law = law_at(at);
       }
     }
   }

@@ -112,7 +112,7 @@ bool Island::cut_at_change(Trials& tr, double t, double& dt) {
   ContactKey touching;
   const double touch = detector_.first_touch(trial_, kept.separated, &touching);
   const double onset = std::min(change.begin > early ? change.begin : kInf, touch);
-  // Releases and friction switches end the step however early they come.
+  // Releases and friction switches end the step however early they come (bar the band edges first_law_change crosses).
   const auto law = detector_.first_law_change(trial_, start_record_, end_record_);
   const double cut = std::min({onset, change.end > early ? change.end : kInf, law.release, law.friction});
   if (cut >= t - kOnsetResolution) return go_on_to_touch(tr, dt);

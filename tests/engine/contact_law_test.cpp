@@ -1,5 +1,5 @@
 // The contact law's forms and the error control's units: the bed's component form (UpNormal) against the generic
-// law, what counts as a friction switch (friction_switched) and where a trial's switches are located
+// law, what counts as a friction switch (friction_switched, band_edges_only) and where a trial's switches are located
 // (EventDetector::first_law_change), and a spin held to the tolerance as a surface speed (BallErrorChecker).
 #include <algorithm>
 #include <random>
@@ -68,19 +68,41 @@ TEST(ContactLaw, FrictionSwitches) {
   EXPECT_TRUE(friction_switched(FrictionState(spin_a), FrictionState(spin_b)));
 }
 
-// A trial across friction switches of several contacts reports the first as the one to cut at and the second as
-// `next`, where the step after the cut ends (Island::integrate); a third is not looked for. Three balls slide apart on
-// the cloth, without spin, at 3, 2 and 1 cm/s: saturated friction mu m g takes slip off at mu g (the centre) plus
-// 5/2 mu g (the spin it builds), so each slip enters its band (1/k = 1 mm/s) at (u0 - 1e-3) / (3.5 mu g) = 4.22, 2.77
-// and 1.31 ms (in the order of the contacts' keys: each one found is earlier than the last). The trial is that constant
-// deceleration over 5 ms, a quadratic, which the span's cubic interpolant holds exactly; its end is evaluated by the
-// law (the slips there have turned around).
-TEST(ContactLaw, TrialReportsTheNextSwitchAfterTheFirst) {
-  const double u[] = {0.03, 0.02, 0.01}, mu = 0.2, h = 5e-3;
+// Of the switches, band edges alone (a term entering or leaving its band, with or without the rate limit's widening)
+// keep the force's first derivative; the rate limit setting in inside the band and a saturated term turned around do
+// not.
+TEST(ContactLaw, BandEdgesOnly) {
+  ContactForce sliding, in_band, limited, reversed, rolling_in, spin_a, spin_b;
+  sliding.friction = {-0.3, 0.0, 0.0};
+  in_band = limited = reversed = rolling_in = sliding;
+  in_band.friction = {-0.1, 0.0, 0.0};
+  in_band.bands = kSlipInBand;
+  limited.bands = kSlipInBand | kSlipLimited;
+  reversed.friction = {0.3, 0.0, 0.0};
+  rolling_in.bands = kRollInBand;
+  EXPECT_TRUE(band_edges_only(FrictionState(sliding), FrictionState(in_band)));
+  EXPECT_TRUE(band_edges_only(FrictionState(in_band), FrictionState(sliding)));
+  EXPECT_TRUE(band_edges_only(FrictionState(sliding), FrictionState(limited)));  // into a band the limit widened
+  EXPECT_TRUE(band_edges_only(FrictionState(in_band), FrictionState(rolling_in)));
+  EXPECT_FALSE(band_edges_only(FrictionState(in_band), FrictionState(limited)));  // the limit set in: a kink in N
+  EXPECT_FALSE(band_edges_only(FrictionState(sliding), FrictionState(reversed)));
+  spin_a.spin_torque = 1e-4, spin_b.spin_torque = -1e-4;
+  spin_b.bands = kSlipInBand;
+  EXPECT_FALSE(band_edges_only(FrictionState(spin_a), FrictionState(spin_b)));
+}
+
+// The law changes first_law_change finds on a trial of h seconds in which balls slide apart on the cloth, without
+// spin, at the speeds u (m/s), integrated by `method`: saturated friction mu m g takes slip off at mu g (the centre)
+// plus 5/2 mu g (the spin it builds), so each slip enters its band (1/k = 1 mm/s) at (u - 1e-3) / (3.5 mu g). The
+// trial is that constant deceleration, a quadratic, which the span's cubic interpolant holds exactly; its end is
+// evaluated by the law (the slips there may have turned around).
+EventDetector::LawChanges sliding_apart(const std::vector<double>& u, double h, const std::string& method) {
   nlohmann::json balls = nlohmann::json::array();
-  for (int i = 0; i < 3; ++i)
+  for (size_t i = 0; i < u.size(); ++i)
     balls.push_back({{"id", std::to_string(i)}, {"position", {0.5 * i, kR, 0}}, {"velocity", {0, 0, u[i]}}});
-  Prepared p = prepare(scene(cloth_scene(balls)));
+  nlohmann::json doc = cloth_scene(balls);
+  doc["integrator"]["method"] = method;
+  Prepared p = prepare(scene(doc));
   const ModelIndex index(p.model);
   Dynamics f(p.model, index, p.state);
   StepSpan span;
@@ -89,7 +111,7 @@ TEST(ContactLaw, TrialReportsTheNextSwitchAfterTheFirst) {
   f(span.x0, span.f0, 0.0);
   std::vector<ContactRecord> start = f.recorded(), end;
   span.f1 = span.f0;
-  for (int i = 0; i < 3; ++i) {
+  for (size_t i = 0; i < u.size(); ++i) {
     // The rest on the bed stays as it is (its vertical force balances the weight to round-off).
     span.f0[kBallDofs * i + 1] = span.f0[kBallDofs * i + 4] = 0.0;
     const Vec3 v = velocity(span.x0, i), a = velocity(span.f0, i), alpha = spin(span.f0, i);
@@ -106,12 +128,33 @@ TEST(ContactLaw, TrialReportsTheNextSwitchAfterTheFirst) {
   auto by_key = [](const ContactRecord& x, const ContactRecord& y) { return x.key < y.key; };
   std::sort(start.begin(), start.end(), by_key);
   std::sort(end.begin(), end.end(), by_key);
-  const EventDetector::LawChanges law = EventDetector(p.model, index).first_law_change(span, start, end);
-  const double rate = 3.5 * mu * kG;
+  return EventDetector(p.model, index).first_law_change(span, start, end);
+}
+
+// A trial across friction switches of several contacts reports the first as the one to cut at and the second as
+// `next`, where the step after the cut ends (Island::integrate); a third is not looked for. Three balls slide apart at
+// 3, 2 and 1 cm/s (sliding_apart): their slips enter their bands at 4.22, 2.77 and 1.31 ms of a 5 ms trial, in the
+// order of the contacts' keys (each one found is earlier than the last).
+TEST(ContactLaw, TrialReportsTheNextSwitchAfterTheFirst) {
+  const double u[] = {0.03, 0.02, 0.01}, rate = 3.5 * 0.2 * kG, h = 5e-3;
+  const EventDetector::LawChanges law = sliding_apart({u[0], u[1], u[2]}, h, "dopri5");
   // Each located just past the switch, to the resolution of a switch on a span this long.
   EXPECT_NEAR(law.friction, (u[2] - 1e-3) / rate, switch_resolution(h));
   EXPECT_NEAR(law.next, (u[1] - 1e-3) / rate, switch_resolution(h));
   EXPECT_EQ(law.release, std::numeric_limits<double>::infinity());
+}
+
+// Band edges within the first 1 % of a Runge-Kutta trial are crossed. The slip enters its band at 0.2 % of the trial
+// and the centre's speed, falling at mu g, enters the rolling resistance's at 0.7 %; the switch reported is where the
+// slip leaves its band on the other side, (u + 1e-3) / (3.5 mu g), at 6 %. Bulirsch-Stoer, whose extrapolation wants
+// a smooth right-hand side, cuts at the first entry however early.
+TEST(ContactLaw, BandEdgesNearTheStartAreCrossedByRungeKutta) {
+  const double rate = 3.5 * 0.2 * kG, h = 5e-3, entry = 0.002 * h, u = 1e-3 + rate * entry;
+  for (const char* method : {"dopri5", "cash_karp54"}) {
+    const EventDetector::LawChanges law = sliding_apart({u}, h, method);
+    EXPECT_NEAR(law.friction, (u + 1e-3) / rate, switch_resolution(h)) << method;
+  }
+  EXPECT_NEAR(sliding_apart({u}, h, "bulirsch_stoer").friction, entry, switch_resolution(h));
 }
 
 // abs_tol holds a position in m, a velocity in m/s and a spin w as the surface speed R w in m/s: on a ball of radius
