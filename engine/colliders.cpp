@@ -31,7 +31,7 @@ Penetration from_point(const Vec3& p, double r, const Vec3& q, double rc) {
 // The horizontal unit direction of an arc wall's end: its middle turned by the half angle, towards the side
 // (-toward.z, 0, toward.x) when sign is +1.
 Vec3 arc_end(const ArcWall& s, double sign) {
-  return std::cos(s.half_angle) * s.toward + sign * std::sin(s.half_angle) * Vec3{-s.toward.z, 0.0, s.toward.x};
+  return s.cos_half * s.toward + sign * s.sin_half * Vec3{-s.toward.z, 0.0, s.toward.x};
 }
 
 struct Probe {
@@ -82,7 +82,7 @@ struct Probe {
     const Vec3 e = rho > 0 ? d / rho : s.toward;
     const double y = std::clamp(p.y, s.bottom, s.top);
     const Vec3 axis{s.center.x, y, s.center.z};
-    if (glm::dot(e, s.toward) >= std::cos(s.half_angle)) {
+    if (glm::dot(e, s.toward) >= s.cos_half) {
       const double q = std::clamp(rho, s.radius, outer);
       if (q != rho || y != p.y) return from_point(p, r, axis + q * e, 0.0);
       const double faces[4] = {rho - s.radius, outer - rho, s.top - p.y, p.y - s.bottom};
@@ -100,6 +100,11 @@ struct Probe {
 BoundedPlane::BoundedPlane(const Vec3& origin, const Vec3& u, const Vec3& v, std::vector<Hole> holes)
     : origin(origin), u(u), v(v), holes(std::move(holes)), normal(glm::normalize(glm::cross(u, v))),
       uu(glm::dot(u, u)), vv(glm::dot(v, v)) {}
+
+ArcWall::ArcWall(const Vec3& center, double radius, double thickness, const Vec3& toward, double half_angle, double bottom,
+                 double top)
+    : center(center), radius(radius), thickness(thickness), toward(toward), half_angle(half_angle), bottom(bottom),
+      top(top), cos_half(std::cos(half_angle)), sin_half(std::sin(half_angle)) {}
 
 std::optional<Penetration> penetration(const Shape& shape, const Vec3& p, double r, double within) {
   return std::visit(Probe{p, r, within}, shape);
@@ -127,7 +132,7 @@ Bounds bounds(const Shape& shape) {
     const double outer = s->radius + s->thickness;
     for (const double sign : {-1.0, 1.0}) take(arc_end(*s, sign), s->radius), take(arc_end(*s, sign), outer);
     for (const Vec3& dir : {Vec3{1, 0, 0}, Vec3{-1, 0, 0}, Vec3{0, 0, 1}, Vec3{0, 0, -1}})
-      if (glm::dot(dir, s->toward) >= std::cos(s->half_angle)) take(dir, outer);
+      if (glm::dot(dir, s->toward) >= s->cos_half) take(dir, outer);
     b.lo.y = s->bottom, b.hi.y = s->top;
     return b;
   }

@@ -58,12 +58,15 @@ struct Capsule {
 // from height `bottom` to `top`. A table puts one around the back of each pocket's hole (docs/model.md#pockets): its
 // inner face stops a ball that crosses the hole, its outer face one that comes from behind.
 struct ArcWall {
+  ArcWall(const Vec3& center, double radius, double thickness, const Vec3& toward, double half_angle, double bottom,
+          double top);
   Vec3 center;          // a point of the axis (its height is not used)
   double radius;        // m, of the inner face
   double thickness;     // m
   Vec3 toward;          // unit, horizontal: the middle of the arc
   double half_angle;    // rad, in (0, pi]
   double bottom, top;   // m, heights (y)
+  double cos_half, sin_half;  // of half_angle, which every probe wants
 };
 
 using Shape = std::variant<Plane, BoundedPlane, StaticSphere, Capsule, ArcWall>;
