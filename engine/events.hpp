@@ -33,11 +33,11 @@ struct Exit {
 inline double switch_resolution(double step) { return std::max(kTimeResolution, kSwitchResolution * step); }
 
 // The share of a step within which method m crosses a friction term's band edge rather than ending the step there
-// (band_edges_only): kCrossShare for the Runge-Kutta pairs, whose stages see the kink's second-derivative jump at eps h
+// (band_edges_only): kEarlyShare for the Runge-Kutta pairs, whose stages see the kink's second-derivative jump at eps h
 // as an error of order eps^2 h^3; 0 for Bulirsch-Stoer, whose extrapolation assumes a smooth right-hand side, and for
 // Rosenbrock 4, whose Jacobian does.
 inline double band_edge_share(Method m) {
-  return m == Method::CashKarp54 || m == Method::DormandPrince5 ? kCrossShare : 0.0;
+  return m == Method::CashKarp54 || m == Method::DormandPrince5 ? kEarlyShare : 0.0;
 }
 
 class EventDetector {

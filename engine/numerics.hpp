@@ -56,9 +56,9 @@ inline constexpr double kSnapShare = 0.03;
 // A friction switch whose terms move the velocities by less than this share of abs_tol over the step is no kink
 // worth a cut (EventDetector::moves).
 inline constexpr double kSwitchMoveShare = 0.01;
-// A friction term entering or leaving its band this close to a step's start, as a share of the step, is crossed
-// rather than cut at (band_edge_share): as close as an onset is left to the next step.
-inline constexpr double kCrossShare = 0.01;
+// A change this close to a step's start, as a share of the step, does not end it: a contact's onset or end is left to
+// the next step (Island::cut_at_change), a friction term's band edge is crossed (band_edge_share).
+inline constexpr double kEarlyShare = 0.01;
 // Attempts of one step redone to end at a contact change before it is redone with the plain law.
 inline constexpr int kMaxRedos = 8;
 

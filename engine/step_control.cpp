@@ -108,7 +108,7 @@ bool Island::cut_at_change(Trials& tr, double t, double& dt) {
   end_record_ = dynamics_.recorded();
   std::sort(end_record_.begin(), end_record_.end(), by_key);
   const auto change = detector_.first_contact_change(trial_, integ_, kept, &end_record_, &start_record_);
-  const double early = span_.t1 + 0.01 * tr.tried;
+  const double early = span_.t1 + kEarlyShare * tr.tried;
   ContactKey touching;
   const double touch = detector_.first_touch(trial_, kept.separated, &touching);
   const double onset = std::min(change.begin > early ? change.begin : kInf, touch);

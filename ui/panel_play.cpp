@@ -134,12 +134,6 @@ void tool_buttons(Lab& lab) {
   }
 }
 
-std::string speed_text(const CueStrike& cue, const BallSpec& ball) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f m/s", glm::length(strike(cue, ball.mass, ball.radius).velocity));
-  return text;
-}
-
 void aim_readouts(const Lab& lab, const CueStrike& cue) {
   const int c = scene_ball(lab.scene, cue.ball);
   if (c < 0) return;
@@ -181,8 +175,10 @@ void aim_section(Lab& lab) {
     ImGui::SetTooltip("the cue stick's speed at the tip; the ball leaves faster, as the stick is heavier (the speed "
                       "it leaves at is shown under the slider)\nUp/Down 0.25 m/s, Shift 1 m/s, Ctrl 0.02 m/s");
   // Right under it: a preset's notes speak of the ball's speed, which a trial compared with the stick's.
-  if (const int c = scene_ball(lab.scene, cue.ball); c >= 0)
-    text_wrapped("the cue ball leaves at %s", speed_text(cue, lab.scene.balls[c].spec).c_str());
+  if (const int c = scene_ball(lab.scene, cue.ball); c >= 0) {
+    const BallSpec& ball = lab.scene.balls[c].spec;
+    text_wrapped("the cue ball leaves at %.2f m/s", glm::length(strike(cue, ball.mass, ball.radius).velocity));
+  }
   double aim = cue.aim * 180 / M_PI, elevation = cue.elevation * 180 / M_PI;
   f.label("aim");
   if (ImGui::DragScalar("##aim", ImGuiDataType_Double, &aim, 0.01f, nullptr, nullptr, "%.2f deg")) {

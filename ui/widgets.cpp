@@ -267,7 +267,7 @@ void same_line_if_checkbox_fits(const char* next) {
 }
 
 void bar_chart(const char* id, const std::vector<Bar>& shown, double scale, const char* unit) {
-  if (shown.empty() || !(scale > 0)) return;
+  if (shown.empty() || !(scale > 0) || !std::isfinite(scale)) return;
   // Round-off (a billionth of the scale and less: 1e-16 J of height at rest) reads and draws as 0.
   std::vector<Bar> bars = shown;
   for (Bar& b : bars)
