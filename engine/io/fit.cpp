@@ -145,7 +145,17 @@ ceres::CostFunction* shot_cost(const Context& ctx, size_t s, double window, bool
   return f;
 }
 
-// Keeps the strike physical: speed 0.3-15 m/s, tip within 0.6 R, elevation 0-60 deg, the strike before the ball moves.
+// The earliest strike the cue ball's track allows: the scene starts it where it was first seen, so it was struck after
+// the last sample that still shows it there, less the time the slowest strike (0.3 m/s) takes to move it kFirstMove.
+double earliest_strike(const MeasuredShot& m) {
+  double still = m.tracks.at(m.cue_ball).front().t;
+  for (const MeasuredSample& q : m.tracks.at(m.cue_ball))
+    if (q.t < m.first_move) still = q.t;
+  return still - kFirstMove / 0.3;
+}
+
+// Keeps the strike physical: speed 0.3-15 m/s, tip within 0.6 R, elevation 0-60 deg, the strike between the cue
+// ball's last still sample and its first moved one.
 void bound_cue(ceres::Problem& problem, const Context& ctx, size_t s, double* u) {
   const CueFit& c = ctx.cue_start[s];
   auto bound = [&](int k, double lo, double hi, double v0) {
@@ -155,7 +165,7 @@ void bound_cue(ceres::Problem& problem, const Context& ctx, size_t s, double* u)
   bound(0, 0.3, 15, c.speed);
   bound(2, -0.6, 0.6, c.side);
   bound(3, -0.6, 0.6, c.height);
-  bound(4, ctx.times[s].front() - 0.2, ctx.shots[s].first_move, c.strike_time);
+  bound(4, earliest_strike(ctx.shots[s]), ctx.shots[s].first_move, c.strike_time);
   if (ctx.cue_params > 5) bound(5, 0, 60, c.elevation_deg);
 }
 
@@ -179,39 +189,73 @@ ceres::Solver::Options solver_options(int threads, int iterations, CancelCallbac
   return o;
 }
 
-// One shot's cue alone on the first `window` s; returns the final cost.
-double fit_cue(const Context& ctx, size_t s, std::vector<double>& u, double window, int threads, int iterations) {
+// One shot's cue alone on the first `window` s, parameter `held` (if any) kept; returns the final cost.
+double fit_cue(const Context& ctx, size_t s, std::vector<double>& u, double window, int threads, int iterations,
+               int held = -1) {
   ceres::Problem problem;
   problem.AddResidualBlock(shot_cost(ctx, s, window, false), nullptr, u.data());
   bound_cue(problem, ctx, s, u.data());
+  if (held >= 0) problem.SetManifold(u.data(), new ceres::SubsetManifold(ctx.cue_params, {held}));
   ceres::Solver::Summary summary;
   CancelCallback cancel(ctx.cancel);
   ceres::Solve(solver_options(threads, iterations, &cancel), &problem, &summary);
   return summary.final_cost;
 }
 
-// The per-shot fits on windows growing from the first moves to the whole shot, each from the last one's strike; at
-// kRestartWindows every tip offset of kSideStarts is tried too and the best kept (side shows only after the first
-// cushion, and the path's error can have a valley for each sign).
+// The per-shot fits on windows growing from the first moves to the whole shot, each from the last one's answers. Before
+// the first cushion the data cannot tell side from aim (the cue ball's heading is their sum) and a three-cushion path
+// has a valley for each sign of side, so the fits carry a beam: at kRestartWindows the best strike is fitted again
+// with each tip offset of kSideStarts held (aim and speed take the heading the data shows with it); after the first
+// window all of them go on, after later ones up to kBeam distinct strikes within kBeamRatio of the best cost
+// (docs/fit.md).
 constexpr double kWindows[] = {0.3, 0.6, 1.0, 1.5, 2.0, 3.0, 4.0, 5.5, 7.0, 9.0, 12.0};
-constexpr double kRestartWindows[] = {1.0, 2.0, 4.0};
-std::vector<double> fit_alone(const Context& ctx, size_t s, std::vector<double> u) {
+constexpr double kRestartWindows[] = {0.3, 1.0, 2.0, 4.0};
+constexpr size_t kBeam = std::size(kSideStarts) + 1;
+constexpr double kBeamRatio = 2.0;
+constexpr int kSide = 2;  // side's place in a strike (kCueScale's order)
+
+using Fitted = std::pair<double, std::vector<double>>;  // a window's final cost, the strike (u)
+
+// The strikes that go on: the best kBeam distinct ones within `ratio` of the best cost, the best always.
+std::vector<std::vector<double>> keep_beam(std::vector<Fitted> fitted, double ratio) {
+  for (Fitted& f : fitted)
+    if (!std::isfinite(f.first)) f.first = INFINITY;  // a strike the scene refused
+  std::stable_sort(fitted.begin(), fitted.end(), [](const Fitted& x, const Fitted& y) { return x.first < y.first; });
+  std::vector<std::vector<double>> beam;
+  for (const auto& [cost, u] : fitted) {
+    const bool same = std::any_of(beam.begin(), beam.end(), [&](const std::vector<double>& b) {
+      for (size_t k = 0; k < b.size(); ++k)
+        if (std::abs(b[k] - u[k]) > 1e-3) return false;
+      return true;
+    });
+    if (beam.empty() || (!same && beam.size() < kBeam && cost <= ratio * fitted.front().first)) beam.push_back(u);
+  }
+  return beam;
+}
+
+std::vector<double> fit_alone(const Context& ctx, size_t s, const std::vector<double>& u0) {
   const double length = ctx.times[s].back() - ctx.times[s].front();
   const double lead = ctx.shots[s].first_move - ctx.times[s].front();
+  std::vector<std::vector<double>> beam{u0};
   for (double w : kWindows) {
     const double window = std::min(length, lead + w);
-    std::vector<std::vector<double>> tries{u};
+    std::vector<Fitted> fitted;
+    for (std::vector<double> u : beam) {
+      const double cost = fit_cue(ctx, s, u, window, 1, 25);
+      fitted.emplace_back(cost, u);
+    }
     if (std::find(std::begin(kRestartWindows), std::end(kRestartWindows), w) != std::end(kRestartWindows))
       for (double side : kSideStarts) {
-        tries.push_back(u);
-        tries.back()[2] = 1 + (side - ctx.cue_start[s].side) / kCueScale[2];
+        std::vector<double> u = beam.front();
+        u[kSide] = 1 + (side - ctx.cue_start[s].side) / kCueScale[kSide];
+        const double cost = fit_cue(ctx, s, u, window, 1, 25, kSide);
+        fitted.emplace_back(cost, u);
       }
-    double best = INFINITY;
-    for (std::vector<double>& t : tries)
-      if (const double cost = fit_cue(ctx, s, t, window, 1, 25); cost < best) best = cost, u = t;
+    beam = keep_beam(std::move(fitted), w == kWindows[0] ? INFINITY : kBeamRatio);
     if (ctx.window_done) ctx.window_done();
-    if (window >= length || ctx.cancelled()) return u;
+    if (window >= length || ctx.cancelled()) return beam.front();
   }
+  std::vector<double> u = beam.front();
   fit_cue(ctx, s, u, length, 1, 25);
   return u;
 }
@@ -271,11 +315,13 @@ double squared_error(const Context& ctx, const Scene& scene, const std::vector<s
 }
 
 // Every strike and the shared values together.
-// `windows`: per shot, the s of it the joint fit sees (INFINITY: all).
+// `windows`: per shot, the s of it the joint fit sees (INFINITY: all). A shot followed for less than the first window
+// of the fits alone is left out: its few samples would hold neither its strike nor the shared values.
 ceres::Problem joint_problem(const Context& ctx, std::vector<std::vector<double>>& cue_u, std::vector<double>& shared_u,
                              const std::vector<double>& windows) {
   ceres::Problem problem;
   for (size_t s = 0; s < ctx.shots.size(); ++s) {
+    if (windows[s] < ctx.shots[s].first_move - ctx.times[s].front() + kWindows[0]) continue;
     problem.AddResidualBlock(shot_cost(ctx, s, windows[s], !shared_u.empty()), nullptr,
                              shared_u.empty() ? std::vector<double*>{cue_u[s].data()}
                                               : std::vector<double*>{cue_u[s].data(), shared_u.data()});
@@ -321,7 +367,7 @@ CueFit initial_cue(const Scene& base, const MeasuredShot& m) {
   const double v = std::hypot(b.x - a.x, b.z - a.z) / dt;
   CueFit c;
   c.aim_deg = std::atan2(-(b.z - t[0].z), b.x - t[0].x) / kDeg;  // heading from the start: 0 = +x, 90 = -z
-  c.strike_time = std::max(t[0].t, a.t - std::hypot(a.x - t[0].x, a.z - t[0].z) / std::max(v, 0.05));
+  c.strike_time = std::max(earliest_strike(m), a.t - std::hypot(a.x - t[0].x, a.z - t[0].z) / std::max(v, 0.05));
   const Scene probe = measured_scene(base, m, CueFit{1.0, c.aim_deg, 0, 0, 0, 0});
   const int cue = [&] {
     for (size_t i = 0; i < probe.balls.size(); ++i)
@@ -406,6 +452,7 @@ FitResult fit_measured(const Scene& base, const std::vector<MeasuredShot>& shots
     const Scene now = ctx.with(ctx.fixed);
     parallel_in_order(0, shots.size(), settings.threads, [&](size_t s) { windows[s] = followed(ctx, s, now, cue_u[s]); });
     ceres::Problem problem = joint_problem(ctx, cue_u, shared_u, windows);
+    if (problem.NumResidualBlocks() == 0) break;  // no shot is followed far enough to tell the shared values
     CancelCallback cancel(settings.cancel);
     ceres::Solve(solver_options(settings.threads, settings.max_iterations, &cancel), &problem, &summary);
     iterations += static_cast<int>(summary.iterations.size());

@@ -108,6 +108,8 @@ TEST(Fit, RecoversASharedMaterialFromTwoShots) {
   EXPECT_NEAR(r.values[0], 0.006, 0.00012);  // within 2 %
   EXPECT_LT(r.shots[0].rms.at("white"), 2 * kNoise);
   EXPECT_LT(r.shots[1].rms.at("white"), 2 * kNoise);
+  for (const ShotFit& f : r.shots)  // the cue ball is seen still at t = 0: not struck before, less 5 mm at 0.3 m/s
+    EXPECT_GE(f.cue.strike_time, -kFirstMove / 0.3) << f.name;
 }
 
 TEST(Fit, ARealMeasuredShotIsFollowedToWithinFiveCentimetres) {
