@@ -55,7 +55,6 @@ void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/)
   }
   for (int i = 0; i < n; ++i) {
     if (!state_.active(i)) continue;  // pocketed or asleep: frozen, zero derivative
-    const BallSpec& b = model_.balls[i];
     if (state_.rolling(i)) {
       rolling_derivative(model_, index_, state_, x.data(), i, &dxdt[9 * i]);
       continue;
@@ -65,8 +64,8 @@ void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/)
       continue;
     }
     set_position(dxdt, i, velocity(x, i));
-    set_velocity(dxdt, i, force_[i] / b.mass);
-    set_spin(dxdt, i, torque_[i] / b.inertia());
+    set_velocity(dxdt, i, force_[i] * index_.inv_mass[i]);
+    set_spin(dxdt, i, torque_[i] * index_.inv_inertia[i]);
   }
   apply_rods(x, dxdt);
 }
@@ -109,9 +108,9 @@ void sliding_derivative(const Model& model, const ModelIndex& index, const State
   // The depth is the static sink; the friction terms do not read it.
   add_friction(index.collider_material(bed), collider_kinematics(index, i, b.radius, v, w, n, 0.0),
                {model.options.friction_sharpness, model.options.friction_rate_limit}, f);
-  Vec3 a = f.force / b.mass;
+  Vec3 a = f.force * index.inv_mass[i];
   a -= glm::dot(a, n) * n;  // round-off of the projections in add_friction
-  const Vec3 alpha = contact_torque(f, n, b.radius) / b.inertia();
+  const Vec3 alpha = contact_torque(f, n, b.radius) * index.inv_inertia[i];
   for (int c = 0; c < 3; ++c) {
     dxdt[c] = v[c];
     dxdt[3 + c] = a[c];

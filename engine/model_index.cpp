@@ -107,11 +107,12 @@ ModelIndex::ModelIndex(const ModelIndex& scene, const Model& sub) : ModelIndex(s
 }
 
 void ModelIndex::index_balls(const Model& model) {
-  inv_mass.clear(), inv_inertia_r2.clear();
+  inv_mass.clear(), inv_inertia_r2.clear(), inv_inertia.clear();
   max_radius = 0;
   for (const BallSpec& b : model.balls) {
     inv_mass.push_back(1.0 / b.mass);
     inv_inertia_r2.push_back(b.radius * b.radius / b.inertia());
+    inv_inertia.push_back(1.0 / b.inertia());
     max_radius = std::max(max_radius, b.radius);
   }
   rods_on.assign(model.balls.size(), 0);

@@ -52,8 +52,10 @@ struct ModelIndex {
   std::vector<int> floor_of;  // each collider's index in plane_like (and floor), or -1
   double gravity = 0;         // m/s^2, |g|: the step caps and the regimes' right-hand sides want it for every ball
   double gravity_across = 0;  // m/s^2, g's horizontal part (0 unless gravity is tilted): a flying ball's only one
-  // Each ball's mobilities (contact_force.hpp): 1/m (1/kg) and r^2/I (1/kg); the largest radius (m).
-  std::vector<double> inv_mass, inv_inertia_r2;
+  // Each ball's mobilities (contact_force.hpp): 1/m (1/kg) and r^2/I (1/kg), and 1/I (1/(kg m^2)), by which the
+  // right-hand sides multiply its force and torque (a multiplication costs a fraction of a division); the largest
+  // radius (m).
+  std::vector<double> inv_mass, inv_inertia_r2, inv_inertia;
   double max_radius = 0;
   std::vector<int> rods_on;  // how many rods hold each ball
 
