@@ -101,8 +101,8 @@ BoundedPlane::BoundedPlane(const Vec3& origin, const Vec3& u, const Vec3& v, std
     : origin(origin), u(u), v(v), holes(std::move(holes)), normal(glm::normalize(glm::cross(u, v))),
       uu(glm::dot(u, u)), vv(glm::dot(v, v)) {}
 
-ArcWall::ArcWall(const Vec3& center, double radius, double thickness, const Vec3& toward, double half_angle, double bottom,
-                 double top)
+ArcWall::ArcWall(const Vec3& center, double radius, double thickness, const Vec3& toward, double half_angle,
+                 double bottom, double top)
     : center(center), radius(radius), thickness(thickness), toward(toward), half_angle(half_angle), bottom(bottom),
       top(top), cos_half(std::cos(half_angle)), sin_half(std::sin(half_angle)) {}
 

@@ -59,6 +59,8 @@ struct Context {
   const std::atomic<bool>* cancel = nullptr;
   std::function<void()> window_done;  // after each window of a strike fitted alone
   bool cancelled() const { return cancel && *cancel; }
+  // s from shot s's first sample to its cue ball's first move: the fit windows are counted from there.
+  double lead(size_t s) const { return shots[s].first_move - times[s].front(); }
 
   CueFit cue(size_t s, const double* u) const {
     const CueFit& c0 = cue_start[s];
@@ -235,10 +237,9 @@ std::vector<std::vector<double>> keep_beam(std::vector<Fitted> fitted, double ra
 
 std::vector<double> fit_alone(const Context& ctx, size_t s, const std::vector<double>& u0) {
   const double length = ctx.times[s].back() - ctx.times[s].front();
-  const double lead = ctx.shots[s].first_move - ctx.times[s].front();
   std::vector<std::vector<double>> beam{u0};
   for (double w : kWindows) {
-    const double window = std::min(length, lead + w);
+    const double window = std::min(length, ctx.lead(s) + w);
     std::vector<Fitted> fitted;
     for (std::vector<double> u : beam) {
       const double cost = fit_cue(ctx, s, u, window, 1, 25);
@@ -321,7 +322,7 @@ ceres::Problem joint_problem(const Context& ctx, std::vector<std::vector<double>
                              const std::vector<double>& windows) {
   ceres::Problem problem;
   for (size_t s = 0; s < ctx.shots.size(); ++s) {
-    if (windows[s] < ctx.shots[s].first_move - ctx.times[s].front() + kWindows[0]) continue;
+    if (windows[s] < ctx.lead(s) + kWindows[0]) continue;
     problem.AddResidualBlock(shot_cost(ctx, s, windows[s], !shared_u.empty()), nullptr,
                              shared_u.empty() ? std::vector<double*>{cue_u[s].data()}
                                               : std::vector<double*>{cue_u[s].data(), shared_u.data()});
