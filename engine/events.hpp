@@ -1,6 +1,7 @@
 // Finding events. After every accepted step the detector compares what holds at the step's end with
-// what held at its start (contacts, motion state, in play) and locates each change by bisection on the step's
-// dense output, so an event's time does not depend on where the step happened to end.
+// what held at its start (contacts, motion state, in play) and locates each change on the step's dense output (a depth
+// or height crossing by a bracketing root finder, the rest by bisection), so an event's time does not depend on where
+// the step happened to end.
 #pragma once
 #include <algorithm>
 #include <string>
@@ -101,13 +102,12 @@ class EventDetector {
   // Whether a friction switch of contact `key` between laws a and b, over a step of h seconds, can matter (events.cpp).
   bool moves(const Key& key, const FrictionState& a, const FrictionState& b, double h) const;
   bool released(const Key& key, const double* x) const;  // not touching, or its unclamped normal force <= 0
-  // The earliest time in the span at which changed(key) holds for one of the keys, to `resolution`; `which`, when
-  // given, gets that key.
-  double first(const StepSpan& span, const std::vector<ContactKey>& keys, double resolution,
-               bool (EventDetector::*changed)(const Key&, const double*) const, Key* which = nullptr);
+  // When the depth of contact `key` passes `level` (m) inside the span, going deeper (begins) or shallower, to
+  // `resolution` (s): the span's end is past it, its start is not.
+  double crossing(const StepSpan& span, const Key& key, bool begins, double resolution, double level = kTouch) const;
   std::string body_name(int other) const;
   // The key's balls (one, or two for a ball pair) at time t of the span, in scratch_; the other balls' numbers there
-  // are stale. What every bisection's test looks at.
+  // are stale. What every root finder's and bisection's test looks at.
   const double* balls_at(const StepSpan& span, double t, const Key& key) const;
 
   const Model& model_;
