@@ -5,11 +5,13 @@
 #include <ceres/ceres.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numbers>
 #include <sstream>
-#include <thread>
 
 #include "shotlab/io/json_reader.hpp"
 #include "shotlab/io/parallel.hpp"
@@ -136,11 +138,46 @@ struct ShotCost {
   }
 };
 
-ceres::CostFunction* shot_cost(const Context& ctx, size_t s, double window, bool shared_block) {
-  ceres::NumericDiffOptions nd;
-  nd.relative_step_size = kStepSize;
-  auto* f = new ceres::DynamicNumericDiffCostFunction<ShotCost, ceres::CENTRAL>(
-      new ShotCost{&ctx, s, window, shared_block}, ceres::TAKE_OWNERSHIP, nd);
+// A shot's residuals and their central differences, taken as Ceres's numeric differentiation takes them (step
+// h = max(sqrt(eps), |x| kStepSize), (f(x + h) - f(x - h)) (1/h) / 2), each column on its own: on `jobs` threads the
+// Jacobian comes out bit for bit as on one. The joint fit's threads are these, not Ceres's: Ceres adds its threads'
+// shares in the order they finish (ceres-solver issue 664), so its sums differ in the last bits from run to run, and
+// a fit of chaotic paths can take another way from there.
+class ShotCostFunction final : public ceres::DynamicCostFunction {
+ public:
+  ShotCostFunction(ShotCost cost, int jobs) : cost_(cost), jobs_(jobs) {}
+  bool Evaluate(double const* const* p, double* r, double** jacobians) const override {
+    if (!cost_(p, r)) return false;
+    if (!jacobians) return true;
+    const std::vector<int32_t>& sizes = parameter_block_sizes();
+    std::vector<std::pair<size_t, int>> columns;  // (block, index) of each column asked for
+    for (size_t b = 0; b < sizes.size(); ++b)
+      for (int j = 0; jacobians[b] && j < sizes[b]; ++j) columns.emplace_back(b, j);
+    std::atomic<bool> ok{true};
+    parallel_in_order(0, columns.size(), jobs_, [&](size_t c) {
+      const auto [b, j] = columns[c];
+      std::vector<std::vector<double>> x(sizes.size());
+      std::vector<const double*> at(sizes.size());
+      for (size_t k = 0; k < sizes.size(); ++k) x[k].assign(p[k], p[k] + sizes[k]), at[k] = x[k].data();
+      const double h = std::max(std::sqrt(std::numeric_limits<double>::epsilon()), std::abs(p[b][j]) * kStepSize);
+      std::vector<double> plus(static_cast<size_t>(num_residuals())), minus(plus.size());
+      x[b][j] = p[b][j] + h;
+      const bool up = cost_(at.data(), plus.data());
+      x[b][j] = p[b][j] - h;
+      if (!up || !cost_(at.data(), minus.data())) return void(ok = false);
+      const double scale = 1.0 / h / 2;
+      for (size_t k = 0; k < plus.size(); ++k) jacobians[b][k * sizes[b] + j] = (plus[k] - minus[k]) * scale;
+    });
+    return ok;
+  }
+
+ private:
+  ShotCost cost_;
+  int jobs_;
+};
+
+ceres::CostFunction* shot_cost(const Context& ctx, size_t s, double window, bool shared_block, int jobs) {
+  auto* f = new ShotCostFunction(ShotCost{&ctx, s, window, shared_block}, jobs);
   f->AddParameterBlock(ctx.cue_params);
   if (shared_block) f->AddParameterBlock(static_cast<int>(ctx.paths.size()));
   f->SetNumResiduals(static_cast<int>(ctx.residuals[s]));
@@ -180,27 +217,26 @@ struct CancelCallback : ceres::IterationCallback {
   }
 };
 
-ceres::Solver::Options solver_options(int threads, int iterations, CancelCallback* cancel) {
+// One thread (Ceres's default): the threads are the cost functions' (ShotCostFunction).
+ceres::Solver::Options solver_options(int iterations, CancelCallback* cancel) {
   ceres::Solver::Options o;
   o.callbacks.push_back(cancel);
   o.linear_solver_type = ceres::DENSE_SCHUR;
   o.max_num_iterations = iterations;
-  o.num_threads = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   o.function_tolerance = 1e-7;
   o.logging_type = ceres::SILENT;
   return o;
 }
 
 // One shot's cue alone on the first `window` s, parameter `held` (if any) kept; returns the final cost.
-double fit_cue(const Context& ctx, size_t s, std::vector<double>& u, double window, int threads, int iterations,
-               int held = -1) {
+double fit_cue(const Context& ctx, size_t s, std::vector<double>& u, double window, int iterations, int held = -1) {
   ceres::Problem problem;
-  problem.AddResidualBlock(shot_cost(ctx, s, window, false), nullptr, u.data());
+  problem.AddResidualBlock(shot_cost(ctx, s, window, false, 1), nullptr, u.data());
   bound_cue(problem, ctx, s, u.data());
   if (held >= 0) problem.SetManifold(u.data(), new ceres::SubsetManifold(ctx.cue_params, {held}));
   ceres::Solver::Summary summary;
   CancelCallback cancel(ctx.cancel);
-  ceres::Solve(solver_options(threads, iterations, &cancel), &problem, &summary);
+  ceres::Solve(solver_options(iterations, &cancel), &problem, &summary);
   return summary.final_cost;
 }
 
@@ -242,14 +278,14 @@ std::vector<double> fit_alone(const Context& ctx, size_t s, const std::vector<do
     const double window = std::min(length, ctx.lead(s) + w);
     std::vector<Fitted> fitted;
     for (std::vector<double> u : beam) {
-      const double cost = fit_cue(ctx, s, u, window, 1, 25);
+      const double cost = fit_cue(ctx, s, u, window, 25);
       fitted.emplace_back(cost, u);
     }
     if (std::find(std::begin(kRestartWindows), std::end(kRestartWindows), w) != std::end(kRestartWindows))
       for (double side : kSideStarts) {
         std::vector<double> u = beam.front();
         u[kSide] = 1 + (side - ctx.cue_start[s].side) / kCueScale[kSide];
-        const double cost = fit_cue(ctx, s, u, window, 1, 25, kSide);
+        const double cost = fit_cue(ctx, s, u, window, 25, kSide);
         fitted.emplace_back(cost, u);
       }
     beam = keep_beam(std::move(fitted), w == kWindows[0] ? INFINITY : kBeamRatio);
@@ -257,7 +293,7 @@ std::vector<double> fit_alone(const Context& ctx, size_t s, const std::vector<do
     if (window >= length || ctx.cancelled()) return beam.front();
   }
   std::vector<double> u = beam.front();
-  fit_cue(ctx, s, u, length, 1, 25);
+  fit_cue(ctx, s, u, length, 25);
   return u;
 }
 
@@ -317,13 +353,14 @@ double squared_error(const Context& ctx, const Scene& scene, const std::vector<s
 
 // Every strike and the shared values together.
 // `windows`: per shot, the s of it the joint fit sees (INFINITY: all). A shot followed for less than the first window
-// of the fits alone is left out: its few samples would hold neither its strike nor the shared values.
+// of the fits alone is left out: its few samples would hold neither its strike nor the shared values. `jobs`: threads
+// of each shot's differences.
 ceres::Problem joint_problem(const Context& ctx, std::vector<std::vector<double>>& cue_u, std::vector<double>& shared_u,
-                             const std::vector<double>& windows) {
+                             const std::vector<double>& windows, int jobs) {
   ceres::Problem problem;
   for (size_t s = 0; s < ctx.shots.size(); ++s) {
     if (windows[s] < ctx.lead(s) + kWindows[0]) continue;
-    problem.AddResidualBlock(shot_cost(ctx, s, windows[s], !shared_u.empty()), nullptr,
+    problem.AddResidualBlock(shot_cost(ctx, s, windows[s], !shared_u.empty(), jobs), nullptr,
                              shared_u.empty() ? std::vector<double*>{cue_u[s].data()}
                                               : std::vector<double*>{cue_u[s].data(), shared_u.data()});
     bound_cue(problem, ctx, s, cue_u[s].data());
@@ -452,16 +489,17 @@ FitResult fit_measured(const Scene& base, const std::vector<MeasuredShot>& shots
     std::vector<double> windows(shots.size(), INFINITY);
     const Scene now = ctx.with(ctx.fixed);
     parallel_in_order(0, shots.size(), settings.threads, [&](size_t s) { windows[s] = followed(ctx, s, now, cue_u[s]); });
-    ceres::Problem problem = joint_problem(ctx, cue_u, shared_u, windows);
+    ceres::Problem problem = joint_problem(ctx, cue_u, shared_u, windows, settings.threads);
     if (problem.NumResidualBlocks() == 0) break;  // no shot is followed far enough to tell the shared values
     CancelCallback cancel(settings.cancel);
-    ceres::Solve(solver_options(settings.threads, settings.max_iterations, &cancel), &problem, &summary);
+    ceres::Solve(solver_options(settings.max_iterations, &cancel), &problem, &summary);
     iterations += static_cast<int>(summary.iterations.size());
     say("joint fit, round " + std::to_string(round + 1) + ": " + summary.BriefReport());
   }
   if (!best_cue.empty()) cue_u = best_cue, shared_u = best_shared;  // empty: cancelled before a round ended
   ctx.robust = 0;  // the uncertainties and errors below are those of plain least squares, on the whole shots
-  ceres::Problem problem = joint_problem(ctx, cue_u, shared_u, std::vector<double>(shots.size(), INFINITY));
+  ceres::Problem problem =
+      joint_problem(ctx, cue_u, shared_u, std::vector<double>(shots.size(), INFINITY), settings.threads);
 
   std::vector<double*> blocks;
   std::vector<int> sizes;

@@ -4,7 +4,10 @@
 // shot (../shared/reference/measured, skipped where absent) is followed to within 5 cm. And the reader's errors.
 #include <cmath>
 #include <filesystem>
+#include <iterator>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "shotlab/io/fit.hpp"
 #include "shotlab/io/json_reader.hpp"
@@ -17,8 +20,9 @@ constexpr double kRate = 50;        // Hz, the tracker's clock
 constexpr double kNoise = 0.002;    // m, standard deviation of each coordinate
 constexpr double kStrikeAt = 0.013; // s after the first sample
 
-// The three-cushion preset played with `cue`, tracked: samples at 50 Hz from before the strike to rest.
-MeasuredShot tracked(const Scene& base, const CueFit& cue, uint64_t seed) {
+// The three-cushion preset played with `cue`, tracked: samples at 50 Hz from before the strike to rest, or for
+// `seconds` at most.
+MeasuredShot tracked(const Scene& base, const CueFit& cue, uint64_t seed, double seconds = 12) {
   MeasuredShot m;
   m.name = "engine-made";
   for (const InitialBall& b : base.balls) m.balls.push_back(b.spec.id), m.tracks[b.spec.id].push_back({0, b.position.x, b.position.z});
@@ -28,7 +32,7 @@ MeasuredShot tracked(const Scene& base, const CueFit& cue, uint64_t seed) {
   Simulation sim(std::move(p.model), std::move(p.state));
   std::mt19937_64 gen(seed);
   std::normal_distribution<double> noise(0, kNoise);
-  for (int k = 1; k < 12 * kRate && !sim.at_rest(); ++k) {
+  for (int k = 1; k < seconds * kRate && !sim.at_rest(); ++k) {
     const double t = k / kRate;
     if (t > kStrikeAt) sim.advance(t - kStrikeAt - sim.time());
     for (int i = 0; i < sim.state().ball_count(); ++i) {
@@ -110,6 +114,38 @@ TEST(Fit, RecoversASharedMaterialFromTwoShots) {
   EXPECT_LT(r.shots[1].rms.at("white"), 2 * kNoise);
   for (const ShotFit& f : r.shots)  // the cue ball is seen still at t = 0: not struck before, less 5 mm at 0.3 m/s
     EXPECT_GE(f.cue.strike_time, -kFirstMove / 0.3) << f.name;
+}
+
+// A fit's threads share out the columns of its numeric differences, each column worked out on its own, so the fit
+// comes out bit for bit the same on one thread as on two (where Ceres's own threads add their shares in the order they
+// finish). Three shots, so that their shares added in another order would show; each tracked for its first second,
+// so that the fits take seconds.
+TEST(Fit, TheSameFitOnOneThreadAsOnTwo) {
+  const Scene base = load_scene(preset("three_cushion.json"));
+  const CueFit cues[] = {{3.1, -33.7, 0.4, 0.2, 0, kStrikeAt}, {2.5, 20.0, -0.2, 0.1, 0, kStrikeAt},
+                         {2.8, 60.0, 0.1, 0.3, 0, kStrikeAt}};
+  std::vector<MeasuredShot> shots;
+  for (uint64_t k = 0; k < std::size(cues); ++k) {
+    shots.push_back(tracked(base, cues[k], 11 + k, 1.0));
+    shots.back().name = "shot " + std::to_string(k);
+  }
+  FitSettings settings;
+  settings.paths = {"materials.ball_cloth.friction", "materials.ball_cloth.rolling_resistance"};
+  settings.threads = 1;
+  const FitResult one = fit_measured(base, shots, settings);
+  settings.threads = 2;
+  const FitResult two = fit_measured(base, shots, settings);
+  EXPECT_GT(one.iterations, 0) << "the joint fit ran";
+  EXPECT_EQ(one.iterations, two.iterations);
+  for (size_t k = 0; k < one.values.size(); ++k) EXPECT_EQ(one.values[k], two.values[k]) << settings.paths[k];
+  for (size_t s = 0; s < shots.size(); ++s) {
+    const CueFit &a = one.shots[s].cue, &b = two.shots[s].cue;
+    EXPECT_EQ(a.speed, b.speed) << shots[s].name;
+    EXPECT_EQ(a.aim_deg, b.aim_deg) << shots[s].name;
+    EXPECT_EQ(a.side, b.side) << shots[s].name;
+    EXPECT_EQ(a.height, b.height) << shots[s].name;
+    EXPECT_EQ(a.strike_time, b.strike_time) << shots[s].name;
+  }
 }
 
 TEST(Fit, ARealMeasuredShotIsFollowedToWithinFiveCentimetres) {
