@@ -23,12 +23,12 @@ double bisect(double lo, double hi, const Changed& changed, double resolution = 
 }
 
 // The same for a change that is the sign of a continuous quantity: changed(t) holds where value(t) > 0 and fails where
-// value(t) < 0 (a depth past a level, a height below the bed). TOMS 748 (Alefeld, Potra and Shi, 1995) closes the
-// bracket on the root in a handful of evaluations where bisection takes twenty to forty; bisection finishes what it
-// leaves (a value with a jump, a root at an end). The answer keeps bisect's contract, changed there and not a
-// resolution earlier, and is the latest such time, as bisection's falls half a resolution past the root on average: a
-// step redone to end at an onset then touches by its own integration too, not on the interpolant alone (ending a hair
-// short of it, the break's steps had 12 % more rejected trials).
+// value(t) < 0 (a depth past a level, a height below the bed, a contact's pull). TOMS 748 (Alefeld, Potra and Shi,
+// 1995) closes the bracket on the root in a handful of evaluations where bisection takes twenty to forty; bisection
+// finishes what it leaves (a value with a jump, a root at an end). The answer keeps bisect's contract, changed there
+// and not a resolution earlier, and is the latest such time, as bisection's falls half a resolution past the root on
+// average: a step redone to end at an onset then touches by its own integration too, not on the interpolant alone
+// (ending a hair short of it, it would be rejected more often).
 template <class Changed, class Value>
 double locate(double lo, double hi, const Changed& changed, const Value& value, double resolution = kTimeResolution) {
   const double at_lo = value(lo), at_hi = value(hi);
@@ -196,12 +196,12 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
   // Where changed(t) first holds, from `from` on, searched only as far as the changes found so far make worth it: up
   // to the first if the contact has changed by then (it becomes the first), else up to the second (it becomes the
   // second); +inf where it has changed by neither. The span's end, where every contact looked at has changed, stands
-  // in for a change not found yet.
-  auto locate = [&](const auto& changed, double from, double resolution) {
+  // in for a change not found yet. find(lo, hi) locates a change bracketed there.
+  auto search = [&](const auto& changed, double from, const auto& find) {
     const double first = std::min(first_at, span.t1), second = std::min(next_at, span.t1);
-    if (first == span.t1 || changed(first)) return bisect(from, first, changed, resolution);
+    if (first == span.t1 || changed(first)) return find(from, first);
     if (second < span.t1 && !changed(second)) return inf;
-    return bisect(std::max(from, first), second, changed, resolution);
+    return find(std::max(from, first), second);
   };
   auto found = [&](double at, bool release) {
     if (at < first_at) {
@@ -224,9 +224,17 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
     const Key& k = s0.key;
     if (!e || e->normal <= 0) {
       // Located to 0.1 ns, past the point: the force is continuous through zero there, so a pulling force held for
-      // 0.1 ns costs an impulse of order (dF/dt) 1e-20 N s, and the step that follows sees the contact released.
-      auto released_at = [&](double t) { return released(k, balls_at(span, t, k)); };
-      if (const double at = locate(released_at, span.t0, kTimeResolution); at < inf) found(at, true);
+      // 0.1 ns costs an impulse of order (dF/dt) 1e-20 N s, and the step that follows sees the contact released. An
+      // unclamped contact that pulls at the end (normal < 0) so little that its pull since the release cannot matter
+      // lets the trial stand: a redo aimed at the release ends a hair before or after its own, and would be redone.
+      const bool pulls = e && e->normal < 0;
+      if (pulls && !pull_moves(k, e->normal, span.t1 - span.t0)) continue;
+      auto pull_at = [&](double t) { return pull(k, balls_at(span, t, k)); };
+      auto released_at = [&](double t) { return pull_at(t) >= 0; };
+      const double at = search(released_at, span.t0, [&](double lo, double hi) {
+        return locate(lo, hi, released_at, pull_at, kTimeResolution);
+      });
+      if (at < inf && !(pulls && !pull_moves(k, e->normal, span.t1 - at))) found(at, true);
     } else if (e->depth > kTouch && friction_switched(s0.friction, e->friction) &&
                moves(k, s0.friction, e->friction, span.t1 - span.t0)) {
       // Where the law first differs from the start's; where the contact stops pushing on the way, it has none. A
@@ -242,7 +250,8 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
       // One pass for the switch at the start, one for each of the three terms' band edges crossed, one to find.
       double from = span.t0;
       for (int pass = 0; pass < 5; ++pass) {
-        const double at = locate(switched_at, from, resolution);
+        const double at =
+            search(switched_at, from, [&](double lo, double hi) { return bisect(lo, hi, switched_at, resolution); });
         if (at >= span.t1 - resolution) break;  // +inf included
         if (at > span.t0 + resolution && (at >= crossed || pass == 4 || !band_edges_only(law, law_at(at)))) {
           found(at, false);
@@ -262,24 +271,36 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
 // is no kink worth a cut: a rolling resistance crossing its band while the ball slides, where its weight is nothing,
 // or a resting contact's terms stirred by round-off.
 bool EventDetector::moves(const Key& k, const FrictionState& a, const FrictionState& b, double h) const {
-  double mobility = index_.inv_mass[k.first] + index_.inv_inertia_r2[k.first];
-  if (k.second >= 0) mobility += index_.inv_mass[k.second] + index_.inv_inertia_r2[k.second];
   const double df = glm::length(b.friction - a.friction) + glm::length(b.rolling - a.rolling) +
                     std::abs(b.spin_torque - a.spin_torque) / model_.balls[k.first].radius;
-  return df * mobility * h >= kSwitchMoveShare * model_.integrator.abs_tol;
+  return df * mobility(k) * h >= kSwitchMoveShare * model_.integrator.abs_tol;
 }
 
-bool EventDetector::released(const Key& key, const double* x) const {
+// The pull of a released contact grows from zero at the release to |normal| at the span's end, so over the last h
+// seconds it moves the velocities by at most |normal| * mobility * h: under the share of the tolerance moves() allows
+// a friction switch, it is no change worth a cut.
+bool EventDetector::pull_moves(const Key& k, double normal, double h) const {
+  return -normal * mobility(k) * h >= kSwitchMoveShare * model_.integrator.abs_tol;
+}
+
+double EventDetector::mobility(const Key& k) const {
+  double m = index_.inv_mass[k.first] + index_.inv_inertia_r2[k.first];
+  if (k.second >= 0) m += index_.inv_mass[k.second] + index_.inv_inertia_r2[k.second];
+  return m;
+}
+
+double EventDetector::pull(const Key& key, const double* x) const {
   const auto [i, other] = key;
   const double ri = model_.balls[i].radius;
   if (other >= 0) {
     const Vec3 d = position(x, i) - position(x, other);
     const double dist = glm::length(d), depth = ri + model_.balls[other].radius - dist;
-    return depth <= 0 || normal_force(index_.ball_ball(), depth, -glm::dot(velocity(x, i) - velocity(x, other), d) / dist) <= 0;
+    if (depth <= 0) return 1.0;
+    return -normal_force(index_.ball_ball(), depth, -glm::dot(velocity(x, i) - velocity(x, other), d) / dist);
   }
   const auto pen = collider_penetration(model_, index_, -1 - other, position(x, i), ri, 0.0);
-  return !pen || pen->depth <= 0 ||
-         normal_force(index_.collider_material(-1 - other), pen->depth, -glm::dot(velocity(x, i), pen->normal)) <= 0;
+  if (!pen || pen->depth <= 0) return 1.0;
+  return -normal_force(index_.collider_material(-1 - other), pen->depth, -glm::dot(velocity(x, i), pen->normal));
 }
 
 double EventDetector::crossing(const StepSpan& span, const Key& key, bool begins, double resolution,

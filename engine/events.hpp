@@ -101,7 +101,13 @@ class EventDetector {
   bool touches(const Key& key, const double* x) const;   // depth > 0
   // Whether a friction switch of contact `key` between laws a and b, over a step of h seconds, can matter (events.cpp).
   bool moves(const Key& key, const FrictionState& a, const FrictionState& b, double h) const;
-  bool released(const Key& key, const double* x) const;  // not touching, or its unclamped normal force <= 0
+  // Whether an unclamped contact pulling with `normal` N (< 0) at a span's end, released for the last h seconds of
+  // it, can matter (events.cpp).
+  bool pull_moves(const Key& key, double normal, double h) const;
+  double mobility(const Key& key) const;  // 1/kg: the slip mobility of the key's balls, summed
+  // N: the contact's unclamped normal force at x, negated; 1 where it does not touch. Released where it is >= 0: a
+  // smooth quantity while the contact lasts, whose root a root finder closes in on.
+  double pull(const Key& key, const double* x) const;
   // When the depth of contact `key` passes `level` (m) inside the span, going deeper (begins) or shallower, to
   // `resolution` (s): the span's end is past it, its start is not.
   double crossing(const StepSpan& span, const Key& key, bool begins, double resolution, double level = kTouch) const;
