@@ -68,9 +68,16 @@ const char* motion_name(Motion m) {
   return names[static_cast<int>(m)];
 }
 
-Motion classify(const Model& model, const ModelIndex& index, const State& state, const double* x, int i) {
+Motion classify(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
+                double* margin) {
+  double least = 1.0;  // a margin past 1 (m or m/s) is far from any threshold: capped there
+  auto decides = [&](double quantity, double threshold) { least = std::min(least, std::abs(quantity - threshold)); };
+  auto answer = [&](Motion m) {
+    if (margin) *margin = least;
+    return m;
+  };
   if (!state.in_play[i])
-    return model.pocket_under(position(x, i), model.balls[i].radius) ? Motion::Pocketed : Motion::OffTable;
+    return answer(model.pocket_under(position(x, i), model.balls[i].radius) ? Motion::Pocketed : Motion::OffTable);
   const double r = model.balls[i].radius;
   const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
   Vec3 n{0.0};
@@ -79,22 +86,29 @@ Motion classify(const Model& model, const ModelIndex& index, const State& state,
   // (ModelIndex::floor) is as far up as a normal goes: the other colliders need no probe (a ball on the bed, in
   // every step's scan).
   for (size_t k = 0; k < index.plane_like.size() && best_up < 1; ++k)
-    if (const auto on_floor = floor_penetration(index, k, p, r); on_floor && *on_floor && (*on_floor)->depth > -kSupportGap)
-      best_up = 1, n = kUp;
+    if (const auto on_floor = floor_penetration(index, k, p, r); on_floor && *on_floor) {
+      decides((*on_floor)->depth, -kSupportGap);
+      if ((*on_floor)->depth > -kSupportGap) best_up = 1, n = kUp;
+    }
   if (best_up < 1)
     near_colliders(model, index, p, r, kSupportGap, [&](int, const Penetration& pen) {
+      decides(pen.depth, -kSupportGap);
       if (pen.depth > -kSupportGap && glm::dot(pen.normal, kUp) > best_up) {
         best_up = glm::dot(pen.normal, kUp);
         n = pen.normal;
       }
     });
-  if (best_up == -2) return Motion::Airborne;
+  if (best_up == -2) return answer(Motion::Airborne);
   const double eps = model.options.rest_speed;
   const Vec3 vt = v - glm::dot(v, n) * n;
   const Vec3 u = vt + r * glm::cross(n, w);  // slip at the support (docs/model.md#slip), tangential part
-  const bool no_slip = glm::length(u - glm::dot(u, n) * n) < eps;
-  if (glm::length(vt) < eps && no_slip) return r * std::abs(glm::dot(w, n)) < eps ? Motion::Stationary : Motion::Spinning;
-  return no_slip ? Motion::Rolling : Motion::Sliding;
+  const double slip = glm::length(u - glm::dot(u, n) * n);
+  decides(slip, eps);
+  if (!(slip < eps)) return answer(Motion::Sliding);
+  decides(glm::length(vt), eps);
+  if (!(glm::length(vt) < eps)) return answer(Motion::Rolling);
+  decides(r * std::abs(glm::dot(w, n)), eps);
+  return answer(r * std::abs(glm::dot(w, n)) < eps ? Motion::Stationary : Motion::Spinning);
 }
 
 const double* EventDetector::balls_at(const StepSpan& span, double t, const Key& key) const {
@@ -444,7 +458,13 @@ void EventDetector::scan(const StepSpan& span, const State& state, const StepCon
     const Motion m1 = classify(model_, index_, state, span.x1.data(), i);
     if (m1 == motion_[i]) continue;
     const Motion m0 = motion_[i];
-    const double t = bisect(span.t0, span.t1, [&](double s) { return classify(model_, index_, state, ball_at(s, i), i) != m0; });
+    // Located on the margin (classify), which crosses zero where the motion changes.
+    auto moved_on = [&](double s) { return classify(model_, index_, state, ball_at(s, i), i) != m0; };
+    auto past = [&](double s) {
+      double margin;
+      return classify(model_, index_, state, ball_at(s, i), i, &margin) != m0 ? margin : -margin;
+    };
+    const double t = locate(span.t0, span.t1, moved_on, past);
     events.push_back({t, transition_kind(m0, m1), {model_.balls[i].id}});
     motion_[i] = m1;
   }

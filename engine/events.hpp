@@ -17,8 +17,12 @@
 namespace shotlab {
 
 // Motion state of ball i in state vector x: judged relative to its supporting collider (the touching collider
-// whose normal points most upwards) with the model's rest_speed threshold on tangential speed and slip.
-Motion classify(const Model& model, const ModelIndex& index, const State& state, const double* x, int i);
+// whose normal points most upwards) with the model's rest_speed threshold on tangential speed and slip. `margin`, when
+// given, gets how far x is from changing the answer: the least distance of a quantity that decided it from its
+// threshold (m for the support's gap, m/s for speeds; at most 1), continuous along a path and zero where the answer
+// changes.
+Motion classify(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
+                double* margin = nullptr);
 
 // The event kind of a ball's change of motion state (shotlab/event.hpp): "rolling", "stopped", "landed", ...
 const char* transition_kind(Motion from, Motion to);
