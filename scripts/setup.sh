@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libbenchmark-dev xvfb xauth python3                 # tests, micro benchmarks, GUI test display
   xdotool x11-apps                                                 # real mouse and keys, screen grabs (GUI test)
   python3-matplotlib                                               # the bench's figures (scripts/bench_plots.py)
+  valgrind                                                         # instruction counts (scripts/speed_bench.py)
   pybind11-dev python3-dev python3-numpy python3-pytest            # the Python module and its tests
   python3-distributed                                              # sweeps on a Dask cluster (shotlab.cluster)
   libceres-dev                                                     # calibration against measured shots (shotlab fit)

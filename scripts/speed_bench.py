@@ -4,7 +4,9 @@
 model (docs/model.md#rigid-model) and, if given, a baseline build of the same benchmark (another commit's), in
 alternated rounds; the plain all-ODE path once for reference; where
 this build's steps and right-hand sides go, by the kind of island that took them; and what the cost follows: the same
-shots at looser integrator tolerances and softer friction rate limits.
+shots at looser integrator tolerances and softer friction rate limits. With valgrind installed, also the instructions
+a shot executes in each build: a count that does not move with the vCPU's speed, so that changes of a few per cent,
+lost in the wall time's spread, still show.
 
 usage: python3 scripts/speed_bench.py [--build build] [--baseline OTHER_BUILD] [--label TEXT] [--core 0]
                                       [--rounds 5] [--sweep-rounds 3] [--out docs/bench/speed.md]
@@ -13,6 +15,8 @@ import argparse
 import datetime
 import os
 import json
+import re
+import shutil
 import statistics
 import subprocess
 import tempfile
@@ -46,6 +50,21 @@ def measure(build, core, runs, plain=False, paths=None, rigid=False):
                                        int(v["redone"]) if "redone" in v else None, int(v["rhs"]), v["digest"],
                                        float(v["first_ms"]) if "first_ms" in v else None)
     return out
+
+
+def instructions(build, scene):
+    """Instructions one shot of `scene` executes (callgrind's count), or None without valgrind: a run of three shots
+    less a run of one, halved, so that the process's start and the scene's loading cancel."""
+    if not shutil.which("valgrind"):
+        return None
+    tool = os.path.join(build, "tests", "benchmarks", "shot_speed")
+
+    def refs(shots):
+        args = ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null", tool, "--rounds", str(shots),
+                os.path.join(ROOT, "presets", scene)]
+        err = subprocess.run(args, check=True, capture_output=True, text=True).stderr
+        return int(re.search(r"I\s+refs:\s+([\d,]+)", err).group(1).replace(",", ""))
+    return (refs(3) - refs(1)) / 2
 
 
 def census(build, core):
@@ -153,6 +172,17 @@ def main():
         for s in SCENES:
             ratios = [x / y for x, y in zip(times["this build"][s], times[a.label][s])]
             lines.append(f"| {s} | {statistics.median(ratios):.3f} ({min(ratios):.3f}-{max(ratios):.3f}) |")
+    counted_builds = ("this build",) + ((a.label,) if a.baseline else ())
+    counts = {k: {s: instructions(sides[k], s) for s in SCENES} for k in counted_builds}
+    if all(n is not None for c in counts.values() for n in c.values()):
+        lines += ["", "Instructions a shot executes (callgrind: a run of three shots less a run of one, halved; exact, "
+                  "unlike the wall time, and the same at any vCPU speed):", "",
+                  "| scene | " + " | ".join(f"{k}, million" for k in counts) + (" | this build / " + a.label
+                                                                               if a.baseline else "") + " |",
+                  "|---|" + "---|" * (len(counts) + bool(a.baseline))]
+        for s in SCENES:
+            ratio = f" | {counts['this build'][s] / counts[a.label][s]:.4f}" if a.baseline else ""
+            lines.append(f"| {s} | " + " | ".join(f"{c[s] / 1e6:.3f}" for c in counts.values()) + ratio + " |")
     lines += ["", "Where this build's steps go (one run of each scene; a lone ball in closed form rolls, slides or flies "
               "at one right-hand side a step). What shortens them: steps that ended at a contact or friction change "
               "(redone), trials the error control rejected, and steps that ended with a friction term inside a band "
