@@ -200,24 +200,26 @@ ContactForce EventDetector::force_at(const Key& key, const double* x) const {
 
 bool EventDetector::touches(const Key& key, const double* x) const { return depth(key, x) > 0; }
 
-EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, const std::vector<ContactRecord>& start,
-                                                          const std::vector<ContactRecord>& end) const {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  // The two earliest changes of different contacts: only they are located (a contact that has not changed by the
-  // second is not), the first with its kind.
+// first_law_change's two earliest changes of different contacts so far: only they are located (a contact that has not
+// changed by the second is not), the first with its kind.
+struct EventDetector::LawSearch {
+  static constexpr double inf = std::numeric_limits<double>::infinity();
+  const StepSpan& span;
   double first_at = inf, next_at = inf;
   bool first_is_release = false;
+
   // Where changed(t) first holds, from `from` on, searched only as far as the changes found so far make worth it: up
   // to the first if the contact has changed by then (it becomes the first), else up to the second (it becomes the
   // second); +inf where it has changed by neither. The span's end, where every contact looked at has changed, stands
   // in for a change not found yet. find(lo, hi) locates a change bracketed there.
-  auto search = [&](const auto& changed, double from, const auto& find) {
+  template <class Changed, class Find>
+  double search(const Changed& changed, double from, const Find& find) const {
     const double first = std::min(first_at, span.t1), second = std::min(next_at, span.t1);
     if (first == span.t1 || changed(first)) return find(from, first);
     if (second < span.t1 && !changed(second)) return inf;
     return find(std::max(from, first), second);
-  };
-  auto found = [&](double at, bool release) {
+  }
+  void found(double at, bool release) {
     if (at < first_at) {
       next_at = first_at;
       first_at = at;
@@ -225,9 +227,12 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
     } else {
       next_at = std::min(next_at, at);
     }
-  };
-  const double resolution = switch_resolution(span.t1 - span.t0);
-  const double crossed = span.t0 + band_edge_share(model_.integrator.method) * (span.t1 - span.t0);
+  }
+};
+
+EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, const std::vector<ContactRecord>& start,
+                                                          const std::vector<ContactRecord>& end) const {
+  LawSearch found{span};
   // Contacts within kTouch of zero depth carry nothing worth a cut (frozen balls touch at zero depth, and round-off
   // makes their forces of 1e-17 N come and go), as for contact changes.
   for (size_t a = 0, b = 0; a < start.size(); ++a) {
@@ -235,48 +240,59 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
     while (b < end.size() && end[b].key < s0.key) ++b;
     if (s0.normal <= 0 || s0.depth <= kTouch) continue;
     const ContactRecord* e = b < end.size() && end[b].key == s0.key ? &end[b] : nullptr;
-    const Key& k = s0.key;
-    if (!e || e->normal <= 0) {
-      // Located to 0.1 ns, past the point: the force is continuous through zero there, so a pulling force held for
-      // 0.1 ns costs an impulse of order (dF/dt) 1e-20 N s, and the step that follows sees the contact released. An
-      // unclamped contact that pulls at the end (normal < 0) so little that its pull since the release cannot matter
-      // lets the trial stand: a redo aimed at the release ends a hair before or after its own, and would be redone.
-      const bool pulls = e && e->normal < 0;
-      if (pulls && !pull_moves(k, e->normal, span.t1 - span.t0)) continue;
-      auto pull_at = [&](double t) { return pull(k, balls_at(span, t, k)); };
-      auto released_at = [&](double t) { return pull_at(t) >= 0; };
-      const double at = search(released_at, span.t0, [&](double lo, double hi) {
-        return locate(lo, hi, released_at, pull_at, kTimeResolution);
-      });
-      if (at < inf && !(pulls && !pull_moves(k, e->normal, span.t1 - at))) found(at, true);
-    } else if (e->depth > kTouch && friction_switched(s0.friction, e->friction) &&
-               moves(k, s0.friction, e->friction, span.t1 - span.t0)) {
-      // Where the law first differs from the start's; where the contact stops pushing on the way, it has none. A
-      // switch within `resolution` of the start is where the last step was cut, and a band edge before `crossed` is
-      // crossed: the law after either is the one to keep (and a switch within `resolution` of the end is where this
-      // trial was cut).
-      FrictionState law = s0.friction;
-      auto law_at = [&](double t) { return FrictionState(force_at(k, balls_at(span, t, k))); };
-      auto switched_at = [&](double t) {
-        const ContactForce f = force_at(k, balls_at(span, t, k));
-        return f.normal > 0 && friction_switched(law, FrictionState(f));
-      };
-      // One pass for the switch at the start, one for each of the three terms' band edges crossed, one to find.
-      double from = span.t0;
-      for (int pass = 0; pass < 5; ++pass) {
-        const double at =
-            search(switched_at, from, [&](double lo, double hi) { return bisect(lo, hi, switched_at, resolution); });
-        if (at >= span.t1 - resolution) break;  // +inf included
-        if (at > span.t0 + resolution && (at >= crossed || pass == 4 || !band_edges_only(law, law_at(at)))) {
-          found(at, false);
-          break;
-        }
-        from = at;
-        law = law_at(at);
-      }
-    }
+    if (!e || e->normal <= 0) release_change(span, s0.key, e, found);
+    else if (e->depth > kTouch && friction_switched(s0.friction, e->friction) &&
+             moves(s0.key, s0.friction, e->friction, span.t1 - span.t0))
+      friction_change(span, s0, found);
   }
-  return {first_is_release ? first_at : inf, first_is_release ? inf : first_at, next_at < span.t1 ? next_at : inf};
+  const double inf = LawSearch::inf;
+  return {found.first_is_release ? found.first_at : inf, found.first_is_release ? inf : found.first_at,
+          found.next_at < span.t1 ? found.next_at : inf};
+}
+
+// A contact that pushed at the span's start and stops pushing inside it (`e`: its record at the end, if any). Located
+// to 0.1 ns, past the point: the force is continuous through zero there, so a pulling force held for 0.1 ns costs an
+// impulse of order (dF/dt) 1e-20 N s, and the step that follows sees the contact released. An unclamped contact that
+// still touches at the end (normal < 0 there) and whose pull since the release cannot matter lets the trial stand: a
+// redo aimed at the release ends a hair before or after its own, and one after it would be redone again.
+void EventDetector::release_change(const StepSpan& span, const Key& k, const ContactRecord* e, LawSearch& found) const {
+  const bool pulls = e && e->normal < 0;
+  if (pulls && !pull_matters(span, k, span.t0)) return;
+  auto pull_at = [&](double t) { return pull(k, balls_at(span, t, k)); };
+  auto released_at = [&](double t) { return pull_at(t) >= 0; };
+  const double at = found.search(released_at, span.t0, [&](double lo, double hi) {
+    return locate(lo, hi, released_at, pull_at, kTimeResolution);
+  });
+  if (at < LawSearch::inf && !(pulls && !pull_matters(span, k, at))) found.found(at, true);
+}
+
+// A contact that pushes at both ends of the span and whose friction switched its law (friction_switched, moves): where
+// the law first differs from the start's; where the contact stops pushing on the way, it has none. A switch within
+// `resolution` of the start is where the last step was cut, and a band edge before `crossed` is crossed: the law after
+// either is the one to keep (and a switch within `resolution` of the end is where this trial was cut).
+void EventDetector::friction_change(const StepSpan& span, const ContactRecord& s0, LawSearch& found) const {
+  const Key& k = s0.key;
+  const double resolution = switch_resolution(span.t1 - span.t0);
+  const double crossed = span.t0 + band_edge_share(model_.integrator.method) * (span.t1 - span.t0);
+  FrictionState law = s0.friction;
+  auto law_at = [&](double t) { return FrictionState(force_at(k, balls_at(span, t, k))); };
+  auto switched_at = [&](double t) {
+    const ContactForce f = force_at(k, balls_at(span, t, k));
+    return f.normal > 0 && friction_switched(law, FrictionState(f));
+  };
+  // One pass for the switch at the start, one for each of the three terms' band edges crossed, one to find.
+  double from = span.t0;
+  for (int pass = 0; pass < 5; ++pass) {
+    const double at =
+        found.search(switched_at, from, [&](double lo, double hi) { return bisect(lo, hi, switched_at, resolution); });
+    if (at >= span.t1 - resolution) break;  // +inf included
+    if (at > span.t0 + resolution && (at >= crossed || pass == 4 || !band_edges_only(law, law_at(at)))) {
+      found.found(at, false);
+      return;
+    }
+    from = at;
+    law = law_at(at);
+  }
 }
 
 // A friction term whose force changes by dF (N) over a step of h seconds can move the velocities by at most about
@@ -290,11 +306,16 @@ bool EventDetector::moves(const Key& k, const FrictionState& a, const FrictionSt
   return df * mobility(k) * h >= kSwitchMoveShare * model_.integrator.abs_tol;
 }
 
-// The pull of a released contact grows from zero at the release to |normal| at the span's end, so over the last h
-// seconds it moves the velocities by at most |normal| * mobility * h: under the share of the tolerance moves() allows
-// a friction switch, it is no change worth a cut.
-bool EventDetector::pull_moves(const Key& k, double normal, double h) const {
-  return -normal * mobility(k) * h >= kSwitchMoveShare * model_.integrator.abs_tol;
+// Whether the pull of a contact released at `from` can matter by the span's end: the most it pulls on the way,
+// sampled at the end and at a quarter, half and three quarters of the way (a pull need not grow all the way: under
+// Hunt-Crossley damping it falls back to zero with the depth), times its slip mobility and the time, against the share
+// of abs_tol that moves() allows a friction switch. The slip mobility also bounds the friction the negative force
+// drives backwards (add_friction runs unclamped; mu <= 1). A contact that stopped touching pulls 1 N: it matters.
+bool EventDetector::pull_matters(const StepSpan& span, const Key& k, double from) const {
+  const double h = span.t1 - from;
+  double most = 0;
+  for (const double share : {1.0, 0.75, 0.5, 0.25}) most = std::max(most, pull(k, balls_at(span, from + share * h, k)));
+  return most * mobility(k) * h >= kSwitchMoveShare * model_.integrator.abs_tol;
 }
 
 double EventDetector::mobility(const Key& k) const {

@@ -19,8 +19,8 @@ namespace shotlab {
 // Motion state of ball i in state vector x: judged relative to its supporting collider (the touching collider
 // whose normal points most upwards) with the model's rest_speed threshold on tangential speed and slip. `margin`, when
 // given, gets how far x is from changing the answer: the least distance of a quantity that decided it from its
-// threshold (m for the support's gap, m/s for speeds; at most 1), continuous along a path and zero where the answer
-// changes.
+// threshold (m for the support's gap, m/s for speeds; at most 1), zero where the answer changes and continuous along
+// a path except where the support passes from one collider to another.
 Motion classify(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
                 double* margin = nullptr);
 
@@ -74,7 +74,8 @@ class EventDetector {
   // it out and finds its onset) or cannot touch the collider at all.
   double time_to_touch(const StepSpan& span, const ContactKey& key) const;
   // The earliest time in the span at which a contact that pushed at its start stops pushing (its normal force reaches
-  // zero, where the clamp cuts in, or it ends) or one that pushes at both ends switches its friction's law
+  // zero, where the clamp cuts in, or it ends; not where an unclamped one still touches at the end and its pull since
+  // cannot matter, pull_matters) or one that pushes at both ends switches its friction's law
   // (friction_switched: a term enters or leaves its smoothing band, or is turned around through it), as `release` or
   // `friction` by its kind; +inf for either kind where it is not the earliest (a contact that has not changed by then
   // is not located) or there is none. Found by comparing the right-hand side's records at the span's two ends
@@ -105,9 +106,12 @@ class EventDetector {
   bool touches(const Key& key, const double* x) const;   // depth > 0
   // Whether a friction switch of contact `key` between laws a and b, over a step of h seconds, can matter (events.cpp).
   bool moves(const Key& key, const FrictionState& a, const FrictionState& b, double h) const;
-  // Whether an unclamped contact pulling with `normal` N (< 0) at a span's end, released for the last h seconds of
-  // it, can matter (events.cpp).
-  bool pull_moves(const Key& key, double normal, double h) const;
+  // first_law_change's stages (events.cpp): the changes found so far, a contact's release, its friction's switch.
+  struct LawSearch;
+  void release_change(const StepSpan& span, const Key& key, const ContactRecord* end, LawSearch& found) const;
+  void friction_change(const StepSpan& span, const ContactRecord& start, LawSearch& found) const;
+  // Whether the pull of a contact released at `from` inside the span can matter by its end (events.cpp).
+  bool pull_matters(const StepSpan& span, const Key& key, double from) const;
   double mobility(const Key& key) const;  // 1/kg: the slip mobility of the key's balls, summed
   // N: the contact's unclamped normal force at x, negated; 1 where it does not touch. Released where it is >= 0: a
   // smooth quantity while the contact lasts, whose root a root finder closes in on.
