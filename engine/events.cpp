@@ -219,7 +219,7 @@ struct EventDetector::LawSearch {
     if (second < span.t1 && !changed(second)) return inf;
     return find(std::max(from, first), second);
   }
-  void found(double at, bool release) {
+  void add(double at, bool release) {
     if (at < first_at) {
       next_at = first_at;
       first_at = at;
@@ -232,7 +232,7 @@ struct EventDetector::LawSearch {
 
 EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, const std::vector<ContactRecord>& start,
                                                           const std::vector<ContactRecord>& end) const {
-  LawSearch found{span};
+  LawSearch so_far{span};
   // Contacts within kTouch of zero depth carry nothing worth a cut (frozen balls touch at zero depth, and round-off
   // makes their forces of 1e-17 N come and go), as for contact changes.
   for (size_t a = 0, b = 0; a < start.size(); ++a) {
@@ -240,14 +240,14 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
     while (b < end.size() && end[b].key < s0.key) ++b;
     if (s0.normal <= 0 || s0.depth <= kTouch) continue;
     const ContactRecord* e = b < end.size() && end[b].key == s0.key ? &end[b] : nullptr;
-    if (!e || e->normal <= 0) release_change(span, s0.key, e, found);
+    if (!e || e->normal <= 0) release_change(span, s0.key, e, so_far);
     else if (e->depth > kTouch && friction_switched(s0.friction, e->friction) &&
              moves(s0.key, s0.friction, e->friction, span.t1 - span.t0))
-      friction_change(span, s0, found);
+      friction_change(span, s0, so_far);
   }
   const double inf = LawSearch::inf;
-  return {found.first_is_release ? found.first_at : inf, found.first_is_release ? inf : found.first_at,
-          found.next_at < span.t1 ? found.next_at : inf};
+  return {so_far.first_is_release ? so_far.first_at : inf, so_far.first_is_release ? inf : so_far.first_at,
+          so_far.next_at < span.t1 ? so_far.next_at : inf};
 }
 
 // A contact that pushed at the span's start and stops pushing inside it (`e`: its record at the end, if any). Located
@@ -255,22 +255,22 @@ EventDetector::LawChanges EventDetector::first_law_change(const StepSpan& span, 
 // impulse of order (dF/dt) 1e-20 N s, and the step that follows sees the contact released. An unclamped contact that
 // still touches at the end (normal < 0 there) and whose pull since the release cannot matter lets the trial stand: a
 // redo aimed at the release ends a hair before or after its own, and one after it would be redone again.
-void EventDetector::release_change(const StepSpan& span, const Key& k, const ContactRecord* e, LawSearch& found) const {
+void EventDetector::release_change(const StepSpan& span, const Key& k, const ContactRecord* e, LawSearch& so_far) const {
   const bool pulls = e && e->normal < 0;
   if (pulls && !pull_matters(span, k, span.t0)) return;
   auto pull_at = [&](double t) { return pull(k, balls_at(span, t, k)); };
   auto released_at = [&](double t) { return pull_at(t) >= 0; };
-  const double at = found.search(released_at, span.t0, [&](double lo, double hi) {
+  const double at = so_far.search(released_at, span.t0, [&](double lo, double hi) {
     return locate(lo, hi, released_at, pull_at, kTimeResolution);
   });
-  if (at < LawSearch::inf && !(pulls && !pull_matters(span, k, at))) found.found(at, true);
+  if (at < LawSearch::inf && !(pulls && !pull_matters(span, k, at))) so_far.add(at, true);
 }
 
 // A contact that pushes at both ends of the span and whose friction switched its law (friction_switched, moves): where
 // the law first differs from the start's; where the contact stops pushing on the way, it has none. A switch within
 // `resolution` of the start is where the last step was cut, and a band edge before `crossed` is crossed: the law after
 // either is the one to keep (and a switch within `resolution` of the end is where this trial was cut).
-void EventDetector::friction_change(const StepSpan& span, const ContactRecord& s0, LawSearch& found) const {
+void EventDetector::friction_change(const StepSpan& span, const ContactRecord& s0, LawSearch& so_far) const {
   const Key& k = s0.key;
   const double resolution = switch_resolution(span.t1 - span.t0);
   const double crossed = span.t0 + band_edge_share(model_.integrator.method) * (span.t1 - span.t0);
@@ -284,10 +284,10 @@ void EventDetector::friction_change(const StepSpan& span, const ContactRecord& s
   double from = span.t0;
   for (int pass = 0; pass < 5; ++pass) {
     const double at =
-        found.search(switched_at, from, [&](double lo, double hi) { return bisect(lo, hi, switched_at, resolution); });
+        so_far.search(switched_at, from, [&](double lo, double hi) { return bisect(lo, hi, switched_at, resolution); });
     if (at >= span.t1 - resolution) break;  // +inf included
     if (at > span.t0 + resolution && (at >= crossed || pass == 4 || !band_edges_only(law, law_at(at)))) {
-      found.found(at, false);
+      so_far.add(at, false);
       return;
     }
     from = at;

@@ -108,8 +108,8 @@ class EventDetector {
   bool moves(const Key& key, const FrictionState& a, const FrictionState& b, double h) const;
   // first_law_change's stages (events.cpp): the changes found so far, a contact's release, its friction's switch.
   struct LawSearch;
-  void release_change(const StepSpan& span, const Key& key, const ContactRecord* end, LawSearch& found) const;
-  void friction_change(const StepSpan& span, const ContactRecord& start, LawSearch& found) const;
+  void release_change(const StepSpan& span, const Key& key, const ContactRecord* end, LawSearch& so_far) const;
+  void friction_change(const StepSpan& span, const ContactRecord& start, LawSearch& so_far) const;
   // Whether the pull of a contact released at `from` inside the span can matter by its end (events.cpp).
   bool pull_matters(const StepSpan& span, const Key& key, double from) const;
   double mobility(const Key& key) const;  // 1/kg: the slip mobility of the key's balls, summed
