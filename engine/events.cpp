@@ -105,10 +105,12 @@ Motion classify(const Model& model, const ModelIndex& index, const State& state,
   const double slip = glm::length(u - glm::dot(u, n) * n);
   decides(slip, eps);
   if (!(slip < eps)) return answer(Motion::Sliding);
-  decides(glm::length(vt), eps);
-  if (!(glm::length(vt) < eps)) return answer(Motion::Rolling);
-  decides(r * std::abs(glm::dot(w, n)), eps);
-  return answer(r * std::abs(glm::dot(w, n)) < eps ? Motion::Stationary : Motion::Spinning);
+  const double speed = glm::length(vt);
+  decides(speed, eps);
+  if (!(speed < eps)) return answer(Motion::Rolling);
+  const double spinning = r * std::abs(glm::dot(w, n));  // m/s: the surface speed of the spin about the normal
+  decides(spinning, eps);
+  return answer(spinning < eps ? Motion::Stationary : Motion::Spinning);
 }
 
 const double* EventDetector::balls_at(const StepSpan& span, double t, const Key& key) const {
@@ -424,13 +426,13 @@ EventDetector::Changes EventDetector::first_contact_change(const StepSpan& span,
   constexpr double inf = std::numeric_limits<double>::infinity();
   Changes first{inf, inf};
   // Frozen balls touch at zero depth, and round-off flips them in and out of contact: no kink worth a restart.
-  auto located = [&](const Key& k, const StateVector& apart, bool begins, double& at) {
+  auto earliest = [&](const Key& k, const StateVector& apart, bool begins, double& at) {
     if (depth(k, apart.data()) > -kTouch) return;
     at = std::min(at, crossing(span, k, begins, kTimeResolution));
   };
-  for (const Key& k : begun_) located(k, span.x0, true, first.begin);
+  for (const Key& k : begun_) earliest(k, span.x0, true, first.begin);
   for (const Key& k : ended_)
-    if (!released_at_start(k, start)) located(k, span.x1, false, first.end);
+    if (!released_at_start(k, start)) earliest(k, span.x1, false, first.end);
   return first;
 }
 

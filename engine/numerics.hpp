@@ -61,8 +61,8 @@ inline constexpr double kSwitchMoveShare = 0.01;
 inline constexpr double kEarlyShare = 0.01;
 // Attempts of one step redone to end at a contact change before it is redone with the plain law.
 inline constexpr int kMaxRedos = 8;
-// Iterations of the root finder that locates a depth or height crossing before bisection finishes (events.cpp): it
-// takes a handful on a smooth crossing.
+// Iterations of the root finder that locates a change of sign (a depth or height crossing, a release, a change of
+// motion) before bisection finishes (events.cpp): it takes a handful on a smooth crossing.
 inline constexpr int kMaxRootIterations = 30;
 
 // --- Rates (1/s) ---
