@@ -88,6 +88,7 @@ ModelIndex::ModelIndex(const Model& model)
     clear.lo_z = std::min(clear.lo_z, b.lo.z), clear.hi_z = std::max(clear.hi_z, b.hi.z);
   }
   for (int c : others) clear.exclude(collider_bounds[c].lo, collider_bounds[c].hi);
+  build_grid();
   floor_of.assign(model.colliders.size(), -1);
   for (size_t k = 0; k < plane_like.size(); ++k) floor_of[plane_like[k]] = static_cast<int>(k);
   // A bounded plane's floor is worked out over its own extent (inset by kFloorInset: level_floor wants the corners
@@ -100,6 +101,34 @@ ModelIndex::ModelIndex(const Model& model)
     if (std::isnan(floor_y.back())) floor.back() = ColumnXZ{};
   }
   index_balls(model);
+}
+
+// About kGridCells cells along the longer side of the others' extent (on a pool table, 8 cm cells): a ball's reach
+// over a step covers one to four of them. No grid where a bound is not finite.
+void ModelIndex::build_grid() {
+  constexpr double kGridCells = 32;
+  if (others.empty()) return;
+  double hi_x = -std::numeric_limits<double>::infinity(), hi_z = hi_x;
+  grid.lo_x = grid.lo_z = std::numeric_limits<double>::infinity();
+  for (int c : others) {
+    const Bounds& b = collider_bounds[c];
+    grid.lo_x = std::min(grid.lo_x, b.lo.x), grid.lo_z = std::min(grid.lo_z, b.lo.z);
+    hi_x = std::max(hi_x, b.hi.x), hi_z = std::max(hi_z, b.hi.z);
+  }
+  if (!std::isfinite(hi_x - grid.lo_x) || !std::isfinite(hi_z - grid.lo_z)) return;
+  const double side = std::max({hi_x - grid.lo_x, hi_z - grid.lo_z, 1e-3});
+  grid.per_cell = kGridCells / side;
+  grid.nx = static_cast<int>(std::ceil((hi_x - grid.lo_x) * grid.per_cell)) + 1;
+  grid.nz = static_cast<int>(std::ceil((hi_z - grid.lo_z) * grid.per_cell)) + 1;
+  grid.words = static_cast<int>((others.size() + 63) / 64);
+  grid.mask.assign(static_cast<size_t>(grid.nx * grid.nz * grid.words), 0);
+  for (size_t k = 0; k < others.size(); ++k) {
+    const Bounds& b = collider_bounds[others[k]];
+    const int x1 = grid.cell(b.hi.x, grid.lo_x, grid.nx), z1 = grid.cell(b.hi.z, grid.lo_z, grid.nz);
+    for (int ix = grid.cell(b.lo.x, grid.lo_x, grid.nx); ix <= x1; ++ix)
+      for (int iz = grid.cell(b.lo.z, grid.lo_z, grid.nz); iz <= z1; ++iz)
+        grid.mask[static_cast<size_t>((ix * grid.nz + iz) * grid.words) + k / 64] |= uint64_t{1} << (k % 64);
+  }
 }
 
 ModelIndex::ModelIndex(const ModelIndex& scene, const Model& sub) : ModelIndex(scene) {

@@ -2,6 +2,9 @@
 // index, the colliders' bounds and level floors, each ball's mobilities. Immutable once built; the stepping shares it
 // by const reference, so no material is looked up by its name while the engine runs.
 #pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -24,6 +27,26 @@ struct ColumnXZ {
   void exclude(const Vec3& lo, const Vec3& hi);
 };
 
+// The colliders that are not plane-like, by where they lie: a grid of cells over the x-z extent of their bounds, each
+// cell with a bit for every collider whose bounds reach into it (bit k: the k-th of ModelIndex::others). A ball near the
+// cushions is probed against the colliders of the few cells its reach covers, not against all of them.
+struct ColliderGrid {
+  // Visits, in ascending order, every k whose collider's x-z bounds may come within `reach` of p (m): a superset of
+  // those Bounds::may_touch(p, reach) accepts. False, having visited none, where the reach covers more than
+  // kMostCells cells or p is not finite (the caller then probes them all).
+  template <class Fn>
+  bool visit(const Vec3& p, double reach, Fn&& fn) const;
+
+  static constexpr int kMostCells = 16;
+  double lo_x = 0, lo_z = 0, per_cell = 0;  // m, m, cells per m
+  int nx = 0, nz = 0, words = 0;            // words: 64-bit masks per cell
+  std::vector<uint64_t> mask;               // cell (ix, iz) holds words at (ix nz + iz) words; empty: no grid
+
+  int cell(double at, double lo, int n) const {
+    return static_cast<int>(std::clamp(std::floor((at - lo) * per_cell), 0.0, n - 1.0));
+  }
+};
+
 struct ModelIndex {
   // Resolves the model's material names: the one place they are looked up.
   explicit ModelIndex(const Model& model);
@@ -43,6 +66,7 @@ struct ModelIndex {
   // the plane-like colliders alone (on a table, the bed; the cushions and jaws line the edges).
   std::vector<int> plane_like;
   std::vector<int> others;  // the other colliders, in the order of the model
+  ColliderGrid grid;        // of others
   ColumnXZ clear;
   // For each plane-like collider (in the order of plane_like), a column over which it is a level floor (normal exactly
   // up) with no edge and no hole, at height floor_y (m; NaN and an empty column where it is none): a ball whose centre
@@ -61,6 +85,7 @@ struct ModelIndex {
 
  private:
   void index_balls(const Model& model);
+  void build_grid();
 };
 
 // The penetration of a ball (centre p, radius r) into the k-th plane-like collider where its centre is over that
@@ -71,6 +96,21 @@ inline std::optional<std::optional<Penetration>> floor_penetration(const ModelIn
   if (!index.floor[k].holds(p, 0.0)) return std::nullopt;
   const double height = p.y - index.floor_y[k];
   return height >= 0 ? std::optional<Penetration>(Penetration{r - height, kUp}) : std::nullopt;
+}
+
+template <class Fn>
+bool ColliderGrid::visit(const Vec3& p, double reach, Fn&& fn) const {
+  if (mask.empty() || !std::isfinite(p.x) || !std::isfinite(p.z) || !std::isfinite(reach)) return false;
+  const int x0 = cell(p.x - reach, lo_x, nx), x1 = cell(p.x + reach, lo_x, nx);
+  const int z0 = cell(p.z - reach, lo_z, nz), z1 = cell(p.z + reach, lo_z, nz);
+  if ((x1 - x0 + 1) * (z1 - z0 + 1) > kMostCells) return false;
+  for (int w = 0; w < words; ++w) {
+    uint64_t bits = 0;
+    for (int ix = x0; ix <= x1; ++ix)
+      for (int iz = z0; iz <= z1; ++iz) bits |= mask[static_cast<size_t>((ix * nz + iz) * words + w)];
+    for (; bits; bits &= bits - 1) fn(64 * w + __builtin_ctzll(bits));  // lowest set bit (std::countr_zero: C++20)
+  }
+  return true;
 }
 
 }  // namespace shotlab
