@@ -33,8 +33,9 @@ World::World(Model model, State initial)
   regroup(integ_.time, {}, std::move(awake));
 }
 
-double World::meeting_time(double t, const std::vector<int>& balls, double energy,
-                           const std::function<const std::optional<FreePath>&()>& path_a, Island& other, double until) {
+template <class PathA>
+double World::meeting_time(double t, const std::vector<int>& balls, double energy, const PathA& path_a, Island& other,
+                           double until) {
   other.state_at(t, scratch_);
   const State& flags = other.flags_at(t);
   double best = std::numeric_limits<double>::infinity();
@@ -78,9 +79,6 @@ Partition World::split_group(double t, std::vector<Island*>& group, std::vector<
                                   std::vector<double>& deadline) {
   auto in_group = [&](const Island* island) { return std::find(group.begin(), group.end(), island) != group.end(); };
   Partition p;
-  // Of each new island that is a lone ball on a free path, worked out the first time a meeting time asks for it.
-  std::vector<std::optional<FreePath>> paths;
-  std::vector<uint8_t> path_known;
   for (size_t taken = 0;;) {
     // The group's balls at t (a member past t is rewound to t: its last step began at or before t).
     for (; taken < group.size(); ++taken) {
@@ -100,8 +98,8 @@ Partition World::split_group(double t, std::vector<Island*>& group, std::vector<
     // Every other island against each new one: one that could meet it before it got where it is (or very soon) must be
     // rewound to t and split with the group; the others only lower their deadlines.
     deadline.resize(p.islands.size());
-    paths.assign(p.islands.size(), std::nullopt);
-    path_known.assign(p.islands.size(), 0);
+    paths_.assign(p.islands.size(), std::nullopt);
+    path_known_.assign(p.islands.size(), 0);
     for (size_t n = 0; n < p.islands.size(); ++n) deadline[n] = t + p.horizon[n];
     bool grew = false;
     for (const auto& other : islands_) {
@@ -110,10 +108,10 @@ Partition World::split_group(double t, std::vector<Island*>& group, std::vector<
       for (size_t n = 0; n < p.islands.size(); ++n) {
         auto path = [&, n]() -> const std::optional<FreePath>& {
           const std::vector<int>& balls = p.islands[n];
-          if (!path_known[n] && balls.size() == 1 && integ_.in_play[balls[0]])
-            paths[n] = free_path(model_, integ_, integ_.x.data(), balls[0], index_, kLoneHorizon);
-          path_known[n] = 1;
-          return paths[n];
+          if (!path_known_[n] && balls.size() == 1 && integ_.in_play[balls[0]])
+            paths_[n] = free_path(model_, integ_, integ_.x.data(), balls[0], index_, kLoneHorizon);
+          path_known_[n] = 1;
+          return paths_[n];
         };
         const double m = meeting_time(t, p.islands[n], p.energy[n], path, *other, std::max(deadline[n], other->deadline()));
         deadline[n] = std::min(deadline[n], m);

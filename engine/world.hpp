@@ -63,9 +63,10 @@ class World final : public Runner {
   // s: the earliest time at which `balls` (at time t in integ_, in an island of energy `energy`; path_a: their free
   // path where they are a lone ball on one, else nullopt) could touch a ball of `other` (at time t on its dense output); a closer
   // look only for a bound before `until` (s).
-  // path_a is asked for only where it can matter (it may cost a look at the colliders).
-  double meeting_time(double t, const std::vector<int>& balls, double energy,
-                      const std::function<const std::optional<FreePath>&()>& path_a, Island& other, double until);
+  // path_a() is asked for only where it can matter (it may cost a look at the colliders).
+  template <class PathA>
+  double meeting_time(double t, const std::vector<int>& balls, double energy, const PathA& path_a, Island& other,
+                      double until);
   void check_energy();
   void stop(Status why, std::string message);
 
@@ -88,6 +89,10 @@ class World final : public Runner {
   // costs O(balls in islands).
   double energy_synced_;
   std::vector<Event> located_;  // taken from islands, not yet handed over
+  // split_group's: of each new island that is a lone ball on a free path, worked out the first time a meeting time
+  // asks for it (path_known_).
+  std::vector<std::optional<FreePath>> paths_;
+  std::vector<uint8_t> path_known_;
 };
 
 }  // namespace shotlab
