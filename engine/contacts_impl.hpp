@@ -110,8 +110,8 @@ void near_colliders(const Model& model, const ModelIndex& index, const Vec3& p, 
     if (!on_floor) probe(c);
     else if (*on_floor && index.collider_bounds[c].may_touch(p, reach)) fn(c, **on_floor);
   }
-  // Inside the clear column nothing else can be in reach; elsewhere the colliders of the grid cells in reach (every one
-  // where the reach is too wide for the grid).
+  // Inside the clear column nothing else can be in reach. Elsewhere probe the colliders the grid finds in reach, or
+  // every one where it declines.
   if (index.clear.holds(p, reach)) return;
   if (!index.grid.visit(p, reach, [&](int k) { probe(index.others[k]); }))
     for (int c : index.others) probe(c);

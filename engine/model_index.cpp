@@ -87,8 +87,12 @@ ModelIndex::ModelIndex(const Model& model)
     clear.lo_x = std::min(clear.lo_x, b.lo.x), clear.hi_x = std::max(clear.hi_x, b.hi.x);
     clear.lo_z = std::min(clear.lo_z, b.lo.z), clear.hi_z = std::max(clear.hi_z, b.hi.z);
   }
-  for (int c : others) clear.exclude(collider_bounds[c].lo, collider_bounds[c].hi);
-  build_grid();
+  std::vector<Bounds> others_bounds;
+  for (int c : others) {
+    clear.exclude(collider_bounds[c].lo, collider_bounds[c].hi);
+    others_bounds.push_back(collider_bounds[c]);
+  }
+  grid.build(others_bounds);
   floor_of.assign(model.colliders.size(), -1);
   for (size_t k = 0; k < plane_like.size(); ++k) floor_of[plane_like[k]] = static_cast<int>(k);
   // A bounded plane's floor is worked out over its own extent (inset by kFloorInset: level_floor wants the corners
@@ -103,31 +107,29 @@ ModelIndex::ModelIndex(const Model& model)
   index_balls(model);
 }
 
-// About kGridCells cells along the longer side of the others' extent (on a pool table, 8 cm cells): a ball's reach
-// over a step covers one to four of them. No grid where a bound is not finite.
-void ModelIndex::build_grid() {
+// About kGridCells cells along the longer side of the colliders' extent (on a pool table, 8 cm cells): a ball's reach
+// over a step covers one to four of them.
+void ColliderGrid::build(const std::vector<Bounds>& bounds) {
   constexpr double kGridCells = 32;
-  if (others.empty()) return;
+  *this = ColliderGrid{};
   double hi_x = -std::numeric_limits<double>::infinity(), hi_z = hi_x;
-  grid.lo_x = grid.lo_z = std::numeric_limits<double>::infinity();
-  for (int c : others) {
-    const Bounds& b = collider_bounds[c];
-    grid.lo_x = std::min(grid.lo_x, b.lo.x), grid.lo_z = std::min(grid.lo_z, b.lo.z);
+  lo_x_ = lo_z_ = std::numeric_limits<double>::infinity();
+  for (const Bounds& b : bounds) {
+    if (!std::isfinite(b.lo.x) || !std::isfinite(b.lo.z) || !std::isfinite(b.hi.x) || !std::isfinite(b.hi.z)) return;
+    lo_x_ = std::min(lo_x_, b.lo.x), lo_z_ = std::min(lo_z_, b.lo.z);
     hi_x = std::max(hi_x, b.hi.x), hi_z = std::max(hi_z, b.hi.z);
   }
-  if (!std::isfinite(hi_x - grid.lo_x) || !std::isfinite(hi_z - grid.lo_z)) return;
-  const double side = std::max({hi_x - grid.lo_x, hi_z - grid.lo_z, 1e-3});
-  grid.per_cell = kGridCells / side;
-  grid.nx = static_cast<int>(std::ceil((hi_x - grid.lo_x) * grid.per_cell)) + 1;
-  grid.nz = static_cast<int>(std::ceil((hi_z - grid.lo_z) * grid.per_cell)) + 1;
-  grid.words = static_cast<int>((others.size() + 63) / 64);
-  grid.mask.assign(static_cast<size_t>(grid.nx * grid.nz * grid.words), 0);
-  for (size_t k = 0; k < others.size(); ++k) {
-    const Bounds& b = collider_bounds[others[k]];
-    const int x1 = grid.cell(b.hi.x, grid.lo_x, grid.nx), z1 = grid.cell(b.hi.z, grid.lo_z, grid.nz);
-    for (int ix = grid.cell(b.lo.x, grid.lo_x, grid.nx); ix <= x1; ++ix)
-      for (int iz = grid.cell(b.lo.z, grid.lo_z, grid.nz); iz <= z1; ++iz)
-        grid.mask[static_cast<size_t>((ix * grid.nz + iz) * grid.words) + k / 64] |= uint64_t{1} << (k % 64);
+  if (bounds.empty() || !std::isfinite(hi_x - lo_x_) || !std::isfinite(hi_z - lo_z_)) return;
+  per_cell_ = kGridCells / std::max({hi_x - lo_x_, hi_z - lo_z_, 1e-3});
+  nx_ = static_cast<int>(std::ceil((hi_x - lo_x_) * per_cell_)) + 1;
+  nz_ = static_cast<int>(std::ceil((hi_z - lo_z_) * per_cell_)) + 1;
+  words_ = static_cast<int>((bounds.size() + 63) / 64);
+  mask_.assign(static_cast<size_t>(nx_ * nz_ * words_), 0);
+  for (size_t k = 0; k < bounds.size(); ++k) {
+    const Bounds& b = bounds[k];
+    for (int ix = cell_x(b.lo.x); ix <= cell_x(b.hi.x); ++ix)
+      for (int iz = cell_z(b.lo.z); iz <= cell_z(b.hi.z); ++iz)
+        word(ix, iz, static_cast<int>(k / 64)) |= uint64_t{1} << (k % 64);
   }
 }
 

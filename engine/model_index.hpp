@@ -27,24 +27,35 @@ struct ColumnXZ {
   void exclude(const Vec3& lo, const Vec3& hi);
 };
 
-// The colliders that are not plane-like, by where they lie: a grid of cells over the x-z extent of their bounds, each
-// cell with a bit for every collider whose bounds reach into it (bit k: the k-th of ModelIndex::others). A ball near the
-// cushions is probed against the colliders of the few cells its reach covers, not against all of them.
-struct ColliderGrid {
-  // Visits, in ascending order, every k whose collider's x-z bounds may come within `reach` of p (m): a superset of
-  // those Bounds::may_touch(p, reach) accepts. False, having visited none, where the reach covers more than
-  // kMostCells cells or p is not finite (the caller then probes them all).
+// Colliders by where they lie: a grid of cells over the x-z extent of their bounds, each cell a set of bits, bit k
+// for the k-th collider whose bounds reach into it. A ball near the cushions is probed against the colliders of the
+// few cells its reach covers, not against all of them.
+class ColliderGrid {
+ public:
+  // Over the given colliders' bounds (none: no grid, nor where a bound is not finite).
+  void build(const std::vector<Bounds>& bounds);
+  // Visits, in ascending order, every k whose bounds' x-z extent may come within `reach` (m) of p: a superset of those
+  // Bounds::may_touch(p, reach) accepts. False, having visited none, where there is no grid, p or the reach is not
+  // finite, the reach is negative or it covers more than kMostCells cells: the caller then probes every collider.
   template <class Fn>
   bool visit(const Vec3& p, double reach, Fn&& fn) const;
+  bool built() const { return !mask_.empty(); }
+  int words() const { return words_; }
 
   static constexpr int kMostCells = 16;
-  double lo_x = 0, lo_z = 0, per_cell = 0;  // m, m, cells per m
-  int nx = 0, nz = 0, words = 0;            // words: 64-bit masks per cell
-  std::vector<uint64_t> mask;               // cell (ix, iz) holds words at (ix nz + iz) words; empty: no grid
 
+ private:
+  int cell_x(double x) const { return cell(x, lo_x_, nx_); }
+  int cell_z(double z) const { return cell(z, lo_z_, nz_); }
   int cell(double at, double lo, int n) const {
-    return static_cast<int>(std::clamp(std::floor((at - lo) * per_cell), 0.0, n - 1.0));
+    return static_cast<int>(std::clamp(std::floor((at - lo) * per_cell_), 0.0, n - 1.0));
   }
+  uint64_t& word(int ix, int iz, int w) { return mask_[static_cast<size_t>((ix * nz_ + iz) * words_ + w)]; }
+  uint64_t word(int ix, int iz, int w) const { return mask_[static_cast<size_t>((ix * nz_ + iz) * words_ + w)]; }
+
+  double lo_x_ = 0, lo_z_ = 0, per_cell_ = 0;  // m, m, cells per m
+  int nx_ = 0, nz_ = 0, words_ = 0;            // words_: 64-bit masks per cell
+  std::vector<uint64_t> mask_;
 };
 
 struct ModelIndex {
@@ -66,7 +77,7 @@ struct ModelIndex {
   // the plane-like colliders alone (on a table, the bed; the cushions and jaws line the edges).
   std::vector<int> plane_like;
   std::vector<int> others;  // the other colliders, in the order of the model
-  ColliderGrid grid;        // of others
+  ColliderGrid grid;        // of others: bit k for others[k]
   ColumnXZ clear;
   // For each plane-like collider (in the order of plane_like), a column over which it is a level floor (normal exactly
   // up) with no edge and no hole, at height floor_y (m; NaN and an empty column where it is none): a ball whose centre
@@ -85,7 +96,6 @@ struct ModelIndex {
 
  private:
   void index_balls(const Model& model);
-  void build_grid();
 };
 
 // The penetration of a ball (centre p, radius r) into the k-th plane-like collider where its centre is over that
@@ -100,15 +110,15 @@ inline std::optional<std::optional<Penetration>> floor_penetration(const ModelIn
 
 template <class Fn>
 bool ColliderGrid::visit(const Vec3& p, double reach, Fn&& fn) const {
-  if (mask.empty() || !std::isfinite(p.x) || !std::isfinite(p.z) || !std::isfinite(reach)) return false;
-  const int x0 = cell(p.x - reach, lo_x, nx), x1 = cell(p.x + reach, lo_x, nx);
-  const int z0 = cell(p.z - reach, lo_z, nz), z1 = cell(p.z + reach, lo_z, nz);
+  if (!built() || !std::isfinite(p.x) || !std::isfinite(p.z) || !(reach >= 0 && std::isfinite(reach))) return false;
+  const int x0 = cell_x(p.x - reach), x1 = cell_x(p.x + reach), z0 = cell_z(p.z - reach), z1 = cell_z(p.z + reach);
   if ((x1 - x0 + 1) * (z1 - z0 + 1) > kMostCells) return false;
-  for (int w = 0; w < words; ++w) {
+  for (int w = 0; w < words_; ++w) {
     uint64_t bits = 0;
     for (int ix = x0; ix <= x1; ++ix)
-      for (int iz = z0; iz <= z1; ++iz) bits |= mask[static_cast<size_t>((ix * nz + iz) * words + w)];
-    for (; bits; bits &= bits - 1) fn(64 * w + __builtin_ctzll(bits));  // lowest set bit (std::countr_zero: C++20)
+      for (int iz = z0; iz <= z1; ++iz) bits |= word(ix, iz, w);
+    // The lowest bit first; not std::countr_zero: this header is also compiled as C++17 (stepper_rosenbrock.cpp).
+    for (; bits; bits &= bits - 1) fn(64 * w + __builtin_ctzll(bits));
   }
   return true;
 }

@@ -89,8 +89,8 @@ class World final : public Runner {
   // costs O(balls in islands).
   double energy_synced_;
   std::vector<Event> located_;  // taken from islands, not yet handed over
-  // split_group's: of each new island that is a lone ball on a free path, worked out the first time a meeting time
-  // asks for it (path_known_).
+  // split_group's cache: paths_[n], the free path of new island n's lone ball, worked out the first time a meeting
+  // time asks for it (path_known_[n]).
   std::vector<std::optional<FreePath>> paths_;
   std::vector<uint8_t> path_known_;
 };

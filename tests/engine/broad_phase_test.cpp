@@ -3,6 +3,8 @@
 // bounds a ball's reach touches, must be among the candidates, or a contact is missed. Checked against all of them.
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 #include <random>
 #include <set>
 
@@ -56,67 +58,141 @@ TEST(BroadPhase, StripsFindEveryCloseManyBalls) {
   expect_every_close_pair(300, 0.5, 0.0, 4);  // dense: many pairs touch
 }
 
-// Balls at random over and around the colliders' extent, with reaches from none to half a table: each collider that
-// Bounds::may_touch accepts must be visited, once, in ascending order. Returns how many queries the grid answered
-// (the others are too wide, and the caller probes every collider) in `answered`, and how many colliders a query of a
-// step's reach (1 cm at most) visits on average in `visited`.
-void expect_grid_finds_every_collider(const ModelIndex& index, unsigned seed, int& answered, double& visited) {
+// Whether the grid visits every collider that Bounds::may_touch accepts at p within reach, once each, in ascending
+// order. False where the grid declines the query; `visited` gets how many it visited.
+bool visits_every_collider_in_reach(const ModelIndex& index, const Vec3& p, double reach, size_t& visited) {
+  std::vector<int> seen;
+  visited = 0;
+  if (!index.grid.visit(p, reach, [&](int k) { seen.push_back(k); })) {
+    EXPECT_TRUE(seen.empty()) << "a declined query visits nothing";
+    return false;
+  }
+  visited = seen.size();
+  for (size_t n = 1; n < seen.size(); ++n) EXPECT_LT(seen[n - 1], seen[n]) << "visited out of order or twice";
+  for (size_t k = 0; k < index.others.size(); ++k) {
+    if (!index.collider_bounds[index.others[k]].may_touch(p, reach)) continue;
+    EXPECT_TRUE(std::binary_search(seen.begin(), seen.end(), static_cast<int>(k)))
+        << "collider " << index.others[k] << " missed at (" << p.x << ", " << p.y << ", " << p.z << "), reach "
+        << reach;
+  }
+  return true;
+}
+
+// Balls at random over and around the colliders' extent, with reaches from none to half a table. Returns how many
+// queries the grid answered (it declines the wider ones), and in `visited` how many colliders a query of a step's reach
+// (1 cm at most) visits on average.
+int expect_random_queries_find_every_collider(const ModelIndex& index, unsigned seed, double& visited) {
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> x(-1.8, 1.8), y(-0.1, 0.2), z(-1.0, 1.0), share(0.0, 1.0);
+  std::uniform_real_distribution<double> x(-3.0, 3.0), y(-0.1, 0.2), z(-2.0, 2.0), share(0.0, 1.0);
   const double reaches[] = {0.0, 0.001, 0.01, 0.05, 0.2, 1.0};
-  answered = 0;
-  int short_queries = 0;
+  int answered = 0, short_queries = 0;
   visited = 0;
   for (int q = 0; q < 20000; ++q) {
-    const Vec3 p{x(rng), y(rng), z(rng)};
     const double reach = reaches[q % 6] * share(rng);
-    std::vector<int> seen;
-    if (!index.grid.visit(p, reach, [&](int k) { seen.push_back(k); })) {
-      EXPECT_TRUE(seen.empty()) << "a query too wide for the grid visits nothing";
-      continue;
-    }
+    size_t n = 0;
+    if (!visits_every_collider_in_reach(index, {x(rng), y(rng), z(rng)}, reach, n)) continue;
     ++answered;
-    if (reach <= 0.01) ++short_queries, visited += static_cast<double>(seen.size());
-    for (size_t n = 1; n < seen.size(); ++n) ASSERT_LT(seen[n - 1], seen[n]) << "visited out of order or twice";
-    for (size_t k = 0; k < index.others.size(); ++k) {
-      if (!index.collider_bounds[index.others[k]].may_touch(p, reach)) continue;
-      ASSERT_TRUE(std::binary_search(seen.begin(), seen.end(), static_cast<int>(k)))
-          << "collider " << index.others[k] << " missed at (" << p.x << ", " << p.y << ", " << p.z << "), reach " << reach;
-    }
+    if (reach <= 0.01) ++short_queries, visited += static_cast<double>(n);
   }
   visited /= std::max(short_queries, 1);
+  return answered;
+}
+
+// Each collider's own edges: a ball whose reach ends within a few ulps of the bounds, on either side, on each axis.
+void expect_edges_found(const ModelIndex& index) {
+  size_t n = 0;
+  for (int c : index.others) {
+    const Bounds& b = index.collider_bounds[c];
+    const Vec3 mid = 0.5 * (b.lo + b.hi);
+    for (const double reach : {0.0, 1e-3, 0.01})
+      for (const double edge : {b.lo.x - reach, b.hi.x + reach, b.lo.z - reach, b.hi.z + reach}) {
+        const bool along_x = edge == b.lo.x - reach || edge == b.hi.x + reach;
+        double at = edge;
+        for (int ulp = 0; ulp < 3; ++ulp) at = std::nextafter(at, -INFINITY);
+        for (int ulp = 0; ulp < 6; ++ulp, at = std::nextafter(at, INFINITY))
+          visits_every_collider_in_reach(index, along_x ? Vec3{at, mid.y, mid.z} : Vec3{mid.x, mid.y, at}, reach, n);
+      }
+  }
+}
+
+// near_colliders against the loop over every collider it replaced: the same contacts, the same depths, in the same
+// order.
+void expect_near_colliders_as_the_loop(const Model& model, const ModelIndex& index, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> x(-1.6, 1.6), y(-0.05, 0.1), z(-0.9, 0.9), within(0.0, 0.05);
+  for (int q = 0; q < 20000; ++q) {
+    const Vec3 p{x(rng), y(rng), z(rng)};
+    const double r = kR, w = q % 2 ? within(rng) : 0.0;
+    std::vector<std::pair<int, double>> got, want;
+    near_colliders(model, index, p, r, w, [&](int c, const Penetration& pen) {
+      if (index.floor_of[c] < 0) got.emplace_back(c, pen.depth);
+    });
+    if (!index.clear.holds(p, r + w))
+      for (int c : index.others)
+        if (index.collider_bounds[c].may_touch(p, r + w))
+          if (const auto pen = penetration(model.colliders[c].shape, p, r, w)) want.emplace_back(c, pen->depth);
+    ASSERT_EQ(got, want) << "at (" << p.x << ", " << p.y << ", " << p.z << "), within " << w;
+  }
 }
 
 TEST(BroadPhase, ColliderGridFindsEveryCushionAndJaw) {
   const Prepared p = prepare(load_scene(preset("cut.json")));
   const ModelIndex index(p.model);
   ASSERT_GT(index.others.size(), 20u);  // cushions, jaws and pocket backs
-  int answered = 0;
   double visited = 0;
-  expect_grid_finds_every_collider(index, 5, answered, visited);
-  EXPECT_GT(answered, 10000);
+  EXPECT_GT(expect_random_queries_find_every_collider(index, 5, visited), 10000);
   EXPECT_LT(visited, 3.0) << "the grid should leave most of the " << index.others.size() << " colliders out";
-  // A reach over half the table, or a position that is not finite: the caller probes them all.
-  EXPECT_FALSE(index.grid.visit(Vec3{0.0}, 1.0, [](int) {}));
-  EXPECT_FALSE(index.grid.visit(Vec3{std::nan(""), 0.0, 0.0}, 0.01, [](int) {}));
-  EXPECT_FALSE(index.grid.visit(Vec3{0.0}, std::numeric_limits<double>::infinity(), [](int) {}));
+  expect_edges_found(index);
+  expect_near_colliders_as_the_loop(p.model, index, 8);
+  // A reach over half the table, a negative one, a position or reach that is not finite: the caller probes them all.
+  for (const auto& [at, reach] : std::vector<std::pair<Vec3, double>>{{Vec3{0.0}, 1.0},
+                                                                      {Vec3{1.27, 0.0, 0.0}, -0.01},
+                                                                      {Vec3{std::nan(""), 0.0, 0.0}, 0.01},
+                                                                      {Vec3{0.0, 0.0, std::nan("")}, 0.01},
+                                                                      {Vec3{0.0}, std::nan("")},
+                                                                      {Vec3{0.0}, INFINITY},
+                                                                      {Vec3{1e308, 0.0, 0.0}, 1e308}})
+    EXPECT_FALSE(index.grid.visit(at, reach, [](int) {})) << at.x << ", " << at.z << ", reach " << reach;
+  // Far outside the extent the edge cells answer, and every collider there is out of reach.
+  size_t n = 0;
+  EXPECT_TRUE(visits_every_collider_in_reach(index, {1e6, 0.0, -1e6}, 0.01, n));
 }
 
-// More colliders than one 64-bit mask holds: spheres of all sizes strewn over a field.
+// More colliders than one 64-bit mask holds, and odd layouts: one collider, all of them at one point, one far away.
 TEST(BroadPhase, ColliderGridFindsEveryOneOfManyColliders) {
-  Model model = empty_model();
-  std::mt19937 rng(6);
-  std::uniform_real_distribution<double> at(-1.5, 1.5), size(0.001, 0.3);
-  for (int c = 0; c < 150; ++c)
-    model.colliders.push_back({"sphere-" + std::to_string(c), StaticSphere{{at(rng), 0.0, 0.6 * at(rng)}, size(rng)},
-                               kBallCushion});
-  const ModelIndex index(model);
-  ASSERT_EQ(index.grid.words, 3);
-  int answered = 0;
+  auto spheres = [](int count, double spread, double size, unsigned seed) {
+    Model model = empty_model();
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> at(-spread, spread), radius(0.001, size);
+    for (int c = 0; c < count; ++c)
+      model.colliders.push_back({"sphere-" + std::to_string(c),
+                                 StaticSphere{{at(rng), 0.0, 0.6 * at(rng)}, radius(rng)}, kBallCushion});
+    return model;
+  };
   double visited = 0;
-  expect_grid_finds_every_collider(index, 7, answered, visited);
-  EXPECT_GT(answered, 10000);
-  EXPECT_LT(visited, 0.25 * index.others.size()) << "the grid should leave most colliders out";
+  const Model many = spheres(150, 1.5, 0.3, 6);
+  const ModelIndex index(many);
+  ASSERT_EQ(index.grid.words(), 3);
+  EXPECT_GT(expect_random_queries_find_every_collider(index, 7, visited), 10000);
+  EXPECT_LT(visited, 0.25 * static_cast<double>(index.others.size())) << "the grid should leave most colliders out";
+  expect_edges_found(index);
+  for (const Model& odd : {spheres(1, 1.0, 0.1, 9), spheres(40, 0.0, 1e-6, 10)}) {
+    const ModelIndex one(odd);
+    ASSERT_TRUE(one.grid.built());
+    expect_random_queries_find_every_collider(one, 11, visited);
+    expect_edges_found(one);
+  }
+  Model far = spheres(30, 1.0, 0.1, 12);
+  far.colliders.push_back({"far", StaticSphere{{5e4, 0.0, -5e4}, 0.1}, kBallCushion});
+  const ModelIndex far_index(far);
+  expect_random_queries_find_every_collider(far_index, 13, visited);
+  expect_edges_found(far_index);
+  // A bound that is not finite: no grid (every query declined), as may_touch accepts nothing there.
+  for (const Vec3& centre : {Vec3{std::nan(""), 0.0, 0.0}, Vec3{0.0, 0.0, std::nan("")}}) {
+    Model broken = spheres(10, 1.0, 0.1, 14);
+    broken.colliders.push_back({"nan", StaticSphere{centre, 0.1}, kBallCushion});
+    EXPECT_FALSE(ModelIndex(broken).grid.built());
+  }
 }
 
 }  // namespace
