@@ -129,7 +129,7 @@ void ColliderGrid::build(const std::vector<Bounds>& bounds) {
     const Bounds& b = bounds[k];
     for (int ix = cell_x(b.lo.x); ix <= cell_x(b.hi.x); ++ix)
       for (int iz = cell_z(b.lo.z); iz <= cell_z(b.hi.z); ++iz)
-        word(ix, iz, static_cast<int>(k / 64)) |= uint64_t{1} << (k % 64);
+        mask_[slot(ix, iz, static_cast<int>(k / 64))] |= uint64_t{1} << (k % 64);
   }
 }
 

@@ -50,8 +50,8 @@ class ColliderGrid {
   int cell(double at, double lo, int n) const {
     return static_cast<int>(std::clamp(std::floor((at - lo) * per_cell_), 0.0, n - 1.0));
   }
-  uint64_t& word(int ix, int iz, int w) { return mask_[static_cast<size_t>((ix * nz_ + iz) * words_ + w)]; }
-  uint64_t word(int ix, int iz, int w) const { return mask_[static_cast<size_t>((ix * nz_ + iz) * words_ + w)]; }
+  // Where cell (ix, iz) keeps its w-th mask word in mask_.
+  size_t slot(int ix, int iz, int w) const { return static_cast<size_t>((ix * nz_ + iz) * words_ + w); }
 
   double lo_x_ = 0, lo_z_ = 0, per_cell_ = 0;  // m, m, cells per m
   int nx_ = 0, nz_ = 0, words_ = 0;            // words_: 64-bit masks per cell
@@ -116,7 +116,7 @@ bool ColliderGrid::visit(const Vec3& p, double reach, Fn&& fn) const {
   for (int w = 0; w < words_; ++w) {
     uint64_t bits = 0;
     for (int ix = x0; ix <= x1; ++ix)
-      for (int iz = z0; iz <= z1; ++iz) bits |= word(ix, iz, w);
+      for (int iz = z0; iz <= z1; ++iz) bits |= mask_[slot(ix, iz, w)];
     // The lowest bit first; not std::countr_zero: this header is also compiled as C++17 (stepper_rosenbrock.cpp).
     for (; bits; bits &= bits - 1) fn(64 * w + __builtin_ctzll(bits));
   }
