@@ -30,6 +30,15 @@ bool band_edges_only(const FrictionState& a, const FrictionState& b) {
   return (changed >> 3 & ~changed & kInBand) == 0 && !turned_around(a, b);
 }
 
+double normal_force_rate(const ContactMaterial& mat, double depth, double rate, double accel) {
+  const double per_depth = mat.exponent == 1.5 ? std::sqrt(depth) : std::pow(depth, mat.exponent - 1.0);  // d^(e-1)
+  const double power = per_depth * depth;
+  const double stiffening = mat.exponent * mat.stiffness * per_depth * rate;
+  return mat.damping_law == DampingLaw::Linear
+             ? stiffening + mat.damping * accel
+             : stiffening * (1.0 + mat.damping * rate) + mat.stiffness * power * mat.damping * accel;
+}
+
 double elastic_energy(const ContactMaterial& mat, double depth) {
   const double e = mat.exponent + 1;
   return mat.stiffness * (mat.exponent == 1.5 ? depth * depth * std::sqrt(depth) : std::pow(depth, e)) / e;

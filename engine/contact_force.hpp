@@ -85,6 +85,10 @@ double sharpness_for(const Smoothing& s, double strength, double mobility);
 // damping, negative while the damping pulls.
 double normal_force(const ContactMaterial& mat, double depth, double rate);
 
+// d/dt of normal_force along a path whose depth changes at `rate` (m/s) and whose rate changes at `accel` (m/s^2), in
+// N/s: the bed's force over a bounce, interpolated to fifth order (bounce.cpp).
+double normal_force_rate(const ContactMaterial& mat, double depth, double rate, double accel);
+
 // The elastic energy (J) stored in a contact at the given depth (m, > 0): the integral of the Hertz term,
 // C d^(e+1) / (e+1).
 double elastic_energy(const ContactMaterial& mat, double depth);

@@ -199,7 +199,7 @@ double free_acceleration(const State& state, const ModelIndex& index, int i) {
 }
 
 double collider_contact_time(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
-                             double horizon, AccelBound bound, StepContacts* step) {
+                             double horizon, AccelBound bound, StepContacts* step, int bounce_bed) {
   const double a = bound.total;
   const double margin = model.options.contact_margin;
   const Vec3 p = position(x, i), v = velocity(x, i);
@@ -208,6 +208,7 @@ double collider_contact_time(const Model& model, const ModelIndex& index, const 
   // Colliders farther than the ball can travel within the horizon cannot limit the step.
   const double travel = s * horizon + a * horizon * horizon + margin;
   near_colliders(model, index, p, model.balls[i].radius, travel, [&](int c, const Penetration& pen) {
+    if (c == bounce_bed) return;
     if (pen.depth <= 0) {
       const double t = collider_closing_time(model.colliders[c].shape, p, model.balls[i].radius, v, pen, margin - pen.depth,
                                              bound, horizon);
@@ -219,14 +220,16 @@ double collider_contact_time(const Model& model, const ModelIndex& index, const 
       note_onset(*step, index.collider_material(c), -glm::dot(v, pen.normal), index.inv_mass[i]);
     if (may_release(index.collider_material(c), pen.depth, -glm::dot(v, pen.normal))) step->pushing.emplace_back(i, -1 - c);
   });
-  // A ball in the rolling or sliding regime ignores its support's geometry: it must not move far over a pocket's edge.
-  const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : -1;
+  // A ball in the rolling or sliding regime, or bouncing, ignores its support's geometry: it must not move far over a
+  // pocket's edge.
+  const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : bounce_bed;
   if (bed >= 0) best = std::min(best, closing_time(hole_gap(model.colliders[bed].shape, p) + margin, s, a));
   return best;
 }
 
 double time_to_possible_contact(const Model& model, const ModelIndex& index, const State& state, const double* x,
-                                double horizon, BroadPhase& broad, StepContacts* step, bool flight) {
+                                double horizon, BroadPhase& broad, StepContacts* step, bool flight,
+                                const std::vector<BedBounce>* bounces) {
   if (step) {  // every field reset, the lists keeping their storage
     *step = StepContacts{.separated = std::move(step->separated), .pushing = std::move(step->pushing),
                          .near = std::move(step->near)};
@@ -238,10 +241,19 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
   // In flight (the caller moves every ball in closed form) a ball in the full model that no rod holds touches nothing
   // until the step's first onset, where the step ends: gravity alone accelerates it, across only by its horizontal
   // part (none unless gravity is tilted).
-  auto flies = [&](int i) {
-    return flight && state.active(i) && !state.rolling(i) && !state.sliding(i) && index.rods_on[i] == 0;
+  auto bounce = [&](int i) -> const BedBounce* {
+    if (bounces)
+      for (const BedBounce& b : *bounces)
+        if (b.ball == i) return &b;
+    return nullptr;
   };
-  auto accel = [&](int i) { return flies(i) ? index.gravity : free_acceleration(state, index, i); };
+  auto flies = [&](int i) {
+    return flight && state.active(i) && !state.rolling(i) && !state.sliding(i) && index.rods_on[i] == 0 && !bounce(i);
+  };
+  auto accel = [&](int i) {
+    const BedBounce* b = bounce(i);
+    return b ? b->accel : flies(i) ? index.gravity : free_acceleration(state, index, i);
+  };
   const double margin = model.options.contact_margin;
   double best = std::numeric_limits<double>::infinity();
   double vmax = 0;
@@ -250,8 +262,9 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
     if (!state.active(i)) continue;  // a sleeping ball does not move towards anything
     vmax = std::max(vmax, glm::length(velocity(x, i)));
     const double a = accel(i);
-    const AccelBound bound{a, flies(i) ? index.gravity_across : a};
-    best = std::min(best, collider_contact_time(model, index, state, x, i, horizon, bound, step));
+    const BedBounce* b = bounce(i);
+    const AccelBound bound{a, b ? b->across : flies(i) ? index.gravity_across : a};
+    best = std::min(best, collider_contact_time(model, index, state, x, i, horizon, bound, step, b ? b->bed : -1));
   }
   // Ball pairs whose x gap is within anything closable within the horizon (a sleeper does not move: only the awake
   // one closes in).

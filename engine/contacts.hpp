@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "bounce.hpp"
 #include "contact_force.hpp"
 #include "shotlab/diagnostics.hpp"
 #include "shotlab/model.hpp"
@@ -152,9 +153,11 @@ void for_each_contact(const Model& model, const ModelIndex& index, const State& 
 // `step`, also sorts the contacts it looks at into step->separated (every contact that could begin within the
 // horizon, none that cannot: the list is searched on every right-hand side) and step->pushing. `flight`: the step
 // moves every ball in closed form, so a ball in the full model that no rod holds flies (regimes.hpp), under gravity
-// alone until the first onset, and its bound is |g| instead of free_acceleration's.
+// alone until the first onset, and its bound is |g| instead of free_acceleration's. A ball in `bounces` (bounce.hpp)
+// takes its bounce's bounds instead and is not held back by its bed, which its bounce follows, but by the bed's holes.
 double time_to_possible_contact(const Model& model, const ModelIndex& index, const State& state, const double* x,
-                                double horizon, BroadPhase& broad, StepContacts* step = nullptr, bool flight = false);
+                                double horizon, BroadPhase& broad, StepContacts* step = nullptr, bool flight = false,
+                                const std::vector<BedBounce>* bounces = nullptr);
 
 // Whether ball i (at x) is farther than contact_margin from every other ball in play and from every collider: no
 // contact acts on it (the swing and the flight move such a ball in closed form, regimes.hpp).
@@ -174,11 +177,11 @@ struct AccelBound {
 };
 
 // s: a lower bound on the time before ball i, its acceleration bounded by `a` outside contacts, could come
-// contact_margin into a collider other than the bed it rolls or slides on (as far as a step may take it), or that far
-// over a hole's edge in that bed; +inf when nothing can within `horizon`. With `step`, lists the ball's contacts
-// in step->separated and step->pushing as time_to_possible_contact does (unsorted).
+// contact_margin into a collider other than the bed it rolls, slides or bounces on (`bounce_bed`; as far as a step
+// may take it), or that far over a hole's edge in that bed; +inf when nothing can within `horizon`. With `step`,
+// lists the ball's contacts in step->separated and step->pushing as time_to_possible_contact does (unsorted).
 double collider_contact_time(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
-                             double horizon, AccelBound a, StepContacts* step = nullptr);
+                             double horizon, AccelBound a, StepContacts* step = nullptr, int bounce_bed = -1);
 
 // s: when two balls whose centres are d0 apart (m, d0 = p_i - p_j) and whose relative velocity is v (m/s) come within
 // `reach` (m) of each other on straight paths; +inf when they pass wider than that, 0 when they are that close now.

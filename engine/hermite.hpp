@@ -1,13 +1,14 @@
 // Dense output for every method: the cubic Hermite interpolant of one accepted step, built from the states and
 // derivatives at both ends. Between contacts the ball paths on the cloth are polynomials of degree <= 2 (docs/model.md#dense-output:
 // parabolic sliding, linear deceleration, linear spin decay), which a cubic reproduces exactly; inside contacts the
-// steps are short. Error O(h^4) in general. The exceptions are a closed-form step's band tails (band_tail.hpp) and
-// swings (swing.hpp): what they govern follows their own closed form.
+// steps are short. Error O(h^4) in general. The exceptions are a closed-form step's band tails (band_tail.hpp),
+// swings (swing.hpp) and bounces (bounce.hpp): what they govern follows their own closed form.
 #pragma once
 #include <algorithm>
 #include <vector>
 
 #include "band_tail.hpp"
+#include "bounce.hpp"
 #include "shotlab/state.hpp"
 #include "swing.hpp"
 
@@ -16,10 +17,11 @@ namespace shotlab {
 struct StepSpan {
   double t0 = 0, t1 = 0;
   StateVector x0, f0, x1, f1;
-  // What decays inside a friction band over the span, and the balls that swing on their rods, in closed form (a
-  // closed-form step's; else none).
+  // What decays inside a friction band over the span, the balls that swing on their rods and those that bounce on the
+  // bed, in closed form (a closed-form step's; else none).
   std::vector<BandTail> tails;
   std::vector<Swing> swings;
+  std::vector<BedBounce> bounces;
   // Balls that left play inside the span (Island::settle). x1 holds each frozen where it left, from `time` on; before
   // then it moves on the step's own end values, kept here, as it did.
   struct Exit {
@@ -64,6 +66,8 @@ struct StepSpan {
       if (in_range(tail.ball)) tail.apply(t - t0, out.data() + kBallDofs * tail.ball);
     for (const Swing& swing : swings)
       if (in_range(swing.ball)) swing.apply(t - t0, out.data() + kBallDofs * swing.ball);
+    for (const BedBounce& bounce : bounces)
+      if (in_range(bounce.ball)) bounce.apply(t - t0, out.data() + kBallDofs * bounce.ball);
     for (const Exit& e : exits) {
       if (!in_range(e.ball)) continue;
       for (size_t k = 0, j = kBallDofs * static_cast<size_t>(e.ball); k < kBallDofs; ++k, ++j)

@@ -192,15 +192,17 @@ double Island::plan(double limit, bool& constant) {
   constant = false;
   trial_.tails.clear();
   trial_.swings.clear();
+  trial_.bounces.clear();
   if (!adaptive) return dt;
   continuing_ = span_.swings;
   for (Swing& s : continuing_) s.phase += s.omega * (span_.t1 - span_.t0);  // as apply() reached the step's end
+  const double longest = std::min(limit - span_.t1, kLoneHorizon);
   const double band = time_to_band_edge(model_, integ_, index_, span_.x1.data(), &constant, &trial_.tails,
-                                        &trial_.swings, &continuing_);
-  if (!constant) trial_.tails.clear(), trial_.swings.clear();
-  const double horizon = constant ? std::min(limit - span_.t1, kLoneHorizon) : dt;
+                                        &trial_.swings, &continuing_, &trial_.bounces, longest);
+  if (!constant) trial_.tails.clear(), trial_.swings.clear(), trial_.bounces.clear();
+  const double horizon = constant ? longest : dt;
   const double touch = time_to_possible_contact(model_, index_, integ_, span_.x1.data(), horizon, cap_broad_, &plan_,
-                                                     constant && model_.options.flight_regime);
+                                                constant && model_.options.flight_regime, &trial_.bounces);
   return std::min({horizon, band, touch});
 }
 
@@ -262,6 +264,7 @@ void Island::commit(double t) {
   span_.f1.swap(trial_.f1);
   span_.tails.swap(trial_.tails);
   span_.swings.swap(trial_.swings);
+  span_.bounces.swap(trial_.bounces);
   span_.t1 = t;
   integ_.x = span_.x1;
   integ_.time = t;
@@ -283,6 +286,7 @@ void Island::settle(double t, bool recorded) {
     std::copy_n(span_.f1.begin() + kBallDofs * e.ball, kBallDofs, kept.f1);
     std::erase_if(span_.tails, [&](const BandTail& tail) { return tail.ball == e.ball; });
     std::erase_if(span_.swings, [&](const Swing& swing) { return swing.ball == e.ball; });
+    std::erase_if(span_.bounces, [&](const BedBounce& bounce) { return bounce.ball == e.ball; });
     integ_.in_play[e.ball] = 0;
     set_position(span_.x1, e.ball, position(at, e.ball));
     set_velocity(span_.x1, e.ball, Vec3{0.0});
@@ -317,6 +321,7 @@ void Island::closed_form_step(double t1) {
     for (size_t c = 0; c < 3; ++c) x[b + c] += 0.5 * h * h * f0[b + 3 + c];
   for (const BandTail& tail : trial_.tails) tail.apply(h, x.data() + kBallDofs * tail.ball);
   for (const Swing& swing : trial_.swings) swing.apply(h, x.data() + kBallDofs * swing.ball);
+  for (const BedBounce& bounce : trial_.bounces) bounce.apply(h, x.data() + kBallDofs * bounce.ball);
   f.resize(x.size());
   dynamics_(x, f, t1);
   trial_.t1 = t1;

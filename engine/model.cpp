@@ -63,7 +63,7 @@ Model empty_model() {
 void use_path(Options& options, SolverPath path) {
   const bool fast = path == SolverPath::Fast;
   options.rolling_regime = options.sliding_regime = options.swing_regime = options.flight_regime =
-      options.islands = fast;
+      options.bounce_regime = options.islands = fast;
   options.sleep_time = fast ? kDefaultSleepTime : 0.0;
 }
 

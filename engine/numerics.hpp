@@ -64,6 +64,8 @@ inline constexpr int kMaxRedos = 8;
 // Iterations of the root finder that locates a change of sign (a depth or height crossing, a release, a change of
 // motion) before bisection finishes (events.cpp): it takes a handful on a smooth crossing.
 inline constexpr int kMaxRootIterations = 30;
+// Steps of a bounce's scalar ODE (bounce.cpp) after which it ends where it got to: a settling ball takes a few dozen.
+inline constexpr int kMaxBounceSteps = 2000;
 
 // --- Rates (1/s) ---
 

@@ -17,16 +17,11 @@ double entry_slip(const Model& model) {
   return std::min(kEntrySlip * model.options.rest_speed, kEntrySlipPerTolerance * model.integrator.abs_tol);
 }
 
-namespace {
-
-// m: how deep ball b sinks into a bed of material m under its own weight (C d^e = m g).
 double static_sink(const BallSpec& b, const ContactMaterial& m, double g) {
   const double q = b.mass * g / m.stiffness;
   return m.exponent == 1.5 ? std::cbrt(q * q) : std::pow(q, 1.0 / m.exponent);  // cbrt: a third of pow's cost
 }
 
-// The flat, horizontal bed a ball can roll on in closed form: a plane (bounded or not) whose unit normal (from the
-// contact index, 0 for other shapes) is along -gravity; `point` is a point of it.
 bool flat_bed(const Collider& c, const Vec3& normal, const Vec3& gravity, Vec3& point) {
   if (const auto* s = std::get_if<Plane>(&c.shape)) point = s->point;
   else if (const auto* s = std::get_if<BoundedPlane>(&c.shape)) point = s->origin;
@@ -34,6 +29,9 @@ bool flat_bed(const Collider& c, const Vec3& normal, const Vec3& gravity, Vec3& 
   const double g = glm::length(gravity);
   return g > 0 && glm::dot(normal, -gravity / g) > 1.0 - 1e-12;
 }
+
+namespace {
+
 // s: how long a quantity q (a slip, speed or contact-patch speed, m/s) that a friction term of the given strength (N)
 // relaxes at strength times mobility (1/kg: m/s^2, contact_force.hpp) takes to fall to its smoothing band's edge
 // 1/k; not positive once inside the band.
@@ -150,15 +148,20 @@ void BandScan::ball(const State& state, int i, int bed) {
   }
 }
 
-// The balls in the full model that move in closed form: each swinging alone on its rod (listed in `swings`) or flying,
+// The balls in the full model that move in closed form: each swinging alone on its rod (listed in `swings`), flying,
 // held by no rod and touching nothing, under gravity alone (the constant acceleration of the island's closed-form
-// step); false at the first that does neither.
+// step), or bouncing on the bed alone (listed in `bounces`, followed for at most `horizon` s once every ball moves so,
+// their ends lowering `best`); false at the first that does none of these.
 bool add_free_motions(const Model& model, const State& state, const ModelIndex& index, const double* x,
-                      std::vector<Swing>& swings, const std::vector<Swing>* continuing) {
+                      std::vector<Swing>& swings, const std::vector<Swing>* continuing, std::vector<BedBounce>* bounces,
+                      double horizon, double& best) {
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.active(i) || state.rolling(i) || state.sliding(i)) continue;
     if (index.rods_on[i] == 0) {
-      if (!model.options.flight_regime || !clear_of_contacts(model, index, state, x, i)) return false;
+      if (model.options.flight_regime && clear_of_contacts(model, index, state, x, i)) continue;
+      auto bounce = bounces ? bed_bounce_of(model, state, index, x, i) : std::nullopt;
+      if (!bounce) return false;
+      bounces->push_back(std::move(*bounce));
       continue;
     }
     const Swing* last = nullptr;
@@ -169,6 +172,11 @@ bool add_free_motions(const Model& model, const State& state, const ModelIndex& 
     if (!swing) return false;
     swings.push_back(*swing);
   }
+  if (!bounces) return true;
+  for (BedBounce& bounce : *bounces) {
+    if (!follow(model, index, bounce, horizon)) return false;
+    best = std::min(best, bounce.end);
+  }
   return true;
 }
 
@@ -176,11 +184,12 @@ bool add_free_motions(const Model& model, const State& state, const ModelIndex& 
 
 double time_to_band_edge(const Model& model, const State& state, const ModelIndex& index, const double* x,
                          bool* constant, std::vector<BandTail>* tails, std::vector<Swing>* swings,
-                         const std::vector<Swing>* continuing) {
+                         const std::vector<Swing>* continuing, std::vector<BedBounce>* bounces, double horizon) {
   BandScan scan{model, index, x, tails, {model.options.friction_sharpness, model.options.friction_rate_limit},
                 glm::length(model.options.gravity)};
   if (tails) tails->clear();
   if (swings) swings->clear();
+  if (bounces) bounces->clear();
   bool full = false;  // a ball in the full model
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.active(i)) continue;  // asleep or out of play: frozen
@@ -188,12 +197,13 @@ double time_to_band_edge(const Model& model, const State& state, const ModelInde
     if (bed < 0) full = true;  // the full model, unless the ball swings alone on its rod or flies (below)
     else scan.ball(state, i, bed);
   }
-  // The swings and flights last: worked out only where nothing else keeps the island from its closed form.
+  // The swings, flights and bounces last: worked out only where nothing else keeps the island from its closed form.
   bool outside = scan.outside;
   if (full && !swings) outside = false;
-  if (full && outside) outside = add_free_motions(model, state, index, x, *swings, continuing);
+  double best = scan.best;
+  if (full && outside) outside = add_free_motions(model, state, index, x, *swings, continuing, bounces, horizon, best);
   if (constant) *constant = outside;
-  return scan.best;
+  return best;
 }
 
 bool Regimes::slip_below(const StateVector& x, int i, const Vec3& n, double limit) const {
@@ -238,30 +248,34 @@ int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& heig
 // m/s: the bed's vertical motion of ball i (normal speed vn, height offset from the static sink) as the speed of its
 // amplitude in the linearised bed contact (stiffness e m g / sink, so omega^2 = e g / sink).
 double Regimes::hop(int i, int bed, double vn, double offset) const {
-  const double omega2 = index_.collider_material(bed).exponent * glm::length(model_.options.gravity) / sink(i, bed);
-  return std::hypot(vn, std::sqrt(omega2) * offset);
+  return bed_hop(index_.collider_material(bed), glm::length(model_.options.gravity), sink(i, bed), vn, offset);
 }
 
-bool Regimes::settles(const StateVector& x, int i, int bed, const Vec3& n, double vn, double offset) const {
-  const BallSpec& b = model_.balls[i];
-  const ContactMaterial& m = index_.collider_material(bed);
-  const double g = glm::length(model_.options.gravity), sink = this->sink(i, bed);
+double bed_hop(const ContactMaterial& m, double g, double sink, double vn, double offset) {
+  return std::hypot(vn, std::sqrt(m.exponent * g / sink) * offset);
+}
+
+bool settles_on_bed(const Model& model, const ModelIndex& index, const double* b, int i, int bed, const Vec3& n,
+                    double vn, double offset, double sink) {
+  const BallSpec& ball = model.balls[i];
+  const ContactMaterial& m = index.collider_material(bed);
+  const double g = glm::length(model.options.gravity);
   const double omega2 = m.exponent * g / sink;
-  const double hop = this->hop(i, bed, vn, offset);
-  if (hop >= model_.options.rest_speed) return false;
+  const double hop = bed_hop(m, g, sink, vn, offset);
+  if (hop >= model.options.rest_speed) return false;
   const double mu = m.friction + m.rolling_resistance;
   if (mu <= 0) return true;  // nothing tangential depends on the normal force
-  const double sigma = m.damping_law == DampingLaw::Linear ? m.damping / (2 * b.mass) : 0.5 * g * m.damping;
+  const double sigma = m.damping_law == DampingLaw::Linear ? m.damping / (2 * ball.mass) : 0.5 * g * m.damping;
   const double slowest = sigma * sigma > omega2 ? sigma - std::sqrt(sigma * sigma - omega2) : sigma;  // overdamped
   // The slip's time to its band's edge, falling at the regime's rate mu m g (1/m + R^2/I) (time_to_band_edge).
-  Vec3 u = velocity(x, i) + b.radius * glm::cross(n, spin(x, i));
+  Vec3 u = velocity(b, 0) + ball.radius * glm::cross(n, spin(b, 0));
   u -= glm::dot(u, n) * n;
-  const Smoothing smooth{model_.options.friction_sharpness, model_.options.friction_rate_limit};
+  const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
   const double saturated_for =
-      m.friction > 0 ? std::max(0.0, time_to_edge(smooth, glm::length(u), m.friction * (b.mass * g),
-                                                  index_.inv_mass[i] + index_.inv_inertia_r2[i]))
+      m.friction > 0 ? std::max(0.0, time_to_edge(smooth, glm::length(u), m.friction * (ball.mass * g),
+                                                  index.inv_mass[i] + index.inv_inertia_r2[i]))
                      : 0.0;
-  return hop * std::exp(-slowest * saturated_for) < kSnapShare * model_.integrator.abs_tol * slowest / mu;
+  return hop * std::exp(-slowest * saturated_for) < kSnapShare * model.integrator.abs_tol * slowest / mu;
 }
 
 double Regimes::sink(int i, int plane) const {
@@ -365,7 +379,7 @@ bool Regimes::update_sliding(State& state, StateVector& x) {
     // acceleration times -offset / g for good. Both hold for any N(t), a bounce off the bed included.
     const Vec3 p = position(x, i), v = velocity(x, i);
     const double vn = glm::dot(v, n), offset = glm::dot(p, n) - height;
-    if (!settles(x, i, bed, n, vn, offset)) continue;
+    if (!settles_on_bed(model_, index_, x.data() + kBallDofs * i, i, bed, n, vn, offset, sink(i, bed))) continue;
     set_position(x, i, p - offset * n);
     set_velocity(x, i, v - vn * n);
     state.sliding_on[i] = bed;

@@ -15,6 +15,7 @@
 #include "contacts.hpp"
 #include "shotlab/model.hpp"
 #include "band_tail.hpp"
+#include "bounce.hpp"
 #include "shotlab/state.hpp"
 #include "swing.hpp"
 
@@ -52,9 +53,6 @@ class Regimes {
   // ball i touches exactly one flat bed and nothing else within contact_margin; -1 otherwise.
   int only_on_bed(const StateVector& x, int i, Vec3& normal, double& height) const;
   double sink(int i, int plane) const;  // m: ball i's static sink into plane-like collider `plane`
-  // Whether ball i, alone on the flat bed `bed` (unit normal n) with normal speed vn (m/s) and its centre `offset` m
-  // above its static sink, has settled enough to enter the sliding regime (update_sliding).
-  bool settles(const StateVector& x, int i, int bed, const Vec3& n, double vn, double offset) const;
 
   const Model& model_;
   const ModelIndex& index_;
@@ -74,6 +72,19 @@ class Regimes {
 // m/s: the slip under which a ball enters the rolling regime (kEntrySlip, numerics.hpp).
 double entry_slip(const Model& model);
 
+// m: how deep ball b sinks into a bed of material m under its own weight (C d^e = m g).
+double static_sink(const BallSpec& b, const ContactMaterial& m, double g);
+// The flat, horizontal bed a ball can roll on in closed form: a plane (bounded or not) whose unit normal (from the
+// contact index, 0 for other shapes) is along -gravity; `point` is a point of it.
+bool flat_bed(const Collider& c, const Vec3& normal, const Vec3& gravity, Vec3& point);
+// m/s: a ball's vertical motion on a bed of material m (normal speed vn, height offset from its static sink `sink`)
+// as the speed of its amplitude in the linearised bed contact (stiffness e m g / sink, so omega^2 = e g / sink).
+double bed_hop(const ContactMaterial& m, double g, double sink, double vn, double offset);
+// Whether ball i (its 9 numbers at b), alone on the flat bed `bed` (unit normal n) with normal speed vn (m/s) and its
+// centre `offset` m above its static sink `sink`, has settled enough to enter the sliding regime (update_sliding).
+bool settles_on_bed(const Model& model, const ModelIndex& index, const double* b, int i, int bed, const Vec3& n,
+                    double vn, double offset, double sink);
+
 // s: the earliest time at which a ball in the rolling or sliding regime reaches the edge of a friction term's smoothing
 // band (fricstep's clamp at k s = 1: a kink in the right-hand side); +inf when none does. Outside the bands the
 // regimes' motion is polynomial in time (constant forces), so the time is exact. A step that ends there crosses no
@@ -87,9 +98,11 @@ double entry_slip(const Model& model);
 // stop cut, the rolling entry) counts as an edge. With `swings`, neither does a ball in the full model that swings
 // alone on its rod (swing_of): it is listed there, to follow the pendulum's closed form (`continuing`: the swings of
 // the step that ended at x, their phases moved on to its end); nor one that flies (Options::flight_regime: held by no
-// rod, nothing within contact_margin), whose right-hand side is gravity alone.
+// rod, nothing within contact_margin), whose right-hand side is gravity alone. With `bounces`, neither does a ball that
+// bounces on the bed alone (bed_bounce_of, followed for at most `horizon` seconds): it is listed there, its end an edge.
 double time_to_band_edge(const Model& model, const State& state, const ModelIndex& index, const double* x,
                          bool* constant = nullptr, std::vector<BandTail>* tails = nullptr,
-                         std::vector<Swing>* swings = nullptr, const std::vector<Swing>* continuing = nullptr);
+                         std::vector<Swing>* swings = nullptr, const std::vector<Swing>* continuing = nullptr,
+                         std::vector<BedBounce>* bounces = nullptr, double horizon = 0);
 
 }  // namespace shotlab

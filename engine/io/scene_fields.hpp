@@ -51,6 +51,7 @@ constexpr Field<Options, bool> kOptionSwitches[] = {
     {"sliding_regime", &Options::sliding_regime, &JsonNode::boolean},
     {"swing_regime", &Options::swing_regime, &JsonNode::boolean},
     {"flight_regime", &Options::flight_regime, &JsonNode::boolean},
+    {"bounce_regime", &Options::bounce_regime, &JsonNode::boolean},
     {"islands", &Options::islands, &JsonNode::boolean},
 };
 

@@ -220,13 +220,15 @@ TEST(Cli, SweepOutDashIsStandardOutput) {
 // model.path sets every solver switch at once; a switch given beside it overrides it, wherever it stands.
 TEST(SceneFile, SolverPathSetsTheSwitchesAndEachMayOverrideIt) {
   const Options plain = scene({{"model", {{"path", "plain"}}}}).model.options;
-  EXPECT_FALSE(plain.rolling_regime || plain.sliding_regime || plain.swing_regime || plain.islands);
+  EXPECT_FALSE(plain.rolling_regime || plain.sliding_regime || plain.swing_regime || plain.flight_regime ||
+               plain.bounce_regime || plain.islands);
   EXPECT_EQ(plain.sleep_time, 0.0);
   const Options mixed = scene({{"model", {{"islands", true}, {"path", "plain"}}}}).model.options;
   EXPECT_TRUE(mixed.islands);
   EXPECT_FALSE(mixed.rolling_regime);
   const Options fast = scene({{"model", {{"path", "fast"}}}}).model.options;
-  EXPECT_TRUE(fast.rolling_regime && fast.sliding_regime && fast.swing_regime && fast.islands);
+  EXPECT_TRUE(fast.rolling_regime && fast.sliding_regime && fast.swing_regime && fast.flight_regime &&
+              fast.bounce_regime && fast.islands);
   EXPECT_EQ(fast.sleep_time, Options{}.sleep_time);
   try {
     scene({{"model", {{"path", "quick"}}}});

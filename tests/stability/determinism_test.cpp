@@ -90,7 +90,8 @@ TEST(Determinism, IntegratorsAgreeOnTheBreak) {
   expect_integrators_agree("s6_break.json", 10.0, {{"cash_karp54", "1e-9"}});
   expect_integrators_agree("s6_break.json", 10.0, {{"bulirsch_stoer", "1e-11"}, {"bulirsch_stoer", "1e-13"}},
                            {"model.rolling_regime=false", "model.sliding_regime=false", "model.swing_regime=false",
-                            "model.flight_regime=false", "model.sleep_time=0", "model.islands=false"});
+                            "model.flight_regime=false", "model.bounce_regime=false", "model.sleep_time=0",
+                            "model.islands=false"});
 }
 
 }  // namespace

@@ -72,6 +72,7 @@ struct Options {
   bool sliding_regime = true;  // a ball alone on the bed, settled onto it, slides at its static sink (regimes.hpp)
   bool swing_regime = true;    // a ball alone on its rod swings in the pendulum's closed form (swing.hpp)
   bool flight_regime = true;   // a ball touching nothing, held by no rod, flies in closed form (regimes.hpp)
+  bool bounce_regime = true;   // a ball sliding on the bed alone bounces and settles in reduced form (bounce.hpp)
   bool islands = true;         // balls that cannot touch for a while integrate apart (partition.hpp)
 };
 
