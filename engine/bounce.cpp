@@ -271,7 +271,8 @@ void BounceTrack::at(double t, double out[4]) const {
   hermite(*(after - 1), *after, t, out);
 }
 
-void BedBounce::apply(double h, double* b) const {
+void BedBounce::apply(double step_h, double* b) const {
+  const double h = from + step_h;
   double y[4];
   track->at(h, y);
   const Vec3 vt = v0 - glm::dot(v0, normal) * normal;
@@ -316,6 +317,16 @@ std::optional<BedBounce> bed_bounce_of(const Model& model, const State& state, c
 
 bool follow(const Model& model, const ModelIndex& index, BedBounce& bounce, double horizon) {
   return horizon > 0 && Follower(model, index, bounce).run(horizon);
+}
+
+bool goes_on(const BedBounce& last, const double* x, BedBounce& bounce) {
+  // Not for the last few steps of round-off before its end (a step cut at a touch a hair before it).
+  if (last.ball != bounce.ball || last.bed != bounce.bed || !(last.left() > kOnsetResolution)) return false;
+  double at[kBallDofs];
+  last.apply(0.0, at);
+  if (!std::equal(at, at + kBallDofs, x + kBallDofs * last.ball)) return false;
+  bounce = last;
+  return true;
 }
 
 }  // namespace shotlab

@@ -39,14 +39,24 @@ struct BedBounce {
   Vec3 along;        // m/s^2: gravity's part along the bed (none on a level table)
   double depth0;     // m: the bed's penetration at the start
   bool touching;     // in contact over the bounce (else above the surface, within contact_margin, until it lands)
-  // Set by follow():
+  double from = 0;    // s along the track where this step starts (a bounce that goes on over the next step)
+  // Set by follow(), along the track:
   double end = 0;     // s after the start: where the reduced form stops holding, or the horizon asked for
   double accel = 0;   // m/s^2: a bound on the ball's acceleration until `end`
   double across = 0;  // m/s^2: the same for its part along the bed
   std::shared_ptr<const BounceTrack> track;  // shared: a span's copies keep the same track
 
-  // Writes the ball's 9 numbers h seconds after the start (0 <= h <= end) at b.
+  // Writes the ball's 9 numbers h seconds into this step (0 <= from + h <= end) at b.
   void apply(double h, double* b) const;
+  double left() const { return end - from; }  // s: how long this step may follow it
+};
+
+// An island's bounces for its next step (time_to_band_edge): the list to fill, the last step's bounces moved on to
+// its end (`last`, their `from` advanced), and how far to follow a new one (s).
+struct BounceWork {
+  std::vector<BedBounce>& list;
+  const std::vector<BedBounce>& last;
+  double horizon;
 };
 
 // Whether ball i at x (an island's state vector) may bounce: the model asks for it (Options::bounce_regime, adaptive
@@ -61,5 +71,10 @@ std::optional<BedBounce> bed_bounce_of(const Model& model, const State& state, c
 // quarter of its band's edge, the ball settling enough for the sliding regime (regimes.hpp). False where it does not
 // hold even at the start.
 bool follow(const Model& model, const ModelIndex& index, BedBounce& bounce, double horizon);
+
+// The bounce `last` followed over the step that ended at x, going on from there: where the ball is exactly where it
+// led (nothing snapped it at the step's end) and more than kOnsetResolution before its end, the same track, sparing
+// follow(); else false.
+bool goes_on(const BedBounce& last, const double* x, BedBounce& bounce);
 
 }  // namespace shotlab

@@ -196,9 +196,12 @@ double Island::plan(double limit, bool& constant) {
   if (!adaptive) return dt;
   continuing_ = span_.swings;
   for (Swing& s : continuing_) s.phase += s.omega * (span_.t1 - span_.t0);  // as apply() reached the step's end
+  bouncing_ = span_.bounces;
+  for (BedBounce& b : bouncing_) b.from += span_.t1 - span_.t0;  // as apply() reached the step's end
   const double longest = std::min(limit - span_.t1, kLoneHorizon);
+  BounceWork bounces{trial_.bounces, bouncing_, longest};
   const double band = time_to_band_edge(model_, integ_, index_, span_.x1.data(), &constant, &trial_.tails,
-                                        &trial_.swings, &continuing_, &trial_.bounces, longest);
+                                        &trial_.swings, &continuing_, &bounces);
   if (!constant) trial_.tails.clear(), trial_.swings.clear(), trial_.bounces.clear();
   const double horizon = constant ? longest : dt;
   const double touch = time_to_possible_contact(model_, index_, integ_, span_.x1.data(), horizon, cap_broad_, &plan_,

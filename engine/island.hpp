@@ -135,6 +135,7 @@ class Island {
   bool end_record_is_start_ = false;  // end_record_ is the record at the step's start (the last step's accepted end)
   StepSpan trial_;          // the step's trial (buffers reused from step to step)
   std::vector<Swing> continuing_;  // the last step's swings, their phases at its end (time_to_band_edge)
+  std::vector<BedBounce> bouncing_;  // the last step's bounces, moved on to its end (time_to_band_edge)
   StepSpan span_;
   double dt_next_;
   // s: where the next step ends, a change that the last step's trials found past where it was cut (integrate); +inf

@@ -153,15 +153,15 @@ void BandScan::ball(const State& state, int i, int bed) {
 // step), or bouncing on the bed alone (listed in `bounces`, followed for at most `horizon` s once every ball moves so,
 // their ends lowering `best`); false at the first that does none of these.
 bool add_free_motions(const Model& model, const State& state, const ModelIndex& index, const double* x,
-                      std::vector<Swing>& swings, const std::vector<Swing>* continuing, std::vector<BedBounce>* bounces,
-                      double horizon, double& best) {
+                      std::vector<Swing>& swings, const std::vector<Swing>* continuing, BounceWork* bounces,
+                      double& best) {
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.active(i) || state.rolling(i) || state.sliding(i)) continue;
     if (index.rods_on[i] == 0) {
       if (model.options.flight_regime && clear_of_contacts(model, index, state, x, i)) continue;
       auto bounce = bounces ? bed_bounce_of(model, state, index, x, i) : std::nullopt;
       if (!bounce) return false;
-      bounces->push_back(std::move(*bounce));
+      bounces->list.push_back(std::move(*bounce));
       continue;
     }
     const Swing* last = nullptr;
@@ -173,9 +173,11 @@ bool add_free_motions(const Model& model, const State& state, const ModelIndex& 
     swings.push_back(*swing);
   }
   if (!bounces) return true;
-  for (BedBounce& bounce : *bounces) {
-    if (!follow(model, index, bounce, horizon)) return false;
-    best = std::min(best, bounce.end);
+  for (BedBounce& bounce : bounces->list) {
+    const auto& last = bounces->last;
+    const bool on = std::any_of(last.begin(), last.end(), [&](const BedBounce& b) { return goes_on(b, x, bounce); });
+    if (!on && !follow(model, index, bounce, bounces->horizon)) return false;
+    best = std::min(best, bounce.left());
   }
   return true;
 }
@@ -184,12 +186,12 @@ bool add_free_motions(const Model& model, const State& state, const ModelIndex& 
 
 double time_to_band_edge(const Model& model, const State& state, const ModelIndex& index, const double* x,
                          bool* constant, std::vector<BandTail>* tails, std::vector<Swing>* swings,
-                         const std::vector<Swing>* continuing, std::vector<BedBounce>* bounces, double horizon) {
+                         const std::vector<Swing>* continuing, BounceWork* bounces) {
   BandScan scan{model, index, x, tails, {model.options.friction_sharpness, model.options.friction_rate_limit},
                 glm::length(model.options.gravity)};
   if (tails) tails->clear();
   if (swings) swings->clear();
-  if (bounces) bounces->clear();
+  if (bounces) bounces->list.clear();
   bool full = false;  // a ball in the full model
   for (int i = 0; i < state.ball_count(); ++i) {
     if (!state.active(i)) continue;  // asleep or out of play: frozen
@@ -201,7 +203,7 @@ double time_to_band_edge(const Model& model, const State& state, const ModelInde
   bool outside = scan.outside;
   if (full && !swings) outside = false;
   double best = scan.best;
-  if (full && outside) outside = add_free_motions(model, state, index, x, *swings, continuing, bounces, horizon, best);
+  if (full && outside) outside = add_free_motions(model, state, index, x, *swings, continuing, bounces, best);
   if (constant) *constant = outside;
   return best;
 }

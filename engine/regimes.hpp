@@ -99,10 +99,11 @@ bool settles_on_bed(const Model& model, const ModelIndex& index, const double* b
 // alone on its rod (swing_of): it is listed there, to follow the pendulum's closed form (`continuing`: the swings of
 // the step that ended at x, their phases moved on to its end); nor one that flies (Options::flight_regime: held by no
 // rod, nothing within contact_margin), whose right-hand side is gravity alone. With `bounces`, neither does a ball that
-// bounces on the bed alone (bed_bounce_of, followed for at most `horizon` seconds): it is listed there, its end an edge.
+// bounces on the bed alone (bed_bounce_of; going on with the last step's where it can, else followed anew for at most
+// their horizon): it is listed there, its end an edge.
 double time_to_band_edge(const Model& model, const State& state, const ModelIndex& index, const double* x,
                          bool* constant = nullptr, std::vector<BandTail>* tails = nullptr,
                          std::vector<Swing>* swings = nullptr, const std::vector<Swing>* continuing = nullptr,
-                         std::vector<BedBounce>* bounces = nullptr, double horizon = 0);
+                         BounceWork* bounces = nullptr);
 
 }  // namespace shotlab

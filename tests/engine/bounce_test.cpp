@@ -99,5 +99,32 @@ TEST(Bounce, OnlyWhereItsFormHolds) {
   EXPECT_FALSE(bounces(pair)) << "another ball within the margin";
 }
 
+// A step cut short of its bounce's end (by another ball's cap) leaves the next step to go on along the same track, from
+// exactly where the ball got to; a ball moved by anything else, or a bounce at its end, is followed anew.
+TEST(Bounce, GoesOnOverTheNextStepOnlyFromWhereItLed) {
+  Prepared p = prepare(scene(drop_scene(0.0, 1.0, {0, 0, 0}, true)));
+  p.state.x[4] = -0.05;  // landing at 5 cm/s
+  const ModelIndex index(p.model);
+  auto b = bed_bounce_of(p.model, p.state, index, p.state.x.data(), 0);
+  ASSERT_TRUE(b && follow(p.model, index, *b, 1.0));
+  const double h = 0.4 * b->end;
+  StateVector x = p.state.x;
+  b->apply(h, x.data());
+  BedBounce last = *b;
+  last.from += h;  // as the island moves it on to its step's end
+  BedBounce next = *bed_bounce_of(p.model, p.state, index, x.data(), 0);
+  ASSERT_TRUE(goes_on(last, x.data(), next));
+  EXPECT_EQ(next.track, b->track);
+  EXPECT_DOUBLE_EQ(next.left(), 0.6 * b->end);
+  StateVector at = x;
+  next.apply(0.0, at.data());
+  EXPECT_EQ(at, x) << "it starts exactly where the last step ended";
+  x[3] = std::nextafter(x[3], 2.0);  // snapped by a regime, say
+  EXPECT_FALSE(goes_on(last, x.data(), next));
+  last.from = b->end;
+  b->apply(b->end, x.data());
+  EXPECT_FALSE(goes_on(last, x.data(), next)) << "at its end";
+}
+
 }  // namespace
 }  // namespace shotlab::test
