@@ -189,9 +189,10 @@ class Follower {
 
 // Above the surface the depth is a parabola, d = d0 + d0' t + g_in t^2 / 2, which the interpolant holds exactly: the
 // bounce ends where the ball rises out of the margin and off its support (kSupportGap, a millionth past it: airborne,
-// an event located on this step, and clear for the flight that follows) or comes down onto the bed, a few ulps past
-// the root so that the contact has begun.
+// an event located on this step, and clear for the flight that follows) or comes down onto the bed, kLanded deep: the
+// contact has begun at the step's end, where its onset is recorded (EventDetector::scan), as after a flight.
 bool Follower::fly(double horizon) {
+  constexpr double kLanded = 1e-15;  // m: past the surface by far more than the round-off of the centre's height
   const double d0 = b_.depth0, r0 = -glm::dot(b_.v0, b_.normal), g = push_.g_in;
   const double out = -std::max(model_.options.contact_margin, kSupportGap) * (1.0 + 1e-6);
   auto depth = [&](double t) { return d0 + r0 * t + 0.5 * g * t * t; };
@@ -200,9 +201,9 @@ bool Follower::fly(double horizon) {
   if (leaves) {  // the smaller root of g t^2 / 2 + r0 t + (d0 - out), written without cancellation
     const double c = d0 - out;
     t = 2.0 * c / (-r0 + std::sqrt(std::max(0.0, r0 * r0 - 2.0 * g * c)));
-  } else {  // the root after the apex (r0 > 0 and d0 <= 0: the only positive one)
-    const double root = std::sqrt(std::max(0.0, r0 * r0 - 2.0 * g * d0));
-    t = r0 > 0 && d0 <= 0 ? -2.0 * d0 / (r0 + root) : (root - r0) / g;
+  } else {  // the root after the apex of depth = kLanded (with r0 > 0 and c <= 0: the only positive one)
+    const double c = d0 - kLanded, root = std::sqrt(std::max(0.0, r0 * r0 - 2.0 * g * c));
+    t = r0 > 0 && c <= 0 ? -2.0 * c / (r0 + root) : (root - r0) / g;
   }
   if (!(t < horizon)) t = horizon;
   else
@@ -322,6 +323,9 @@ bool follow(const Model& model, const ModelIndex& index, BedBounce& bounce, doub
 bool goes_on(const BedBounce& last, const double* x, BedBounce& bounce) {
   // Not for the last few steps of round-off before its end (a step cut at a touch a hair before it).
   if (last.ball != bounce.ball || last.bed != bounce.bed || !(last.left() > kOnsetResolution)) return false;
+  double y[4];
+  last.track->at(last.from, y);
+  if (!last.touching && y[0] > 0) return false;  // landed a hair before the end (the step was cut at the onset)
   double at[kBallDofs];
   last.apply(0.0, at);
   if (!std::equal(at, at + kBallDofs, x + kBallDofs * last.ball)) return false;

@@ -73,8 +73,8 @@ std::optional<BedBounce> bed_bounce_of(const Model& model, const State& state, c
 bool follow(const Model& model, const ModelIndex& index, BedBounce& bounce, double horizon);
 
 // The bounce `last` followed over the step that ended at x, going on from there: where the ball is exactly where it
-// led (nothing snapped it at the step's end) and more than kOnsetResolution before its end, the same track, sparing
-// follow(); else false.
+// led (nothing snapped it at the step's end), more than kOnsetResolution before its end and, above the surface, not
+// yet down on it, the same track, sparing follow(); else false.
 bool goes_on(const BedBounce& last, const double* x, BedBounce& bounce);
 
 }  // namespace shotlab

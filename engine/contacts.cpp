@@ -208,7 +208,11 @@ double collider_contact_time(const Model& model, const ModelIndex& index, const 
   // Colliders farther than the ball can travel within the horizon cannot limit the step.
   const double travel = s * horizon + a * horizon * horizon + margin;
   near_colliders(model, index, p, model.balls[i].radius, travel, [&](int c, const Penetration& pen) {
-    if (c == bounce_bed) return;
+    if (c == bounce_bed) {  // followed by the bounce; left out while apart (also just lifted off), its onset recorded
+      if (step && (pen.depth <= -kTouch || (pen.depth <= 0 && glm::dot(v, pen.normal) > 0)))
+        step->separated.emplace_back(i, -1 - c);
+      return;
+    }
     if (pen.depth <= 0) {
       const double t = collider_closing_time(model.colliders[c].shape, p, model.balls[i].radius, v, pen, margin - pen.depth,
                                              bound, horizon);

@@ -76,6 +76,33 @@ TEST(Bounce, FollowsTheIntegratedFullModel) {
   }
 }
 
+// The jump preset's hops down to rest on the cloth: every contact with the bed begins and ends, and the ball takes
+// off and lands (rises past kSupportGap and comes back), when the full model integrated at 1e-11 throughout has it do
+// so (the onset of a contact at zero depth, its end 1 nm deep, as for integrated steps), to well under the
+// tolerance's worth of time.
+TEST(Bounce, AJumpShotsHopsHappenWhenTheFullModelsDo) {
+  auto events = [](bool bounce, double tol) {
+    Scene s = load_scene(preset("jump.json"));
+    s.model.options.bounce_regime = s.model.options.flight_regime = bounce;  // the reference integrates every hop
+    s.model.integrator.abs_tol = s.model.integrator.rel_tol = tol;
+    auto sim = simulate(s);
+    advance_to(*sim, 0.5);
+    std::vector<Event> out;
+    for (const Event& e : sim->events())
+      if (e.kind == "contact_begin" || e.kind == "contact_end" || e.kind == "airborne" || e.kind == "landed")
+        out.push_back(e);
+    return out;
+  };
+  const std::vector<Event> bounced = events(true, 1e-7), reference = events(false, 1e-11);
+  ASSERT_GE(reference.size(), 15u) << "the hops of the jump";
+  ASSERT_EQ(bounced.size(), reference.size());
+  for (size_t k = 0; k < reference.size(); ++k) {
+    EXPECT_EQ(bounced[k].kind, reference[k].kind) << k;
+    EXPECT_EQ(bounced[k].bodies, reference[k].bodies) << k;
+    EXPECT_NEAR(bounced[k].time, reference[k].time, 5e-8) << k << ": " << reference[k].kind;
+  }
+}
+
 // Only a ball alone on the level bed, its slip and spin saturated or zero, in the full model, bounces.
 TEST(Bounce, OnlyWhereItsFormHolds) {
   auto bounces = [](const nlohmann::json& doc, double horizon = 1e-3) {
