@@ -6,7 +6,9 @@
 #pragma GCC diagnostic pop
 #include <algorithm>
 #include <array>
+#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
+#include <cstdint>
 
 #include "contact_force.hpp"
 #include "contacts.hpp"
@@ -70,42 +72,34 @@ void hermite(const BounceTrack::Knot& a, const BounceTrack::Knot& b, double t, d
 // rad/s: the fastest rate of the contact at depth d: the Hertz stiffness's frequency there, the linearised bed's at
 // the static sink, the linear damper's rate.
 double contact_rate(const ContactMaterial& mat, double inv_mass, double d, double rest_rate) {
-  const double slope = d <= 0 ? 0.0 : mat.exponent == 1.5 ? std::sqrt(d) : std::pow(d, mat.exponent - 1.0);
   const double damper = mat.damping_law == DampingLaw::Linear ? mat.damping * inv_mass : 0.0;
-  return std::max({std::sqrt(mat.exponent * mat.stiffness * slope * inv_mass), rest_rate, damper});
+  return std::max({std::sqrt(d > 0 ? hertz_stiffness(mat, d) * inv_mass : 0.0), rest_rate, damper});
 }
 
-// Whether a friction term of `per_newton` strength (N per N of normal force) acting on q (m/s) at mobility M stays
-// saturated at normal force fn: |q| beyond its band's edge with a quarter to spare. A q of exactly zero holds (its
-// term is zero and nothing else moves it).
-bool saturated(const Smoothing& s, double q, double per_newton, double mobility, double fn) {
-  if (q == 0 || per_newton == 0) return true;
-  return std::abs(q) >= 1.25 / sharpness_for(s, per_newton * std::max(fn, 1e-300), mobility);
+// Whether a friction term of `per_newton` strength (N per N of normal force), acting at mobility M on a quantity that
+// started at `start` and is now `along` its starting direction (m/s), stays saturated at normal force fn: beyond its
+// band's edge on the same side, with a quarter to spare. A term that starts at exactly zero holds (nothing moves it).
+bool saturated(const Smoothing& s, double start, double along, double per_newton, double mobility, double fn) {
+  if (start == 0 || per_newton == 0) return true;
+  return along >= 1.25 / sharpness_for(s, per_newton * std::max(fn, 1e-300), mobility);
 }
 
-// The ball alone within contact_margin of one flat, level bed, and pressed against no other part of it (over a
-// pocket the rim holds the ball): that bed (its penetration in `depth`, m), or -1.
-int lone_bed(const Model& model, const ModelIndex& index, const State& state, const double* x, int i, double& depth) {
-  const double margin = model.options.contact_margin, r = model.balls[i].radius;
-  const Vec3 p = position(x, i);
-  for (int j = 0; j < state.ball_count(); ++j)
-    if (j != i && state.in_play[j] && glm::length(p - position(x, j)) - r - model.balls[j].radius < margin) return -1;
-  int bed = -1;
-  bool other = false;
-  near_colliders(model, index, p, r, margin, [&](int c, const Penetration& pen) {
-    if (other || pen.depth <= -margin) return;
-    const Vec3& n = index.plane_normal[c];
-    Vec3 point;
-    other = bed >= 0 || !flat_bed(model.colliders[c], n, model.options.gravity, point) ||
-            glm::dot(pen.normal, n) < 1.0 - 1e-12;
-    bed = c;
-    depth = pen.depth;
-  });
-  return other ? -1 : bed;
+// The root of g in [t0, t1] where g(t0) and g(t1) differ in sign, to 1e-15 s, as the end of the bracket on the far
+// side of it (TOMS 748, as the event detector locates its roots); t1 where they do not.
+template <class G>
+double root_after(double t0, double t1, G&& g) {
+  namespace policies = boost::math::policies;
+  using NoThrow = policies::policy<policies::evaluation_error<policies::ignore_error>>;
+  std::uintmax_t iterations = 4 * kMaxRootIterations;
+  const double g0 = g(t0), g1 = g(t1);
+  if (g0 == 0 || g1 == 0 || (g0 > 0) == (g1 > 0)) return t1;
+  const auto closed = [](double a, double b) { return b - a <= 1e-2 * kOnsetResolution; };
+  return boost::math::tools::toms748_solve(g, t0, t1, g0, g1, closed, iterations, NoThrow()).second;
 }
 
 // follow()'s work: the scalar ODE stepped by Dormand-Prince 5 at a hundredth of the tolerance, its knots no further
-// apart than the quintic interpolant holds to a tenth of it, and the checks that end the bounce.
+// apart than the quintic interpolant holds the depth's rate to a tenth of it, a knot where the clamp lets go, and the
+// checks that end the bounce.
 class Follower {
  public:
   Follower(const Model& model, const ModelIndex& index, BedBounce& b)
@@ -115,6 +109,8 @@ class Follower {
     const BallSpec& ball = model.balls[b.ball];
     const double r = ball.radius;
     u0_ = b.v0 + r * glm::cross(b.normal, b.w0), du_ = b.dv + r * glm::cross(b.normal, b.dw);
+    u0_ -= glm::dot(u0_, b.normal) * b.normal;
+    slip0_ = glm::length(u0_);
     q0_ = r * glm::dot(b.w0, b.normal), dq_ = r * glm::dot(b.dw, b.normal);
     sink_ = static_sink(ball, mat_, index.gravity);
     rest_rate_ = std::sqrt(mat_.exponent * index.gravity / sink_);
@@ -122,54 +118,36 @@ class Follower {
   bool run(double horizon);
 
  private:
+  using Dopri5 = odeint::runge_kutta_dopri5<Push>;
   bool fly(double horizon);
-  // The slip and the spin saturated at this impulse and load.
+  bool step_to_release(double t0, double t1, Push& y, Push& f, double& t, Dopri5& stepper);
+  // The slip and the spin saturated at this impulse and load, each on the side it started on: a slip that falls
+  // through zero between two knots fails at the second.
   bool holds(const double y[4], double fn) const {
     const int i = b_.ball;
-    Vec3 u = u0_ + y[2] * du_;
-    u -= glm::dot(u, b_.normal) * b_.normal;
-    const double slip = glm::length(u);
-    return saturated(smooth_, slip, mat_.friction_at(slip), index_.inv_mass[i] + index_.inv_inertia_r2[i], fn) &&
-           saturated(smooth_, q0_ + y[2] * dq_, mat_.spin_friction, index_.inv_inertia_r2[i], fn);
+    const double along = slip0_ > 0 ? glm::dot(u0_ + y[2] * du_, u0_) / slip0_ : 0.0;
+    const double spin = std::copysign(1.0, q0_) * (q0_ + y[2] * dq_);
+    return saturated(smooth_, slip0_, along, mat_.friction_at(slip0_), index_.inv_mass[i] + index_.inv_inertia_r2[i],
+                     fn) &&
+           saturated(smooth_, q0_, spin, mat_.spin_friction, index_.inv_inertia_r2[i], fn);
   }
   // Settled enough for the sliding regime: twice the hop must settle, so that the regimes' own test at this end
   // passes with room for round-off.
   bool settled(double t, const double y[4]) const {
     if (!push_.touching || !model_.options.sliding_regime) return false;
-    const double offset = sink_ - y[0], hop2 = y[1] * y[1] + rest_rate_ * rest_rate_ * offset * offset;
-    if (4.0 * hop2 >= model_.options.rest_speed * model_.options.rest_speed) return false;  // cheap first
+    if (2.0 * bed_hop(mat_, index_.gravity, sink_, y[1], sink_ - y[0]) >= model_.options.rest_speed) return false;
     double at[kBallDofs];
     b_.apply(t, at);
     return settles_on_bed(model_, index_, at, b_.ball, b_.bed, b_.normal, -2.0 * y[1], 2.0 * (sink_ - y[0]), sink_);
   }
-  // The depth's crossing of `target` between the last two knots, from t0 (where it was on the far side): the first
-  // time on the interpolant past it.
-  double crossing(double t0, double t1, double target) const {
-    double lo = t0, hi = t1, at[4];
-    b_.track->at(lo, at);
-    double f_lo = at[0] - target;
-    b_.track->at(hi, at);
-    double f_hi = at[0] - target;
-    // Regula falsi with the Illinois rule (the stale end's value halved), bisection once it stalls.
-    int side = 0;
-    for (int it = 0; it < 2 * kMaxRootIterations && hi - lo > 1e-2 * kOnsetResolution; ++it) {
-      double mid = it < kMaxRootIterations ? (lo * f_hi - hi * f_lo) / (f_hi - f_lo) : 0.5 * (lo + hi);
-      if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
-      b_.track->at(mid, at);
-      const double f_mid = at[0] - target;
-      if ((f_mid > 0) == (f_lo > 0)) {
-        lo = mid, f_lo = f_mid;
-        if (side == -1) f_hi *= 0.5;
-        side = -1;
-      } else {
-        hi = mid, f_hi = f_mid;
-        if (side == 1) f_lo *= 0.5;
-        side = 1;
-      }
-    }
-    return hi;
+  // The track's depth at t, less `target` (m).
+  double depth_past(double t, double target) const {
+    double at[4];
+    b_.track->at(t, at);
+    return at[0] - target;
   }
-  // s: the longest knot spacing at y for which the interpolant's error stays under a tenth of abs_tol.
+  // s: the longest knot spacing at y for which the interpolant holds the depth's rate to a tenth of abs_tol: its error
+  // is about (h w)^6 V / 46080 (6! 64) for a motion of rate w and speed amplitude V.
   double longest(const Push& y) const {
     const double v = std::max(push_.swing(y), 1e-300), tol = 0.1 * model_.integrator.abs_tol;
     const double share = std::min(0.6, std::pow(46080.0 * tol / v, 1.0 / 6.0));
@@ -182,9 +160,8 @@ class Follower {
   const ContactMaterial& mat_;
   Smoothing smooth_;
   BedPush push_;
-  Vec3 u0_, du_;
-  double q0_, dq_, sink_, rest_rate_;
-  BounceTrack* track_ = nullptr;
+  Vec3 u0_, du_;  // m/s: the slip along the bed at the start; its change per N s of normal impulse
+  double slip0_, q0_, dq_, sink_, rest_rate_;
 };
 
 // Above the surface the depth is a parabola, d = d0 + d0' t + g_in t^2 / 2, which the interpolant holds exactly: the
@@ -220,6 +197,30 @@ bool Follower::fly(double horizon) {
   return t > 0;
 }
 
+// Where the clamp takes over inside the step from t0 to t1 (the law's force through zero while the ball is still
+// pressed in) the step is done again to end there, at two knots: the force's rate is the law's before, zero after.
+// False (the step stands) where no such root is found inside it.
+bool Follower::step_to_release(double t0, double t1, Push& y, Push& f, double& t, Dopri5& stepper) {
+  auto& knots = std::const_pointer_cast<BounceTrack>(b_.track)->knots;
+  const double at = root_after(t0, t1, [&](double s) {
+    double z[4];
+    b_.track->at(s, z);
+    return normal_force(mat_, z[0], z[1]);
+  });
+  if (!(at > t0 && at < t1)) return false;
+  knots.pop_back();
+  Push y1, f1;
+  stepper.do_step(push_, y, f, t0, y1, f1, at - t0);
+  f1[1] = push_.g_in, f1[2] = 0.0;  // no force there
+  BounceTrack::Knot before = push_.knot(at, y1, f1);
+  before.g[2] = normal_force_rate(mat_, y1[0], y1[1], f1[1]);
+  before.g[1] = -before.g[2] * push_.inv_mass;
+  knots.push_back(before);
+  knots.push_back(push_.knot(at, y1, f1));
+  y = y1, f = f1, t = at;
+  return true;
+}
+
 bool Follower::run(double horizon) {
   if (!push_.touching) return fly(horizon);
   auto track = std::make_shared<BounceTrack>();
@@ -229,8 +230,7 @@ bool Follower::run(double horizon) {
   track->knots.push_back(push_.knot(0.0, y, f));
   double fmax = push_.force(y);
   if (!holds(y.data(), fmax)) return false;
-  auto stepper = odeint::make_controlled<odeint::runge_kutta_dopri5<Push>>(1e-2 * model_.integrator.abs_tol,
-                                                                            1e-2 * model_.integrator.rel_tol);
+  auto stepper = odeint::make_controlled<Dopri5>(1e-2 * model_.integrator.abs_tol, 1e-2 * model_.integrator.rel_tol);
   double t = 0, dt = std::min(horizon, longest(y));
   b_.end = -1;
   for (int steps = 0; t < horizon && b_.end < 0; ++steps) {
@@ -240,17 +240,19 @@ bool Follower::run(double horizon) {
     double t1 = t;
     if (stepper.try_step(push_, y1, f1, t1, dt) != odeint::success) continue;
     track->knots.push_back(push_.knot(t1, y1, f1));
-    const double fn = push_.force(y1);
-    if (y1[0] <= 0) {  // the contact's end: where the depth crosses zero
-      b_.end = crossing(t, t1, 0.0);
-    } else if (!holds(y1.data(), fn)) {  // ends at the last knot where it held
+    if (f[2] > 0 && y1[0] > 0 && push_.force(y1) == 0 && step_to_release(t, t1, y, f, t, stepper.stepper())) continue;
+    // The contact's end (the depth back through zero), else the step's; the slip and spin checked up to there.
+    const double end = y1[0] <= 0 ? root_after(t, t1, [&](double s) { return depth_past(s, 0.0); }) : t1;
+    double at[4];
+    track->at(end, at);
+    if (!holds(at, push_.force({at[0], at[1], at[2], at[3]}))) {  // ends at the last knot where they held
       track->knots.pop_back();
       b_.end = t;
       break;
-    } else if (settled(t1, y1.data())) {
-      b_.end = t1;
     }
-    fmax = std::max(fmax, fn);
+    fmax = std::max(fmax, push_.force(y1));
+    if (end < t1 || y1[0] <= 0) b_.end = end;
+    else if (settled(t1, y1.data())) b_.end = t1;
     t = t1, y = y1, f = f1;
   }
   if (b_.end < 0) b_.end = t;  // the horizon
@@ -288,12 +290,21 @@ std::optional<BedBounce> bed_bounce_of(const Model& model, const State& state, c
   if (!model.options.bounce_regime || !is_adaptive(model.integrator.method) || !state.active(i) || state.rolling(i) ||
       state.sliding(i) || index.rods_on[i] > 0)
     return std::nullopt;
+  const BallSpec& ball = model.balls[i];
+  const Vec3 p = position(x, i);
+  for (int j = 0; j < state.ball_count(); ++j)
+    if (j != i && state.in_play[j] &&
+        glm::length(p - position(x, j)) - ball.radius - model.balls[j].radius < model.options.contact_margin)
+      return std::nullopt;
   BedBounce b;
   b.ball = i;
-  b.bed = lone_bed(model, index, state, x, i, b.depth0);
+  Vec3 point;
+  b.bed = only_bed_near(model, index, p, ball.radius, point, b.depth0);
   if (b.bed < 0) return std::nullopt;
-  const BallSpec& ball = model.balls[i];
   const ContactMaterial& mat = index.collider_material(b.bed);
+  // The closed forms of the bed assume a constant friction coefficient; without friction, rolling resistance would
+  // act on a ball that moves along the bed at a weight that depends on the slip.
+  if (mat.friction_law != FrictionLaw::Constant || (mat.friction <= 0 && mat.rolling_resistance > 0)) return std::nullopt;
   const Vec3& n = b.normal = index.plane_normal[b.bed];
   b.p0 = position(x, i), b.v0 = velocity(x, i), b.w0 = spin(x, i);
   const Vec3 g = model.options.gravity;

@@ -30,13 +30,15 @@ bool band_edges_only(const FrictionState& a, const FrictionState& b) {
   return (changed >> 3 & ~changed & kInBand) == 0 && !turned_around(a, b);
 }
 
+double hertz_stiffness(const ContactMaterial& mat, double depth) {
+  return mat.exponent * mat.stiffness * (mat.exponent == 1.5 ? std::sqrt(depth) : std::pow(depth, mat.exponent - 1.0));
+}
+
 double normal_force_rate(const ContactMaterial& mat, double depth, double rate, double accel) {
-  const double per_depth = mat.exponent == 1.5 ? std::sqrt(depth) : std::pow(depth, mat.exponent - 1.0);  // d^(e-1)
-  const double power = per_depth * depth;
-  const double stiffening = mat.exponent * mat.stiffness * per_depth * rate;
+  const double stiffening = hertz_stiffness(mat, depth) * rate;
   return mat.damping_law == DampingLaw::Linear
              ? stiffening + mat.damping * accel
-             : stiffening * (1.0 + mat.damping * rate) + mat.stiffness * power * mat.damping * accel;
+             : stiffening * (1.0 + mat.damping * rate) + normal_force(mat, depth, 0.0) * mat.damping * accel;
 }
 
 double elastic_energy(const ContactMaterial& mat, double depth) {

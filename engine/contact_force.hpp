@@ -88,6 +88,8 @@ double normal_force(const ContactMaterial& mat, double depth, double rate);
 // d/dt of normal_force along a path whose depth changes at `rate` (m/s) and whose rate changes at `accel` (m/s^2), in
 // N/s: the bed's force over a bounce, interpolated to fifth order (bounce.cpp).
 double normal_force_rate(const ContactMaterial& mat, double depth, double rate, double accel);
+// N/m: the Hertz term's stiffness at the given depth (m, >= 0), d(C d^e)/dd = e C d^(e-1).
+double hertz_stiffness(const ContactMaterial& mat, double depth);
 
 // The elastic energy (J) stored in a contact at the given depth (m, > 0): the integral of the Hertz term,
 // C d^(e+1) / (e+1).

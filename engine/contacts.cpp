@@ -260,11 +260,12 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
   };
   const double margin = model.options.contact_margin;
   double best = std::numeric_limits<double>::infinity();
-  double vmax = 0;
+  double vmax = 0, abounce = 0;  // m/s, m/s^2: the fastest ball, the largest bound of a bouncing one
   const int n = state.ball_count();
   for (int i = 0; i < n; ++i) {
     if (!state.active(i)) continue;  // a sleeping ball does not move towards anything
     vmax = std::max(vmax, glm::length(velocity(x, i)));
+    if (const BedBounce* b = bounce(i)) abounce = std::max(abounce, b->accel);
     const double a = accel(i);
     const BedBounce* b = bounce(i);
     const AccelBound bound{a, b ? b->across : flies(i) ? index.gravity_across : a};
@@ -282,9 +283,10 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
   }
   // Straight relative motion, its target widened by how far accelerations can bend the paths within the horizon
   // (pair_contact_time).
-  const double reach = 2.0 * vmax * h + a_free * h * h;
+  const double reach = 2.0 * vmax * h + std::max(a_free, 2.0 * abounce) * h * h;
   sweep_pairs(model, index, state, x, broad, reach, false, [&](int i, int j) {
-    const double ai = accel(i), aj = accel(j), a = ai == a_free || aj == a_free ? a_free : ai + aj;
+    const double ai = accel(i), aj = accel(j);
+    const double a = (ai == a_free || aj == a_free) && !bounce(i) && !bounce(j) ? a_free : ai + aj;
     const Vec3 d0 = position(x, i) - position(x, j), v = velocity(x, i) - velocity(x, j);
     const double ri = model.balls[i].radius, rj = model.balls[j].radius, dist = glm::length(d0);
     const double closing = -glm::dot(v, d0) / dist;  // m/s

@@ -30,6 +30,24 @@ bool flat_bed(const Collider& c, const Vec3& normal, const Vec3& gravity, Vec3& 
   return g > 0 && glm::dot(normal, -gravity / g) > 1.0 - 1e-12;
 }
 
+int only_bed_near(const Model& model, const ModelIndex& index, const Vec3& p, double r, Vec3& point, double& depth) {
+  const double margin = model.options.contact_margin;
+  int support = -1;
+  bool other = false;  // something other than one flat bed is within the margin
+  near_colliders(model, index, p, r, margin, [&](int c, const Penetration& pen) {
+    if (other || pen.depth <= -margin) return;
+    const Vec3& normal = index.plane_normal[c];
+    if (support >= 0 || !flat_bed(model.colliders[c], normal, model.options.gravity, point) ||
+        glm::dot(pen.normal, normal) < 1.0 - 1e-12) {  // over a pocket the rim, not the bed, holds the ball
+      other = true;
+      return;
+    }
+    support = c;
+    depth = pen.depth;
+  });
+  return other ? -1 : support;
+}
+
 namespace {
 
 // s: how long a quantity q (a slip, speed or contact-patch speed, m/s) that a friction term of the given strength (N)
@@ -221,21 +239,13 @@ int Regimes::only_on_bed(const StateVector& x, int i, Vec3& normal, double& heig
   for (int j : touching_[i])
     if (glm::length(p - position(x, j)) - r - model_.balls[j].radius < margin) return -1;
   if (index_.rods_on[i] > 0) return -1;
-  int support = -1;
-  bool other = false;  // something other than one flat bed is within the margin
-  near_colliders(model_, index_, p, r, margin, [&](int c, const Penetration& pen) {
-    if (other || pen.depth <= -margin) return;
-    Vec3 point;
-    normal = index_.plane_normal[c];
-    if (support >= 0 || !flat_bed(model_.colliders[c], normal, model_.options.gravity, point) ||
-        glm::dot(pen.normal, normal) < 1.0 - 1e-12) {  // over a pocket the rim, not the bed, holds the ball
-      other = true;
-      return;
-    }
-    support = c;
-    height = glm::dot(point, normal) + r - sink(i, c);
-  });
-  return support < 0 || other ? -1 : support;
+  Vec3 point;
+  double depth;
+  const int support = only_bed_near(model_, index_, p, r, point, depth);
+  if (support < 0) return -1;
+  normal = index_.plane_normal[support];
+  height = glm::dot(point, normal) + r - sink(i, support);
+  return support;
 }
 
 // The snap (update_sliding) adds the rest of the hop's friction at once, as if the friction per newton f stayed what it

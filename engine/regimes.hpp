@@ -77,6 +77,10 @@ double static_sink(const BallSpec& b, const ContactMaterial& m, double g);
 // The flat, horizontal bed a ball can roll on in closed form: a plane (bounded or not) whose unit normal (from the
 // contact index, 0 for other shapes) is along -gravity; `point` is a point of it.
 bool flat_bed(const Collider& c, const Vec3& normal, const Vec3& gravity, Vec3& point);
+// The one collider within contact_margin of a ball (centre p, radius r) when that is a flat bed that holds it (not its
+// rim over a pocket's hole): its index, with a point of it and the ball's penetration into it (m); -1 when there is
+// none or something else is that close. Other balls and rods are the caller's to rule out.
+int only_bed_near(const Model& model, const ModelIndex& index, const Vec3& p, double r, Vec3& point, double& depth);
 // m/s: a ball's vertical motion on a bed of material m (normal speed vn, height offset from its static sink `sink`)
 // as the speed of its amplitude in the linearised bed contact (stiffness e m g / sink, so omega^2 = e g / sink).
 double bed_hop(const ContactMaterial& m, double g, double sink, double vn, double offset);
