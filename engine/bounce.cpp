@@ -146,11 +146,15 @@ class Follower {
     b_.track->at(t, at);
     return at[0] - target;
   }
-  // s: the longest knot spacing at y for which the interpolant holds the depth's rate to a tenth of abs_tol: its error
-  // is about (h w)^6 V / 46080 (6! 64) for a motion of rate w and speed amplitude V.
-  double longest(const Push& y) const {
-    const double v = std::max(push_.swing(y), 1e-300), tol = 0.1 * model_.integrator.abs_tol;
-    const double share = std::min(0.6, std::pow(46080.0 * tol / v, 1.0 / 6.0));
+  // The share of a period (h w, for a motion of rate w) by which knots may lie apart where the interpolant is to hold
+  // the depth's rate to a tenth of abs_tol: its error is about (h w)^6 V / 46080 (6! 64) for a speed amplitude V, at
+  // most the start's swing (damping only takes energy out; gravity's work over the depth, a few um, is the 10 %).
+  double share(const Push& y0) const {
+    const double v = std::max(1.1 * push_.swing(y0), 1e-300), tol = 0.1 * model_.integrator.abs_tol;
+    return std::min(0.6, std::pow(46080.0 * tol / v, 1.0 / 6.0));
+  }
+  // s: the longest knot spacing at y for that share.
+  double longest(const Push& y, double share) const {
     return share / contact_rate(mat_, push_.inv_mass, y[0], rest_rate_);
   }
 
@@ -231,11 +235,12 @@ bool Follower::run(double horizon) {
   double fmax = push_.force(y);
   if (!holds(y.data(), fmax)) return false;
   auto stepper = odeint::make_controlled<Dopri5>(1e-2 * model_.integrator.abs_tol, 1e-2 * model_.integrator.rel_tol);
-  double t = 0, dt = std::min(horizon, longest(y));
+  const double spacing = share(y);
+  double t = 0, dt = std::min(horizon, longest(y, spacing));
   b_.end = -1;
   for (int steps = 0; t < horizon && b_.end < 0; ++steps) {
     if (steps == kMaxBounceSteps) break;
-    dt = std::min({dt, longest(y), horizon - t});
+    dt = std::min({dt, longest(y, spacing), horizon - t});
     Push y1 = y, f1 = f;
     double t1 = t;
     if (stepper.try_step(push_, y1, f1, t1, dt) != odeint::success) continue;
@@ -251,9 +256,14 @@ bool Follower::run(double horizon) {
       break;
     }
     fmax = std::max(fmax, push_.force(y1));
+    if (end < t1) {  // the step done again to end there: the next phase starts from the equation's state, not the
+      track->knots.pop_back();  // interpolant's (near the surface Hertz's force has no bounded higher derivatives)
+      stepper.stepper().do_step(push_, y, f, t, y1, f1, end - t);
+      track->knots.push_back(push_.knot(end, y1, f1));
+    }
     if (end < t1 || y1[0] <= 0) b_.end = end;
     else if (settled(t1, y1.data())) b_.end = t1;
-    t = t1, y = y1, f = f1;
+    t = end, y = y1, f = f1;
   }
   if (b_.end < 0) b_.end = t;  // the horizon
   fmax *= 1.1;                 // (a peak between knots)
