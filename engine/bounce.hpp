@@ -1,9 +1,9 @@
 // The bounce: a ball that touches nothing but a flat, level bed within contact_margin and slides on it (its slip and
 // its spin about the normal outside their friction bands, or exactly zero, for the whole stretch) moves in reduced
-// form. The bed's normal force then depends on the depth alone, so the height follows a scalar ODE, solved here to a
-// hundredth of the tolerance; every friction term is linear in that force, so the tangential motion and the spin
-// follow from its impulse. This covers a landing, the hops after it and the settling onto the cloth, where an island
-// would otherwise integrate all nine numbers of the ball through a stiff contact (docs/model.md#bounce).
+// form. The bed's normal force then depends on the depth and its rate alone, so the height follows a scalar ODE, solved
+// here to a hundredth of the tolerance; every friction term is linear in that force, so the tangential motion and the
+// spin follow from its impulse. This covers a landing, the hops after it and the settling onto the cloth, where an
+// island would otherwise integrate all nine numbers of the ball through a stiff contact (docs/model.md#bounce).
 #pragma once
 #include <memory>
 #include <optional>
@@ -67,9 +67,9 @@ std::optional<BedBounce> bed_bounce_of(const Model& model, const State& state, c
                                        int i);
 
 // Follows the bounce for at most `horizon` (s), to the first of: the contact's end (the ball leaves the bed's
-// surface), its beginning (from above), the ball rising out of contact_margin, the slip or the spin coming within a
-// quarter of its band's edge, the ball settling enough for the sliding regime (regimes.hpp). False where it does not
-// hold even at the start.
+// surface), its beginning (from above), the ball rising past kSupportGap (airborne), the slip or the spin coming
+// within a quarter of its band's edge on its side, the ball settling enough for the sliding regime (regimes.hpp).
+// False where it does not hold even at the start.
 bool follow(const Model& model, const ModelIndex& index, BedBounce& bounce, double horizon);
 
 // The bounce `last` followed over the step that ended at x, going on from there: where the ball is exactly where it
