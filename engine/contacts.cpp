@@ -176,6 +176,25 @@ bool may_release(const ContactMaterial& m, double depth, double rate) {
   return fn > 0 && fn < 0.5 * normal_force(m, depth, 0.0);
 }
 
+// s: when a flying ball within kSupportGap of a plane (a support, EventDetector's classify) and moving off it gets a
+// millionth past kSupportGap away, on its parabola; +inf when it does not. A flight step that ends there does not span
+// the ball's leaving its support and coming back, which would hide its airborne and landed events from the detector
+// (it compares a step's ends).
+double support_exit_time(const Model& model, const ModelIndex& index, const double* x, int i) {
+  const Vec3 p = position(x, i), v = velocity(x, i);
+  double best = std::numeric_limits<double>::infinity();
+  near_colliders(model, index, p, model.balls[i].radius, kSupportGap, [&](int c, const Penetration& pen) {
+    const Vec3& n = index.plane_normal[c];
+    if (pen.depth <= -kSupportGap || glm::dot(pen.normal, n) < 1.0 - 1e-12) return;  // planes, not a hole's rim
+    const double rate = glm::dot(v, n), acc = glm::dot(model.options.gravity, n);
+    if (!(rate > 0 || acc > 0)) return;
+    // -pen.depth + rate t + acc t^2 / 2 = target: the smaller positive root, written without cancellation.
+    const double c0 = -pen.depth - kSupportGap * (1.0 + 1e-6), disc = rate * rate - 2.0 * acc * c0;
+    if (disc >= 0) best = std::min(best, 2.0 * c0 / (-rate - std::sqrt(disc)));
+  });
+  return best;
+}
+
 }  // namespace
 
 bool clear_of_contacts(const Model& model, const ModelIndex& index, const State& state, const double* x, int i) {
@@ -270,6 +289,7 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
     const BedBounce* b = bounce(i);
     const AccelBound bound{a, b ? b->across : flies(i) ? index.gravity_across : a};
     best = std::min(best, collider_contact_time(model, index, state, x, i, horizon, bound, step, b ? b->bed : -1));
+    if (flies(i)) best = std::min(best, support_exit_time(model, index, x, i));
   }
   // Ball pairs whose x gap is within anything closable within the horizon (a sleeper does not move: only the awake
   // one closes in).

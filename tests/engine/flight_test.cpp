@@ -74,6 +74,20 @@ TEST(Flight, ABallLeavingPlayMovesOnItsPathUntilItLeaves) {
   }
 }
 
+// A hop that starts under the support gap (10 um, where a ball stops counting as on its support) and rises past it:
+// the flight's step ends where the ball gets that far, so that the ball takes off and lands where the parabola
+// crosses it, not unseen inside one step that starts and ends under it.
+TEST(Flight, AHopPastTheSupportGapTakesOffAndLands) {
+  const double gap0 = 2e-6, apex = 20e-6, support = 1e-5;  // m
+  const double vy = std::sqrt(2 * kG * (apex - gap0));
+  auto sim = simulate(scene(throw_scene(kR + gap0, {0.5, vy, 0}, {0, 0, -0.5 / kR})));
+  advance_to(*sim, 0.01);
+  // gap0 + vy t - g t^2 / 2 = support at the two roots.
+  const double mid = vy / kG, half = std::sqrt(2 * (apex - support) / kG);
+  EXPECT_NEAR(event_time(*sim, "airborne", "b"), mid - half, 1e-9);
+  EXPECT_NEAR(event_time(*sim, "landed", "b"), mid + half, 1e-9);
+}
+
 TEST(Flight, OnlyForABallThatTouchesNothing) {
   Prepared p = prepare(scene(throw_scene(0.3, {0, 0, 0}, {0, 0, 0})));
   const ModelIndex index(p.model);
