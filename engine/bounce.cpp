@@ -69,11 +69,11 @@ void hermite(const BounceTrack::Knot& a, const BounceTrack::Knot& b, double t, d
     out[k] = h0 * a.y[k] + h1 * a.f[k] + h2 * a.g[k] + h3 * b.g[k] + h4 * b.f[k] + h5 * b.y[k];
 }
 
-// rad/s: the fastest rate of the contact at depth d: the Hertz stiffness's frequency there, the linearised bed's at
-// the static sink, the linear damper's rate.
-double contact_rate(const ContactMaterial& mat, double inv_mass, double d, double rest_rate) {
+// rad/s: the fastest rate of the contact at depth d or deeper: the Hertz stiffness's frequency there (rising with the
+// depth), the linear damper's rate.
+double contact_rate(const ContactMaterial& mat, double inv_mass, double d) {
   const double damper = mat.damping_law == DampingLaw::Linear ? mat.damping * inv_mass : 0.0;
-  return std::max({std::sqrt(d > 0 ? hertz_stiffness(mat, d) * inv_mass : 0.0), rest_rate, damper});
+  return std::max(std::sqrt(d > 0 ? hertz_stiffness(mat, d) * inv_mass : 0.0), damper);
 }
 
 // Whether a friction term of `per_newton` strength (N per N of normal force), acting at mobility M on a quantity that
@@ -113,14 +113,14 @@ class Follower {
     slip0_ = glm::length(u0_);
     q0_ = r * glm::dot(b.w0, b.normal), dq_ = r * glm::dot(b.dw, b.normal);
     sink_ = static_sink(ball, mat_, index.gravity);
-    rest_rate_ = std::sqrt(mat_.exponent * index.gravity / sink_);
   }
   bool run(double horizon);
 
  private:
   using Dopri5 = odeint::runge_kutta_dopri5<Push>;
   bool fly(double horizon);
-  bool step_to_release(double t0, double t1, Push& y, Push& f, double& t, Dopri5& stepper);
+  bool step_to_release(std::vector<BounceTrack::Knot>& knots, double t0, double t1, Push& y, Push& f, double& t,
+                       Dopri5& stepper);
   // The slip and the spin saturated at this impulse and load, each on the side it started on: a slip that falls
   // through zero between two knots fails at the second.
   bool holds(const double y[4], double fn) const {
@@ -140,11 +140,11 @@ class Follower {
     b_.apply(t, at);
     return settles_on_bed(model_, index_, at, b_.ball, b_.bed, b_.normal, -2.0 * y[1], 2.0 * (sink_ - y[0]), sink_);
   }
-  // The track's depth at t, less `target` (m).
-  double depth_past(double t, double target) const {
+  // The track's depth (m) at t.
+  double depth_at(double t) const {
     double at[4];
     b_.track->at(t, at);
-    return at[0] - target;
+    return at[0];
   }
   // The share of a period (h w, for a motion of rate w) by which knots may lie apart where the interpolant is to hold
   // the depth's rate to a tenth of abs_tol: its error is about (h w)^6 V / 46080 (6! 64) for a speed amplitude V, at
@@ -153,9 +153,10 @@ class Follower {
     const double v = std::max(1.1 * push_.swing(y0), 1e-300), tol = 0.1 * model_.integrator.abs_tol;
     return std::min(0.6, std::pow(46080.0 * tol / v, 1.0 / 6.0));
   }
-  // s: the longest knot spacing at y for that share.
+  // s: the longest knot spacing at y for that share, at the rate of the depth or of the static sink (the linearised
+  // bed's, where the ball settles), whichever is faster.
   double longest(const Push& y, double share) const {
-    return share / contact_rate(mat_, push_.inv_mass, y[0], rest_rate_);
+    return share / contact_rate(mat_, push_.inv_mass, std::max(y[0], sink_));
   }
 
   const Model& model_;
@@ -165,7 +166,7 @@ class Follower {
   Smoothing smooth_;
   BedPush push_;
   Vec3 u0_, du_;  // m/s: the slip along the bed at the start; its change per N s of normal impulse
-  double slip0_, q0_, dq_, sink_, rest_rate_;
+  double slip0_, q0_, dq_, sink_;
 };
 
 // Above the surface the depth is a parabola, d = d0 + d0' t + g_in t^2 / 2, which the interpolant holds exactly: the
@@ -204,8 +205,8 @@ bool Follower::fly(double horizon) {
 // Where the clamp takes over inside the step from t0 to t1 (the law's force through zero while the ball is still
 // pressed in) the step is done again to end there, at two knots: the force's rate is the law's before, zero after.
 // False (the step stands) where no such root is found inside it.
-bool Follower::step_to_release(double t0, double t1, Push& y, Push& f, double& t, Dopri5& stepper) {
-  auto& knots = std::const_pointer_cast<BounceTrack>(b_.track)->knots;
+bool Follower::step_to_release(std::vector<BounceTrack::Knot>& knots, double t0, double t1, Push& y, Push& f,
+                               double& t, Dopri5& stepper) {
   const double at = root_after(t0, t1, [&](double s) {
     double z[4];
     b_.track->at(s, z);
@@ -245,9 +246,11 @@ bool Follower::run(double horizon) {
     double t1 = t;
     if (stepper.try_step(push_, y1, f1, t1, dt) != odeint::success) continue;
     track->knots.push_back(push_.knot(t1, y1, f1));
-    if (f[2] > 0 && y1[0] > 0 && push_.force(y1) == 0 && step_to_release(t, t1, y, f, t, stepper.stepper())) continue;
+    if (f[2] > 0 && y1[0] > 0 && push_.force(y1) == 0 &&
+        step_to_release(track->knots, t, t1, y, f, t, stepper.stepper()))
+      continue;
     // The contact's end (the depth back through zero), else the step's; the slip and spin checked up to there.
-    const double end = y1[0] <= 0 ? root_after(t, t1, [&](double s) { return depth_past(s, 0.0); }) : t1;
+    const double end = y1[0] <= 0 ? root_after(t, t1, [&](double s) { return depth_at(s); }) : t1;
     double at[4];
     track->at(end, at);
     if (!holds(at, push_.force({at[0], at[1], at[2], at[3]}))) {  // ends at the last knot where they held
