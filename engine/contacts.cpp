@@ -227,6 +227,7 @@ double collider_contact_time(const Model& model, const ModelIndex& index, const 
   // Colliders farther than the ball can travel within the horizon cannot limit the step.
   const double travel = s * horizon + a * horizon * horizon + margin;
   near_colliders(model, index, p, model.balls[i].radius, travel, [&](int c, const Penetration& pen) {
+    if (step) step->colliders.push_back(c);
     if (c == bounce_bed) {  // followed by the bounce; left out while apart (also just lifted off), its onset recorded
       if (step && (pen.depth <= -kTouch || (pen.depth <= 0 && glm::dot(v, pen.normal) > 0)))
         step->separated.emplace_back(i, -1 - c);
@@ -255,8 +256,10 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
                                 const std::vector<BedBounce>* bounces) {
   if (step) {  // every field reset, the lists keeping their storage
     *step = StepContacts{.separated = std::move(step->separated), .pushing = std::move(step->pushing),
-                         .near = std::move(step->near)};
-    step->separated.clear(), step->pushing.clear(), step->near.clear();
+                         .near = std::move(step->near), .colliders = std::move(step->colliders),
+                         .collider_from = std::move(step->collider_from)};
+    step->separated.clear(), step->pushing.clear(), step->near.clear(), step->colliders.clear();
+    step->collider_from.assign(state.ball_count() + 1, 0);
   }
   // Relative acceleration bound outside contacts: gravity plus cloth friction, generously twice |g|. A pair pushed
   // harder by third balls may start touching inside a step; the simulation then cuts the step at the onset.
@@ -282,6 +285,7 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
   double vmax = 0, abounce = 0;  // m/s, m/s^2: the fastest ball, the largest bound of a bouncing one
   const int n = state.ball_count();
   for (int i = 0; i < n; ++i) {
+    if (step) step->collider_from[i] = static_cast<int>(step->colliders.size());
     if (!state.active(i)) continue;  // a sleeping ball does not move towards anything
     vmax = std::max(vmax, glm::length(velocity(x, i)));
     if (const BedBounce* b = bounce(i)) abounce = std::max(abounce, b->accel);
@@ -291,6 +295,7 @@ double time_to_possible_contact(const Model& model, const ModelIndex& index, con
     best = std::min(best, collider_contact_time(model, index, state, x, i, horizon, bound, step, b ? b->bed : -1));
     if (flies(i)) best = std::min(best, support_exit_time(model, index, x, i));
   }
+  if (step) step->collider_from[n] = static_cast<int>(step->colliders.size()), step->colliders_known = true;
   // Ball pairs whose x gap is within anything closable within the horizon (a sleeper does not move: only the awake
   // one closes in).
   const double h = std::min(best, horizon);

@@ -34,6 +34,12 @@ struct StepContacts {
   // step's start (the pairs in near or separated). No other pair can touch unless its balls moved more than this
   // between them (EventDetector::collect: balls pushed harder than the cap's acceleration bound).
   double reach = 0;
+  // With colliders_known: ball i's colliders within its reach over the step (near_colliders at the cap's travel, in
+  // its order) are colliders[collider_from[i]] up to colliders[collider_from[i + 1]]. The stages of a step probe only
+  // these (for_each_contact); the evaluation that records, at a trial's end, probes them all, so that a ball pushed
+  // past its reach still shows the contact it ran into to the event detector.
+  std::vector<int> colliders, collider_from;
+  bool colliders_known = false;
   // A contact begins at the step's start: within kTouch of zero depth and closing. Its force grows as depth^e (Hertz:
   // e = 1.5) from there, which the step's error estimate understates (stepper.hpp, onset_underestimate).
   bool onset = false;
@@ -89,6 +95,10 @@ void sleepers_near(const Model& model, const ModelIndex& index, const double* x,
 template <class Fn>
 void near_colliders(const Model& model, const ModelIndex& index, const Vec3& p, double r, double within, Fn&& fn);
 
+// near_colliders' test of one collider c that it visits: fn(c, pen) where it would call it.
+template <class Fn>
+void near_collider(const Model& model, const ModelIndex& index, int c, const Vec3& p, double r, double within, Fn&& fn);
+
 // The penetration of a ball (centre p, radius r) into collider c (colliders.hpp, penetration), the way near_colliders
 // finds it: over a level floor by one subtraction instead of the shape's test of its extent and its holes.
 inline std::optional<Penetration> collider_penetration(const Model& model, const ModelIndex& index, int c, const Vec3& p,
@@ -141,10 +151,12 @@ inline ContactKinematics pair_kinematics(const Model& model, const ModelIndex& i
 // vector (9 numbers a ball), which may differ from state.x (the integrator's trial states). Contacts that no
 // ball's dynamics uses (between sleeping balls; the bed under a ball in the rolling or sliding regime, whose support is
 // in closed form) are left out unless `with_inactive` (diagnostics want them). `plan`: the step's frozen contact laws
-// (StepContacts; none: every contact with its plain law, found by a sweep).
+// (StepContacts; none: every contact with its plain law, found by a sweep). `inner_stage`: an evaluation inside a
+// step, which probes only the plan's colliders of each ball (StepContacts::colliders).
 template <class Fn>
 void for_each_contact(const Model& model, const ModelIndex& index, const State& state, const double* x,
-                      BroadPhase& broad, const StepContacts* plan, Fn&& fn, bool with_inactive = false);
+                      BroadPhase& broad, const StepContacts* plan, Fn&& fn, bool with_inactive = false,
+                      bool inner_stage = false);
 
 // A lower bound on the time before any still-separated pair (ball-ball or ball-collider) could touch, given current
 // velocities and an acceleration bound; +inf when nothing can within `horizon` (the step the integrator wants).
@@ -179,7 +191,8 @@ struct AccelBound {
 // s: a lower bound on the time before ball i, its acceleration bounded by `a` outside contacts, could come
 // contact_margin into a collider other than the bed it rolls, slides or bounces on (`bounce_bed`; as far as a step
 // may take it), or that far over a hole's edge in that bed; +inf when nothing can within `horizon`. With `step`,
-// lists the ball's contacts in step->separated and step->pushing as time_to_possible_contact does (unsorted).
+// lists the ball's contacts in step->separated and step->pushing as time_to_possible_contact does (unsorted), and
+// every collider it looked at in step->colliders.
 double collider_contact_time(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
                              double horizon, AccelBound a, StepContacts* step = nullptr, int bounce_bed = -1);
 

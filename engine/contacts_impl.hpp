@@ -98,28 +98,33 @@ void sweep_pairs(const Model& model, const ModelIndex& index, const State& state
 }
 
 template <class Fn>
-void near_colliders(const Model& model, const ModelIndex& index, const Vec3& p, double r, double within, Fn&& fn) {
-  auto probe = [&](size_t c) {
-    if (!index.collider_bounds[c].may_touch(p, r + within)) return;
-    if (const auto pen = penetration(model.colliders[c].shape, p, r, within)) fn(static_cast<int>(c), *pen);
-  };
+void near_collider(const Model& model, const ModelIndex& index, int c, const Vec3& p, double r, double within, Fn&& fn) {
   const double reach = r + within;
-  for (size_t k = 0; k < index.plane_like.size(); ++k) {
-    const int c = index.plane_like[k];
-    const auto on_floor = floor_penetration(index, k, p, r);
-    if (!on_floor) probe(c);
-    else if (*on_floor && index.collider_bounds[c].may_touch(p, reach)) fn(c, **on_floor);
+  if (index.floor_of[c] >= 0) {  // plane-like: over its level floor by one subtraction
+    const auto on_floor = floor_penetration(index, static_cast<size_t>(index.floor_of[c]), p, r);
+    if (on_floor) {
+      if (*on_floor && index.collider_bounds[c].may_touch(p, reach)) fn(c, **on_floor);
+      return;
+    }
   }
+  if (!index.collider_bounds[c].may_touch(p, reach)) return;
+  if (const auto pen = penetration(model.colliders[c].shape, p, r, within)) fn(c, *pen);
+}
+
+template <class Fn>
+void near_colliders(const Model& model, const ModelIndex& index, const Vec3& p, double r, double within, Fn&& fn) {
+  for (const int c : index.plane_like) near_collider(model, index, c, p, r, within, fn);
   // Inside the clear column nothing else can be in reach. Elsewhere probe the colliders the grid finds in reach, or
   // every one where it declines.
+  const double reach = r + within;
   if (index.clear.holds(p, reach)) return;
-  if (!index.grid.visit(p, reach, [&](int k) { probe(index.others[k]); }))
-    for (int c : index.others) probe(c);
+  if (!index.grid.visit(p, reach, [&](int k) { near_collider(model, index, index.others[k], p, r, within, fn); }))
+    for (int c : index.others) near_collider(model, index, c, p, r, within, fn);
 }
 
 template <class Fn>
 void for_each_contact(const Model& model, const ModelIndex& index, const State& state, const double* x,
-                      BroadPhase& broad, const StepContacts* plan, Fn&& fn, bool with_inactive) {
+                      BroadPhase& broad, const StepContacts* plan, Fn&& fn, bool with_inactive, bool inner_stage) {
   const StepContacts& step = plan ? *plan : kNoPlan;
   const Smoothing k{model.options.friction_sharpness, model.options.friction_rate_limit};
   const int n = state.ball_count();
@@ -127,16 +132,23 @@ void for_each_contact(const Model& model, const ModelIndex& index, const State& 
     return !keys.empty() && std::binary_search(keys.begin(), keys.end(), ContactKey{a, b});
   };
   // Ball against static colliders: B has zero velocity.
+  const bool colliders_known = step.colliders_known && !with_inactive && inner_stage;
   for (int i = 0; i < n; ++i) {
     if (!state.in_play[i] || ((state.sleeping(i) || state.rolling(i) || state.sliding(i)) && !with_inactive)) continue;
     const double r = model.balls[i].radius;
     const Vec3 p = position(x, i), v = velocity(x, i), w = spin(x, i);
-    near_colliders(model, index, p, r, 0.0, [&](int c, const Penetration& pen) {
+    auto touching = [&](int c, const Penetration& pen) {
       if (pen.depth <= 0 || listed(step.separated, i, -1 - c)) return;
       const ContactForce f = collider_force(index.collider_material(c), index, i, r, v, w, pen, k,
                                             !listed(step.pushing, i, -1 - c));
       fn(Contact{i, -1, c, pen.depth, pen.normal, p - r * pen.normal, f});
-    });
+    };
+    if (!colliders_known) {
+      near_colliders(model, index, p, r, 0.0, touching);
+      continue;
+    }
+    for (int l = step.collider_from[i]; l < step.collider_from[i + 1]; ++l)
+      near_collider(model, index, step.colliders[l], p, r, 0.0, touching);
   }
   // Ball against ball: n points from j to i; A's contact point is at -R_i n, B's at +R_j n.
   const bool near_known = step.near_known && !with_inactive;

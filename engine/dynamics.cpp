@@ -9,6 +9,7 @@ Dynamics::Dynamics(const Model& model, const ModelIndex& index, const State& sta
 
 template <bool Record>
 void Dynamics::add_contacts(const StateVector& x) {
+  // Only an evaluation that records sees a contact the step's plan did not foresee (StepContacts::colliders).
   for_each_contact(model_, index_, state_, x.data(), broad_, &plan_, [&](const Contact& c) {
     const ContactForce& f = c.force;
     if constexpr (Record) {
@@ -35,7 +36,7 @@ void Dynamics::add_contacts(const StateVector& x) {
       force_[c.other_ball] -= f.force;
       torque_[c.other_ball] += (rb == r ? lever : tangential_torque(f, c.normal, rb)) - f.spin_torque * c.normal;
     }
-  });
+  }, false, !Record);
 }
 
 void Dynamics::operator()(const StateVector& x, StateVector& dxdt, double /*t*/) {

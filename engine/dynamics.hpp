@@ -36,8 +36,8 @@ class Dynamics {
   long plan_swaps() const { return plan_swaps_; }  // how often the step's contact laws were swapped (invariant checks)
   const StepContacts& plan() const { return plan_; }
   // The balls' flags changed since the step's lists were made (one woke, one left play): the right-hand side sweeps
-  // for touching pairs again until the next step's lists come.
-  void sweep_again() { plan_.near_known = false; }
+  // for touching pairs and probes every collider again until the next step's lists come.
+  void sweep_again() { plan_.near_known = plan_.colliders_known = false; }
   // What each contact's friction did in the last evaluation made while recording (on unless a stepper turned it off
   // for the inner stages of its step, stepper.hpp): the island compares it at a step's two ends to find where a
   // friction term switched its law or a contact let go (EventDetector::first_law_change). In the order evaluated.

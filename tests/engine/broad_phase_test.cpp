@@ -9,6 +9,8 @@
 #include <set>
 
 #include "engine/contacts.hpp"
+#include "engine/dynamics.hpp"
+#include "shotlab/io/scene_json.hpp"
 #include "shotlab/scene.hpp"
 #include "support.hpp"
 
@@ -193,6 +195,104 @@ TEST(BroadPhase, ColliderGridFindsEveryOneOfManyColliders) {
     broken.colliders.push_back({"nan", StaticSphere{centre, 0.1}, kBallCushion});
     EXPECT_FALSE(ModelIndex(broken).grid.built());
   }
+}
+
+// A step's plan lists each ball's colliders (StepContacts::colliders), and the stages of the step probe only those. Balls
+// near the cushions, jaws and pockets of a pool table, moving at up to 3 m/s, each moved as a step of h could move
+// it (gravity and cloth friction bound its acceleration by 2 g, free_acceleration): every collider contact found by
+// probing every collider is found from the lists, with the same force to the bit, in the same order.
+TEST(BroadPhase, AStepsCollidersHoldEveryContactItCouldMake) {
+  Prepared p = prepare(load_scene(preset("break.json")));
+  const Model& model = p.model;
+  const ModelIndex index(model);
+  State state = p.state;
+  const int n = state.ball_count();
+  state.asleep.assign(n, 0);  // every ball awake, in the full model
+  state.rolling_on.assign(n, -1);
+  state.sliding_on.assign(n, -1);
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), share(0.0, 1.0);
+  auto dir = [&] { return glm::normalize(Vec3{unit(rng), 0.3 * unit(rng), unit(rng)}); };
+  // Near the rails: within 4 cm of the cushions' noses (1.27 m by 0.635 m from the centre), at and above the bed.
+  auto near_rail = [&](double r) {
+    const double x = share(rng) < 0.5 ? std::copysign(1.23 + 0.04 * share(rng), unit(rng)) : 1.27 * unit(rng);
+    const double z = std::abs(x) < 1.23 ? std::copysign(0.595 + 0.04 * share(rng), unit(rng)) : 0.635 * unit(rng);
+    return Vec3{x, r - 2e-6 + (share(rng) < 0.5 ? 0.0 : 2e-3 * share(rng)), z};
+  };
+  int contacts = 0, new_ones = 0;
+  size_t listed = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    for (int i = 0; i < n; ++i) {
+      const double r = model.balls[i].radius;
+      set_position(state.x, i, near_rail(r));
+      set_velocity(state.x, i, 3.0 * share(rng) * dir());
+      set_spin(state.x, i, 50.0 * share(rng) * dir());
+    }
+    const double h = std::pow(10.0, -5.0 + 3.0 * share(rng));  // s: 10 us to 10 ms
+    StepContacts plan;
+    BroadPhase broad;
+    time_to_possible_contact(model, index, state, state.x.data(), h, broad, &plan);
+    ASSERT_TRUE(plan.colliders_known);
+    listed += plan.colliders.size();
+    plan.separated.clear();  // nothing left out of the step: the lists alone decide which colliders the stages see
+    // Where the step could take them.
+    StateVector moved = state.x;
+    for (int i = 0; i < n; ++i) {
+      const double t = h * share(rng);
+      const Vec3 a = 2.0 * index.gravity * share(rng) * dir();
+      set_position(moved, i, position(state.x, i) + velocity(state.x, i) * t + 0.5 * a * t * t);
+    }
+    auto collider_contacts = [&](const double* x, bool inner_stage) {
+      std::vector<std::pair<int, double>> out;  // (collider, normal force) of each ball's contacts, in order
+      BroadPhase b;
+      for_each_contact(model, index, state, x, b, &plan, [&](const Contact& c) {
+        if (c.other_ball < 0) out.emplace_back(c.ball * 1000 + c.collider, c.force.normal);
+      }, false, inner_stage);
+      return out;
+    };
+    const auto all = collider_contacts(moved.data(), false), from_lists = collider_contacts(moved.data(), true);
+    EXPECT_EQ(from_lists, all) << "trial " << trial << ", h = " << h << " s";
+    contacts += static_cast<int>(all.size());
+    const auto before = collider_contacts(state.x.data(), false);
+    for (const auto& c : all)
+      new_ones += std::none_of(before.begin(), before.end(), [&](const auto& b) { return b.first == c.first; });
+  }
+  EXPECT_GT(new_ones, 100) << "too few contacts begin within the steps to test the lists";
+  EXPECT_GT(contacts, 2000);
+  // The lists leave most of the 25 colliders out: the bed and what is near.
+  EXPECT_LT(static_cast<double>(listed) / (400.0 * n), 3.0);
+}
+
+// A ball that a step takes past its reach (pushed harder than the bound by the balls around it) meets a collider that
+// the plan did not list: the stages do not see it, the evaluation that records a trial's end does, so that the event
+// detector finds the onset and ends the step there.
+TEST(BroadPhase, TheRecordingEvaluationSeesAnUnlistedCollider) {
+  Prepared p = prepare(load_scene(preset("cut.json")));
+  const ModelIndex index(p.model);
+  State& state = p.state;
+  const double r = p.model.balls[0].radius;
+  set_position(state.x, 0, Vec3{1.27 - r - 0.01, r - 2e-6, 0.1});  // 1 cm short of the right cushion, at rest
+  set_velocity(state.x, 0, Vec3{0.0});
+  set_spin(state.x, 0, Vec3{0.0});
+  StepContacts plan;
+  BroadPhase broad;
+  time_to_possible_contact(p.model, index, state, state.x.data(), 1e-4, broad, &plan);
+  StateVector pushed = state.x;
+  set_position(pushed, 0, Vec3{1.246, r - 2e-6, 0.1});  // 3 mm into it
+  Dynamics f(p.model, index, state);
+  f.swap_plan(plan);
+  StateVector dxdt;
+  auto touches_cushion = [&] {
+    return std::any_of(f.recorded().begin(), f.recorded().end(),
+                       [](const ContactRecord& c) { return c.key.first == 0 && c.key.second < 0 && c.normal > 100.0; });
+  };
+  f.set_recording(true);
+  f(pushed, dxdt, 0.0);
+  EXPECT_TRUE(touches_cushion());
+  EXPECT_LT(dxdt[3], -100.0) << "the cushion pushes the ball back";
+  f.set_recording(false);
+  f(pushed, dxdt, 0.0);
+  EXPECT_GT(dxdt[3], -1.0) << "an inner stage probes the listed colliders only";
 }
 
 }  // namespace
