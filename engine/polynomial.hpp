@@ -1,11 +1,13 @@
-// Polynomials of degree 4 at most, in time: the rigid model's gaps (a squared distance minus a squared reach) along
-// paths of constant acceleration. Roots are isolated between the derivative's roots and bisected, so a double or a
-// grazing root is neither missed nor found twice.
+// Polynomials of degree 4 at most, in time: gaps (a squared distance minus a squared reach) along paths of constant
+// acceleration, the rigid model's and the free paths' (free_path.hpp). Roots are isolated between the derivative's
+// roots and bisected, so a double or a grazing root is neither missed nor found twice.
 #pragma once
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+
+#include "shotlab/vec.hpp"
 
 namespace shotlab {
 
@@ -74,6 +76,13 @@ inline int entries(const Quartic& c, double h, std::array<double, 4>& out) {
     else if (from <= 0 && evaluate(d, 0.5 * (edges[k] + edges[k + 1])) < 0) out[count++] = edges[k];
   }
   return count;
+}
+
+// The squared distance between two points, dp + dv s + da s^2 / 2 apart at time s, minus reach^2: a polynomial in s
+// (two balls' centres on parabolas; a gap for entries).
+inline Quartic squared_gap(const Vec3& dp, const Vec3& dv, const Vec3& da, double reach) {
+  return {glm::dot(dp, dp) - reach * reach, 2 * glm::dot(dp, dv), glm::dot(dv, dv) + glm::dot(dp, da),
+          glm::dot(dv, da), 0.25 * glm::dot(da, da)};
 }
 
 // s: the earliest of entries(c, h); +inf when there is none.

@@ -94,6 +94,24 @@ void add_hop_rest(StateVector& x, int i, double vn, double offset, double g, con
 }
 }  // namespace
 
+double steady_for(const Model& model, const ModelIndex& index, const State& state, const double* x, int i) {
+  const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : -1;
+  if (bed < 0) return 0.0;
+  const ContactMaterial& m = index.collider_material(bed);
+  const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
+  const double weight = model.balls[i].mass * index.gravity, r = model.balls[i].radius;
+  const Vec3 v = velocity(x, i), &n = index.plane_normal[bed];
+  if (state.rolling(i)) {
+    if (m.rolling_resistance <= 0) return std::numeric_limits<double>::infinity();
+    return std::max(0.0, time_to_edge(smooth, glm::length(v), m.rolling_resistance * weight, index.inv_mass[i]));
+  }
+  if (m.friction <= 0 || m.friction_law != FrictionLaw::Constant) return 0.0;
+  Vec3 u = v + r * glm::cross(n, spin(x, i));
+  u -= glm::dot(u, n) * n;
+  return std::max(0.0, time_to_edge(smooth, glm::length(u), m.friction * weight,
+                                    index.inv_mass[i] + index.inv_inertia_r2[i]));
+}
+
 Regimes::Regimes(const Model& model, const ModelIndex& index) : model_(model), index_(index) {
   const double g = glm::length(model.options.gravity);
   for (const BallSpec& b : model.balls)

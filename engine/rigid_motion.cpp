@@ -78,9 +78,7 @@ Sweep sweep(const Parabola& p, double h) {
 }
 
 Quartic gap_between(const Parabola& a, const Parabola& b, double reach) {
-  const Vec3 dp = horizontal(b.p - a.p), dv = horizontal(b.v - a.v), da = horizontal(b.a - a.a);
-  return {glm::dot(dp, dp) - reach * reach, 2 * glm::dot(dp, dv), glm::dot(dv, dv) + glm::dot(dp, da),
-          glm::dot(dv, da), 0.25 * glm::dot(da, da)};
+  return squared_gap(horizontal(b.p - a.p), horizontal(b.v - a.v), horizontal(b.a - a.a), reach);
 }
 
 }  // namespace shotlab

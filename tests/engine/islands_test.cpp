@@ -98,6 +98,59 @@ TEST(Islands, LoneBallsOnFreePathsMeetOnlyWhereThePathsMeet) {
   EXPECT_LT(std::abs(position(sim->state().x, 0).z + 0.05), 1e-9);  // a and b rolled straight: they never touched
 }
 
+// s: when balls a and b of the scene first touch within `duration`, every ball integrated in one system; -1 if never.
+double single_system_touch(nlohmann::json doc, const std::string& a, const std::string& b, double duration) {
+  doc["model"] = {{"islands", false}};
+  auto single = simulate(scene(doc));
+  EXPECT_EQ(single->advance(duration), Status::Ok) << single->diagnostic();
+  return event_time(*single, "contact_begin", a, b);
+}
+
+// A sliding ball's path is a parabola until its slip reaches its band (FreePath::steady_for): two balls sliding past
+// each other 3 mm apart at 1.5 m/s get no look at each other, though their bend bound (2 m/s^2 each) would close
+// the gap in 40 ms; a ball curving under side slip into one whose centre its straight line misses by 7 mm touches it
+// when and where the single all-ball system has it touch.
+TEST(Islands, SlidingBallsMeetWhereTheirParabolasMeet) {
+  auto sliding = [](const std::string& id, double x, double z, Vec3 v, Vec3 w) {
+    return nlohmann::json{{"id", id}, {"position", {x, kR, z}}, {"velocity", {v.x, v.y, v.z}},
+                          {"angular_velocity", {w.x, w.y, w.z}}};
+  };
+  const double d_x = -0.1907, d_z = 0.2908 - 0.055;  // where the curving ball is at 0.12 s, 55 mm off
+  nlohmann::json doc = {{"table", {{"type", "pool"}}},
+                        {"balls", {sliding("a", -0.2, -0.3, {1.5, 0, 0}, Vec3{0.0}),
+                                   sliding("b", 0.2, -0.3 + 2 * kR + 3e-3, {-1.5, 0, 0}, Vec3{0.0}),
+                                   sliding("c", -0.3, 0.3, {1.0, 0, 0}, {-30, 0, 0}), ball("d", d_x, d_z)}}};
+  auto sim = simulate(scene(doc));
+  long looks = 0;  // steps of the passing pair's islands that end where one of them is looked at again
+  sim->set_observer([&](const StepView& step) { looks += step.balls[0] <= 1; });
+  ASSERT_EQ(sim->advance(0.3), Status::Ok) << sim->diagnostic();
+  const double hit = event_time(*sim, "contact_begin", "c", "d"), reference = single_system_touch(doc, "c", "d", 0.3);
+  std::printf("[ islands  ] two balls sliding past each other: %ld steps in 0.3 s; the curving ball touched at %.9f s "
+              "(single system %.9f s)\n", looks, hit, reference);
+  EXPECT_GT(reference, 0.1);
+  EXPECT_NEAR(hit, reference, 1e-7);
+  EXPECT_EQ(event_time(*sim, "contact_begin", "a", "b"), -1.0);
+  EXPECT_LT(looks, 20);
+}
+
+// Its parabola holds only until the slip reaches its band: a stun shot that slides for 0.15 s and then rolls, its
+// deceleration falling twentyfold, reaches a resting ball at 0.23 s, 3 mm further than its sliding parabola gets by
+// then. It touches it when the single all-ball system has it touch.
+TEST(Islands, ABallThatStopsSlidingIsFollowedAsItRolls) {
+  nlohmann::json doc = {{"table", {{"type", "pool"}}},
+                        {"balls", {{{"id", "a"}, {"position", {0.0, kR, 0.0}}, {"velocity", {1.0, 0, 0}}}}}};
+  auto alone = simulate(scene(doc));
+  ASSERT_EQ(alone->advance(0.23), Status::Ok) << alone->diagnostic();
+  const double reached = position(alone->state().x, 0).x;
+  doc["balls"].push_back(ball("d", reached + 2 * kR, 0.0));
+  auto sim = simulate(scene(doc));
+  ASSERT_EQ(sim->advance(0.3), Status::Ok) << sim->diagnostic();
+  const double hit = event_time(*sim, "contact_begin", "a", "d"), reference = single_system_touch(doc, "a", "d", 0.3);
+  std::printf("[ islands  ] the stun shot reached the resting ball at %.9f s (single system %.9f s)\n", hit, reference);
+  EXPECT_NEAR(reference, 0.23, 1e-3);
+  EXPECT_NEAR(hit, reference, 1e-7);
+}
+
 // The break split into islands: no contact between islands may be missed. A missed one would let two balls pass
 // through each other; the deepest ball-ball contact seen in frames of 1/240 s stays at the Hertz depth of the
 // hardest collision (about 1 mm at 11 m/s), far from the 57 mm of a pass-through.
