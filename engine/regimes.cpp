@@ -52,9 +52,9 @@ namespace {
 
 // s: how long a quantity q (a slip, speed or contact-patch speed, m/s) that a friction term of the given strength (N)
 // relaxes at strength times mobility (1/kg: m/s^2, contact_force.hpp) takes to fall to its smoothing band's edge
-// 1/k; not positive once inside the band.
-double time_to_edge(const Smoothing& s, double q, double strength, double mobility) {
-  return (q - 1.0 / sharpness_for(s, strength, mobility)) / (strength * mobility);
+// 1/k, or to `floor` (m/s) where that is higher; not positive once there.
+double time_to_edge(const Smoothing& s, double q, double strength, double mobility, double floor = 0.0) {
+  return (q - std::max(floor, 1.0 / sharpness_for(s, strength, mobility))) / (strength * mobility);
 }
 // A sliding ball's slip u inside its band (|u| = q0 > 0, unit direction u^) as a Slip tail (band_tail.hpp), and how long
 // its step may run: to where the slip is round-off (kDeadTail), so that the rolling entry comes at the step's end with
@@ -101,15 +101,16 @@ double steady_for(const Model& model, const ModelIndex& index, const State& stat
   const Smoothing smooth{model.options.friction_sharpness, model.options.friction_rate_limit};
   const double weight = model.balls[i].mass * index.gravity, r = model.balls[i].radius;
   const Vec3 v = velocity(x, i), &n = index.plane_normal[bed];
-  if (state.rolling(i)) {
-    if (m.rolling_resistance <= 0) return std::numeric_limits<double>::infinity();
-    return std::max(0.0, time_to_edge(smooth, glm::length(v), m.rolling_resistance * weight, index.inv_mass[i]));
+  if (state.rolling(i)) {  // the speed, to the stop cut (settle_rolling) at the latest
+    const double speed = glm::length(v);
+    if (m.rolling_resistance <= 0) return speed >= kStopSpeed ? std::numeric_limits<double>::infinity() : 0.0;
+    return std::max(0.0, time_to_edge(smooth, speed, m.rolling_resistance * weight, index.inv_mass[i], kStopSpeed));
   }
   if (m.friction <= 0 || m.friction_law != FrictionLaw::Constant) return 0.0;
-  Vec3 u = v + r * glm::cross(n, spin(x, i));
+  Vec3 u = v + r * glm::cross(n, spin(x, i));  // the slip, to the rolling entry's snap (update_rolling) at the latest
   u -= glm::dot(u, n) * n;
   return std::max(0.0, time_to_edge(smooth, glm::length(u), m.friction * weight,
-                                    index.inv_mass[i] + index.inv_inertia_r2[i]));
+                                    index.inv_mass[i] + index.inv_inertia_r2[i], entry_slip(model)));
 }
 
 Regimes::Regimes(const Model& model, const ModelIndex& index) : model_(model), index_(index) {

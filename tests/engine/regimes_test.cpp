@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "engine/free_path.hpp"
 #include "engine/regimes.hpp"
 
 #include "support.hpp"
@@ -226,6 +227,32 @@ TEST(Regimes, RollingBallStepsInClosedForm) {
   EXPECT_NEAR(position(sim->state().x, 0).x, v0 * t - 0.5 * a * t * t, 1e-12);
   EXPECT_NEAR(velocity(sim->state().x, 0).x, v0 - a * t, 1e-13);
   EXPECT_LE(st.rhs_evaluations, st.steps + 2);
+}
+
+// A free path's steady part (free_path.hpp) ends before any regime snaps the velocity: where the rolling entry's slip
+// (0.01 m/s here, with a raised rest_speed and tolerance) lies above the sliding band's edge (0.1 mm/s at a sharpness
+// of 1e4 s/m), the steady part ends there, not at the edge. A stun shot checked in slices of 1 ms.
+TEST(Regimes, ASteadyPathEndsBeforeTheRollingEntrysSnap) {
+  nlohmann::json doc = {{"table", {{"type", "pool"}}},
+                        {"model", {{"friction_sharpness", 1e4}, {"rest_speed", 1.0}}},
+                        {"integrator", {{"abs_tol", 1e-3}}},
+                        {"balls", {{{"id", "a"}, {"position", {-1.0, kR, 0.0}}, {"velocity", {1.7218, 0, 0}}}}}};
+  auto sim = simulate(scene(doc));
+  ASSERT_EQ(sim->advance(0.01), Status::Ok) << sim->diagnostic();
+  ASSERT_TRUE(sim->state().sliding(0));
+  const ModelIndex index(sim->model());
+  const auto path = free_path(sim->model(), sim->state(), sim->state().x.data(), 0, index, 1.0);
+  ASSERT_TRUE(path.has_value());
+  double snapped = -1;
+  while (sim->time() < 0.4 && snapped < 0) {
+    ASSERT_EQ(sim->advance(1e-3), Status::Ok) << sim->diagnostic();
+    if (sim->state().rolling(0)) snapped = sim->time();
+  }
+  std::printf("[ regimes  ] steady until %.4f s; rolling from %.4f s at the latest\n", 0.01 + path->steady_for,
+              snapped);
+  ASSERT_GT(snapped, 0.0);
+  EXPECT_GT(path->steady_for, 0.1);
+  EXPECT_LE(0.01 + path->steady_for, snapped);
 }
 
 }  // namespace
