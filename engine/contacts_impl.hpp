@@ -156,8 +156,9 @@ void for_each_contact(const Model& model, const ModelIndex& index, const State& 
   const ContactMaterial& bb = index.ball_ball();
   for (const auto& [i, j] : near_known ? step.near : broad.pairs) {
     const int a = std::min(i, j), b = std::max(i, j);
-    // The step's near pairs and its separated ones are apart by construction (time_to_possible_contact).
-    if ((state.sleeping(i) && state.sleeping(j) && !with_inactive) || (!near_known && listed(step.separated, a, b)))
+    // The step's near pairs hold no two sleepers and none of its separated pairs, by construction (its cap sweeps with
+    // no sleeper pairs, time_to_possible_contact; a change of who sleeps makes the next step's lists or a sweep).
+    if (!near_known && ((state.sleeping(i) && state.sleeping(j) && !with_inactive) || listed(step.separated, a, b)))
       continue;
     const double ri = model.balls[i].radius, rj = model.balls[j].radius;
     if (near_known) {
