@@ -19,23 +19,18 @@ std::optional<FreePath> free_path(const Model& model, const State& state, const 
   // The velocity jumps a path may take, summed: the rolling entry removes a slip under entry_slip, 2/7 of it
   // from the velocity (update_rolling); the stop cut (settle_rolling); falling asleep zeroes a velocity under
   // rest_speed (update_sleep).
-  const double rest = model.options.rest_speed;
-  const double jump = 2.0 / 7.0 * entry_slip(model) + kStopSpeed + (model.options.sleep_time > 0 ? rest : 0.0);
+  const double rest = model.options.sleep_time > 0 ? model.options.rest_speed : 0.0;
+  const double jump = 2.0 / 7.0 * entry_slip(model) + kStopSpeed + rest;
   // Up to free_for the ball may come contact_margin into a collider (collider_contact_time), which pushes it back by
   // at most that much.
   const double accel = free_acceleration(state, index, i);
   FreePath path{position(x, i), velocity(x, i), accel, jump, model.options.contact_margin,
                 std::min(horizon, collider_contact_time(model, index, state, x, i, horizon, accel))};
-  // The regime's acceleration, as the island's closed-form step takes it, and how long it holds: no longer than the
-  // speed stays over rest_speed, under which the ball may fall asleep (a jump).
+  // The regime's acceleration, as the island's closed-form step takes it, and how long it holds.
   double dxdt[kBallDofs];
   (state.rolling(i) ? rolling_derivative : sliding_derivative)(model, index, state, x, i, dxdt);
   path.a = Vec3{dxdt[3], dxdt[4], dxdt[5]};
-  const double speed = glm::length(path.v), slowing = glm::length(path.a);
-  double steady = steady_for(model, index, state, x, i);
-  if (model.options.sleep_time > 0)
-    steady = std::min(steady, speed <= rest ? 0.0 : slowing > 0 ? (speed - rest) / slowing : kForever);
-  path.steady_for = std::min(steady, path.free_for);
+  path.steady_for = std::min(steady_for(model, index, state, x, i, path.a), path.free_for);
   return path;
 }
 

@@ -92,9 +92,9 @@ void add_hop_rest(StateVector& x, int i, double vn, double offset, double g, con
     x[kBallDofs * i + 6 + c] -= vn / g * dxdt[6 + c];
   }
 }
-}  // namespace
 
-double steady_for(const Model& model, const ModelIndex& index, const State& state, const double* x, int i) {
+// s: how long a ball on its regime's path keeps to it, by its regime's own floors (steady_for).
+double regime_steady_for(const Model& model, const ModelIndex& index, const State& state, const double* x, int i) {
   const int bed = state.rolling(i) ? state.rolling_on[i] : state.sliding(i) ? state.sliding_on[i] : -1;
   if (bed < 0) return 0.0;
   const ContactMaterial& m = index.collider_material(bed);
@@ -111,6 +111,19 @@ double steady_for(const Model& model, const ModelIndex& index, const State& stat
   u -= glm::dot(u, n) * n;
   return std::max(0.0, time_to_edge(smooth, glm::length(u), m.friction * weight,
                                     index.inv_mass[i] + index.inv_inertia_r2[i], entry_slip(model)));
+}
+
+}  // namespace
+
+double steady_for(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
+                  const Vec3& a) {
+  const double steady = regime_steady_for(model, index, state, x, i);
+  if (model.options.sleep_time <= 0) return steady;
+  // Falling asleep zeroes a velocity under rest_speed (update_sleep): the speed, falling at most at |a|, stays
+  // over it for (speed - rest_speed) / |a| at least.
+  const double speed = glm::length(velocity(x, i)), slowing = glm::length(a), rest = model.options.rest_speed;
+  if (speed <= rest) return 0.0;
+  return slowing > 0 ? std::min(steady, (speed - rest) / slowing) : steady;
 }
 
 Regimes::Regimes(const Model& model, const ModelIndex& index) : model_(model), index_(index) {

@@ -110,10 +110,12 @@ double time_to_band_edge(const Model& model, const State& state, const ModelInde
                          std::vector<Swing>* swings = nullptr, const std::vector<Swing>* continuing = nullptr,
                          BounceWork* bounces = nullptr);
 
-// s: how long ball i, rolling or sliding, keeps its acceleration along the bed constant and its velocity free of
-// jumps: until its speed (rolling) or its slip (sliding) falls to its friction band's edge, where its law turns, or to
-// the stop cut's speed or the rolling entry's slip, where a regime snaps it, whichever comes first; 0 from there on,
-// or where the bed's friction depends on the slip. +inf rolling without rolling resistance.
-double steady_for(const Model& model, const ModelIndex& index, const State& state, const double* x, int i);
+// s: how long ball i, rolling or sliding with the regime's acceleration `a` (m/s^2), keeps it constant and its
+// velocity free of jumps: until its speed (rolling) or its slip (sliding) falls to its friction band's edge, where its
+// law turns, or to the stop cut's speed or the rolling entry's slip, where a regime snaps it, and (with sleep on) no
+// later than its speed may fall to rest_speed, where it may fall asleep; 0 from there on, or where the bed's friction
+// depends on the slip. +inf rolling without rolling resistance or sleep.
+double steady_for(const Model& model, const ModelIndex& index, const State& state, const double* x, int i,
+                  const Vec3& a);
 
 }  // namespace shotlab

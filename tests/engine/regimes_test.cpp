@@ -255,5 +255,28 @@ TEST(Regimes, ASteadyPathEndsBeforeTheRollingEntrysSnap) {
   EXPECT_LE(0.01 + path->steady_for, snapped);
 }
 
+// A rolling ball's free path stays steady only while its speed is over rest_speed, where it may fall asleep (its
+// velocity zeroed): with rest_speed raised to 5 cm/s, a ball rolling at 0.3 m/s on the cloth (slowing at mu_r g,
+// MODEL.md eq. 3.6) is steady for (0.3 - 0.05) / (mu_r g) s; with sleep off, until its speed reaches the friction
+// band's edge 1/k (1 mm/s at the default sharpness of 1000 s/m).
+TEST(Regimes, ASteadyPathEndsWhereTheBallMayFallAsleep) {
+  const double v0 = 0.3, rest = 0.05, a = 0.01 * 9.81;
+  auto steady = [&](double sleep_time) {
+    nlohmann::json doc = cloth_scene({{{"id", "cue"}, {"position", {0, kR, 0}}, {"velocity", {v0, 0, 0}},
+                                       {"angular_velocity", {0, 0, -v0 / kR}}}});
+    doc["model"] = {{"rest_speed", rest}, {"sleep_time", sleep_time}};
+    auto sim = simulate(scene(doc));
+    EXPECT_EQ(sim->advance(1e-3), Status::Ok) << sim->diagnostic();
+    EXPECT_TRUE(sim->state().rolling(0));
+    const ModelIndex index(sim->model());
+    const auto path = free_path(sim->model(), sim->state(), sim->state().x.data(), 0, index, 10.0);
+    EXPECT_TRUE(path.has_value());
+    return path ? path->steady_for : -1.0;
+  };
+  const double speed = v0 - a * 1e-3;
+  EXPECT_NEAR(steady(0.5), (speed - rest) / a, 1e-9);
+  EXPECT_NEAR(steady(0.0), (speed - 1e-3) / a, 1e-9);
+}
+
 }  // namespace
 }  // namespace shotlab::test
