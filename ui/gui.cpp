@@ -200,6 +200,8 @@ int run_gui(const GuiOptions& options) {
       ScriptHost host{lab, settings.camera, nullptr};
       double last = glfwGetTime(), frame_seconds = 0;
       long frame = 0;
+      FrameTimes play_frames;
+      bool played = false;  // a shot played through the last frame
       std::signal(SIGINT, on_signal);
       std::signal(SIGTERM, on_signal);
       if (!options.dump_state.empty()) std::signal(SIGUSR1, on_dump_signal);
@@ -212,6 +214,7 @@ int run_gui(const GuiOptions& options) {
         frame_seconds = now - last;
         last = now;
         host.fps = frame_seconds > 0 ? 1 / frame_seconds : 0;
+        play_frames.add(played, frame_seconds);
 
         int w, h;
         glfwGetFramebufferSize(window.handle, &w, &h);
@@ -263,7 +266,7 @@ int run_gui(const GuiOptions& options) {
         else if (!lab.screenshot_request.empty()) write_screenshot(lab, w, h);
         lab.plot_capture_drawn = false;  // the next frame's panels say again
         const ScreenInfo screen{w, h, layout.view, &viewport, &marks(), &readouts(), mouse.x, mouse.y, host.fps,
-                                frame_seconds * 1e3, ++frame};
+                                frame_seconds * 1e3, ++frame, &play_frames};
         if (dump_requested.exchange(false)) write_state(lab, screen, options.dump_state);
         if (script) {
           host.screen = &screen;
@@ -272,6 +275,7 @@ int run_gui(const GuiOptions& options) {
           host.screen = nullptr;
         }
         glfwSwapBuffers(window.handle);
+        played = lab.playing;
       }
       if (script) {
         exit_code = script->failures() ? 1 : 0;

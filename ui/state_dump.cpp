@@ -165,6 +165,11 @@ json state_json(const Lab& lab, const ScreenInfo& screen) {
          {"balls", balls_json(lab, screen)},
          {"margin", margin_json(lab)},
          {"measured", measured_json(lab)}};
+  if (screen.play_frames) {
+    const FrameTimes::Summary f = screen.play_frames->summary(1e3 / 60);
+    j["play_frames"] = {{"frames", f.frames}, {"median_ms", f.median_ms}, {"p95_ms", f.p95_ms},
+                        {"worst_ms", f.worst_ms}, {"over_60fps_budget", f.over_budget}};
+  }
   if (const auto miss = lab.target_miss()) j["target_miss"] = *miss;
   if (lab.target) j["target"] = {lab.target->x, lab.target->z};
   if (lab.scene.table && screen.viewport) {

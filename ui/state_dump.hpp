@@ -8,6 +8,7 @@
 #include <string>
 
 #include "ui/camera.hpp"
+#include "ui/frame_times.hpp"
 #include "ui/lab.hpp"
 #include "ui/layout.hpp"
 
@@ -23,6 +24,7 @@ struct ScreenInfo {
   double fps = 0;
   double frame_ms = 0;
   long frame = 0;
+  const FrameTimes* play_frames = nullptr;  // the frames of the last play
 };
 
 nlohmann::json state_json(const Lab& lab, const ScreenInfo& screen);

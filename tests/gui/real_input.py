@@ -409,6 +409,11 @@ def player(binary, root, display, work):
         fps = sorted(f for f, _ in seen)
         figure(f"while the break ran: {fps[len(fps) // 2]:.0f} fps median, {fps[0]:.0f} lowest over {len(seen)} samples; "
                f"physics {max(p for _, p in seen):.2f} ms in the busiest frame sampled")
+    played = s.get("play_frames") or {}
+    if check(played.get("frames", 0) > 0, f"the program kept the break's frame times ({played.get('frames')} frames)"):
+        figure(f"every frame of the break: {played['frames']}, median {1e3 / played['median_ms']:.0f} fps, 95 % of "
+               f"them at {1e3 / played['p95_ms']:.0f} fps or faster, {played['over_60fps_budget']} over 1/60 s, the "
+               f"slowest {played['worst_ms']:.1f} ms")
     moved = sum(1 for b, a in zip(s["balls"], racked["balls"])
                 if not b["in_play"] or sum((p - q) ** 2 for p, q in zip(b["position"], a["position"])) > 0.05 ** 2)
     check(s["shot"]["end"] == "rest" and moved >= 8,

@@ -1,5 +1,5 @@
-// The logic under the panels, without a window: the undo stack, the panel layout, plot ticks and time readouts, and
-// files written atomically.
+// The logic under the panels, without a window: the undo stack, the panel layout, plot ticks and time readouts,
+// files written atomically, and the frame times of a play.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "ui/files.hpp"
+#include "ui/frame_times.hpp"
 #include "ui/history.hpp"
 #include "ui/layout.hpp"
 #include "ui/plot_data.hpp"
@@ -225,6 +226,28 @@ TEST(Files, AtomicWriteReplacesWholeAndLeavesNoTemporaries) {
     ASSERT_FALSE(account.empty());
     EXPECT_EQ(typed, (std::filesystem::path(account) / "d.json").lexically_normal().string());
   }
+}
+
+// The frame times of a play: only frames a shot played through count, a new play starts a new record, and the
+// summary's figures are the sorted frames' median, 95th percentile and largest, with those over the budget counted.
+TEST(FrameTimes, AnotherPlayStartsANewRecord) {
+  FrameTimes f;
+  f.add(false, 0.5);  // idle: not counted
+  for (int k = 1; k <= 100; ++k) f.add(true, k * 1e-3);  // 1 to 100 ms
+  FrameTimes::Summary s = f.summary(1e3 / 60);
+  EXPECT_EQ(s.frames, 100u);
+  EXPECT_DOUBLE_EQ(s.median_ms, 50.0);  // the 50th of 100 sorted (index 49.5, rounded down)
+  EXPECT_DOUBLE_EQ(s.p95_ms, 95.0);
+  EXPECT_DOUBLE_EQ(s.worst_ms, 100.0);
+  EXPECT_EQ(s.over_budget, 84u);  // 17 to 100 ms
+  f.add(false, 0.2);  // paused: the record stays as it was
+  EXPECT_EQ(f.summary(1e3 / 60).frames, 100u);
+  EXPECT_DOUBLE_EQ(f.summary(1e3 / 60).worst_ms, 100.0);
+  f.add(true, 0.010);  // played again: only this one
+  s = f.summary(1e3 / 60);
+  EXPECT_EQ(s.frames, 1u);
+  EXPECT_DOUBLE_EQ(s.worst_ms, 10.0);
+  EXPECT_EQ(s.over_budget, 0u);
 }
 
 }  // namespace
