@@ -33,6 +33,11 @@ double checked_dt(double dt) {
 
 Status Simulation::advance(double dt) { return world_->advance(checked_dt(dt)); }
 Status Simulation::advance_on(double dt) { return world_->advance_on(checked_dt(dt)); }
+Status Simulation::advance_within(double dt, double wall_seconds) {
+  if (std::isnan(wall_seconds))
+    throw std::invalid_argument("Simulation::advance_within: wall_seconds must not be NaN");
+  return world_->advance_within(checked_dt(dt), wall_seconds);
+}
 double Simulation::time() const { return world_->time(); }
 const State& Simulation::state() const { return world_->state(); }
 const Model& Simulation::model() const { return world_->model(); }

@@ -202,21 +202,35 @@ bool World::at_rest() const {
 
 Status World::advance(double dt) {
   for (const auto& island : islands_) island->start_call();
-  return advance_on(dt);
+  return run(dt, std::numeric_limits<double>::infinity());
 }
 
-Status World::advance_on(double dt) {  // dt checked by Simulation
+Status World::advance_on(double dt) { return run(dt, std::numeric_limits<double>::infinity()); }
+
+Status World::advance_within(double dt, double wall_seconds) {
+  for (const auto& island : islands_) island->start_call();
+  return run(dt, wall_seconds);
+}
+
+Status World::run(double dt, double wall_seconds) {  // dt checked by Simulation
   if (status_ != Status::Ok) return status_;
   const auto wall0 = std::chrono::steady_clock::now();
   const double target = state_.time + dt;
+  const bool budgeted = wall_seconds < std::numeric_limits<double>::infinity();
   // Always step the island that is furthest behind: then every island's last step spans the time of any stop, and
   // the caller's clock can be read off every island's dense output.
   double reached = target;
+  bool stepped = false;
   while (status_ == Status::Ok && !islands_.empty()) {
     const auto next = std::min_element(islands_.begin(), islands_.end(),
                                        [](const auto& a, const auto& b) { return a->time() < b->time(); });
     Island& island = **next;
     if (island.time() >= target) break;
+    if (budgeted && stepped &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count() >= wall_seconds) {
+      reached = std::max(state_.time, island.time());  // the furthest behind: every island's last step spans it
+      break;
+    }
     if (island.time() >= island.deadline()) {
       regroup(island.time(), {&island}, {});
       continue;
@@ -227,10 +241,10 @@ Status World::advance_on(double dt) {  // dt checked by Simulation
           << target << " s; stopped at t = " << island.time() << " s with step " << island.stats().last_step << " s. "
           << island.describe_balls();
       stop(Status::StepLimit, msg.str());
-    } else if (!island.step(island.deadline())) {
-      stop(island.status(), island.diagnostic());
-    } else if (observer_) {
-      observer_(island.view());
+    } else {
+      stepped = true;
+      if (!island.step(island.deadline())) stop(island.status(), island.diagnostic());
+      else if (observer_) observer_(island.view());
     }
     if (status_ != Status::Ok) reached = island.time();  // stay at the last good point
   }

@@ -32,6 +32,8 @@ class World final : public Runner {
   // As advance(), but the step limit (max_steps_per_call) keeps counting from the previous call: a caller that stops
   // at sample times inside a window of its own counts the limit per window, however it samples.
   Status advance_on(double dt) override;
+  // As advance(), but stopping once `wall_seconds` have passed (Simulation::advance_within).
+  Status advance_within(double dt, double wall_seconds) override;
 
   double time() const override { return state_.time; }
   const State& state() const override { return state_; }
@@ -67,6 +69,8 @@ class World final : public Runner {
   template <class PathA>
   double meeting_time(double t, const std::vector<int>& balls, double energy, const PathA& path_a, Island& other,
                       double until);
+  // advance()'s loop: every island to state_.time + dt, or to where it stops after wall_seconds (advance_within).
+  Status run(double dt, double wall_seconds);
   void check_energy();
   void stop(Status why, std::string message);
 

@@ -25,7 +25,7 @@ void turn(std::vector<glm::dquat>& q, const State& from, const State& to, double
 }
 }  // namespace
 
-Shot::Shot(const Scene& start, double safety_limit) : start_(start), limit_(safety_limit), chunk_(kFrameStep) {
+Shot::Shot(const Scene& start, double safety_limit) : start_(start), limit_(safety_limit) {
   validate(start_);
   sim_ = simulation_of(start_);
   sim_->set_observer([this](const StepView& step) {
@@ -55,23 +55,20 @@ void Shot::record() {
 double Shot::advance(double target, double budget) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
+  auto spent = [&] { return std::chrono::duration<double>(clock::now() - start).count(); };
   const Stats before = sim_->stats();
   target = std::min(target, limit_);
+  // Frames of kFrameStep are recorded for replay. The engine itself stops once the budget is spent (a step past it
+  // at most), so a frame that meets thousands of small steps (a rack's first millisecond) keeps to its budget.
   while (sim_->time() < target && !finished()) {
-    // One advance() cannot be interrupted, so when the integrator crawls (thousands of tiny steps in a pile-up)
-    // the chunks shrink to keep each frame within its budget; they grow back once steps are cheap again.
-    const auto before_chunk = clock::now();
-    const double to = std::min(target, sim_->time() + chunk_);
-    sim_->advance(to - sim_->time());
-    const double took = std::chrono::duration<double>(clock::now() - before_chunk).count();
-    if (took > budget / 2) chunk_ = std::max(chunk_ / 4, 1e-7);
-    else if (took < budget / 8) chunk_ = std::min(chunk_ * 2, kFrameStep);
+    const double to = std::min(target, sim_->time() + kFrameStep);
+    sim_->advance_within(to - sim_->time(), std::max(budget - spent(), 0.0));
     if (sim_->time() - frames_.back().time >= kMinFrameGap || finished()) record();
-    if (std::chrono::duration<double>(clock::now() - start).count() > budget) break;
+    if (sim_->time() < to || spent() > budget) break;
   }
   last_steps_ = sim_->stats().steps - before.steps;
   last_rhs_ = sim_->stats().rhs_evaluations - before.rhs_evaluations;
-  last_wall_ = std::chrono::duration<double>(clock::now() - start).count();
+  last_wall_ = spent();
   return sim_->time();
 }
 

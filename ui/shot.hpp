@@ -71,7 +71,6 @@ class Shot {
   std::vector<Frame> frames_;
   std::vector<Sample> step_sizes_;
   double limit_;
-  double chunk_;  // s of simulated time a single advance() call covers: shrinks while the integrator crawls
   long last_steps_ = 0, last_rhs_ = 0;
   double last_wall_ = 0;
 };

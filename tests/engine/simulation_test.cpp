@@ -107,6 +107,40 @@ TEST(Simulation, FrameRateDoesNotChangeTheResult) {
   }
 }
 
+// A call with no wall time to spare stops after one step, where every ball can be read: the break taken a step a call
+// ends where one call ends, and the state at a stop is the state one call to that time gives.
+TEST(Simulation, AWallTimeBudgetStopsEarlyWithoutChangingTheResult) {
+  const Scene s = load_scene(preset("break.json"));
+  const double until = 0.3;
+  auto one = simulate(s);
+  ASSERT_EQ(one->advance(until), Status::Ok);
+  auto sliced = simulate(s);
+  int calls = 0;
+  double checked_at = -1;
+  while (sliced->time() < until) {
+    const double before = sliced->time();
+    ASSERT_EQ(sliced->advance_within(until - before, 0.0), Status::Ok);
+    ASSERT_GE(sliced->time(), before);  // a step at least, though other islands may still be at the clock's time
+    ASSERT_LE(sliced->time(), until);
+    ASSERT_LE(calls, 2 * one->stats().steps);
+    if (++calls == 200) {  // inside the rack's first millisecond: the state there is the state at that time
+      checked_at = sliced->time();
+      auto to_there = simulate(s);
+      ASSERT_EQ(to_there->advance(checked_at), Status::Ok);
+      for (size_t i = 0; i < to_there->state().x.size(); ++i)
+        EXPECT_NEAR(sliced->state().x[i], to_there->state().x[i], 1e-9) << i;
+    }
+  }
+  std::printf("[ budget   ] %d calls to %.1f s (%ld steps), one checked at %.6f s\n", calls, until, one->stats().steps,
+              checked_at);
+  EXPECT_GT(calls, 300);  // it did stop early, many times
+  EXPECT_GT(checked_at, 0.1108);
+  EXPECT_LT(checked_at, 0.1123);
+  for (size_t i = 0; i < one->state().x.size(); ++i) EXPECT_NEAR(sliced->state().x[i], one->state().x[i], 1e-9) << i;
+  EXPECT_EQ(sliced->stats().steps, one->stats().steps);
+  EXPECT_EQ(sliced->events().size(), one->events().size());
+}
+
 TEST(Simulation, StepLimitStopsWithADiagnostic) {
   Scene s = load_scene(preset("bench/s8_break.json"));
   s.model.integrator.max_steps_per_call = 50;

@@ -31,6 +31,33 @@ struct LabTest : ::testing::Test {
   Vec3 ball(const std::string& id) const { return lab.scene.balls[scene_ball(lab.scene, id)].position; }
 };
 
+// A frame with no physics time to spare still moves the shot on, a step at a time, and the shot comes to rest as it
+// does played in one go: the engine stops inside a frame's budget without changing the physics (advance_within).
+TEST(Shot, AnExhaustedBudgetTakesAStepAFrameAndKeepsThePhysics) {
+  const Scene s = load_scene(test::preset("cut.json"));
+  Shot whole(s), framed(s);
+  run_to_end(whole);
+  int frames = 0;
+  while (!framed.finished() && frames < 100000) {
+    const double before = framed.sim().time();
+    const long steps = framed.sim().stats().steps;
+    framed.advance(before + 1.0 / 60, 0.0);
+    ASSERT_TRUE(framed.sim().stats().steps > steps || framed.sim().time() > before);
+    ASSERT_LE(framed.sim().stats().steps, steps + 1);  // the budget is checked after every step
+    ++frames;
+  }
+  EXPECT_GT(frames, 100);  // about a step a frame, not a sixtieth of a second
+  ASSERT_EQ(framed.end(), ShotEnd::Rest);
+  EXPECT_EQ(framed.sim().events().size(), whole.sim().events().size());
+  // Where it came to rest (the two end at different frames: a ball creeping under rest_speed is at rest already).
+  Prepared p = prepare(s);
+  Simulation to_there(std::move(p.model), std::move(p.state));
+  ASSERT_EQ(to_there.advance(framed.sim().time()), Status::Ok);
+  EXPECT_EQ(framed.sim().stats().steps, to_there.stats().steps);
+  for (size_t i = 0; i < to_there.state().x.size(); ++i)
+    EXPECT_NEAR(framed.sim().state().x[i], to_there.state().x[i], 1e-9) << i;
+}
+
 // VALIDATION.md R3: a ball rolling at 1 m/s with mu_r = 0.01 stops after 10.194 s. The scene's duration (4 s, for
 // headless runs) does not cut the shot: it runs until the ball rests and says so.
 TEST(Shot, RunsUntilEveryBallRestsPastTheScenesDuration) {
