@@ -92,28 +92,47 @@ void tidy(ContactTrace& tr) {
 double ContactTrace::peak_force() const { return force.empty() ? 0 : *std::max_element(force.begin(), force.end()); }
 double ContactTrace::max_depth() const { return depth.empty() ? 0 : *std::max_element(depth.begin(), depth.end()); }
 
-ContactLog trace_contacts(const Scene& start, const std::vector<Event>& events, double until) {
-  ContactLog log;
-  log.until = until;
-  log.events = events.size();
+ContactTracer::ContactTracer(const Scene& start) {
   Prepared p = prepare(start);
-  log.contacts = contact_spans(events, p.model);
-  if (log.contacts.empty()) return log;
-  Simulation sim(std::move(p.model), std::move(p.state));
+  sim_ = std::make_unique<Simulation>(std::move(p.model), std::move(p.state));
+}
+
+ContactTracer::~ContactTracer() = default;
+
+const ContactLog& ContactTracer::extend(const std::vector<Event>& events, double until) {
+  // The spans again from every event: those known already come first, in the same order (events only grow), with
+  // their samples; a contact's end may have come since.
+  std::vector<ContactTrace> spans = contact_spans(events, sim_->model());
+  for (size_t k = 0; k < spans.size() && k < log_.contacts.size(); ++k) {
+    ContactTrace& old = log_.contacts[k];
+    if (old.a != spans[k].a || old.b != spans[k].b || old.begin != spans[k].begin) break;
+    spans[k].time = std::move(old.time), spans[k].force = std::move(old.force), spans[k].depth = std::move(old.depth);
+  }
+  log_.contacts = std::move(spans);
+  log_.events = events.size();
+  log_.until = std::max(log_.until, until);
+  if (log_.contacts.empty()) return log_;  // nothing to trace yet: the run catches up when there is
   std::vector<size_t> live;
-  sim.set_observer([&](const StepView& s) {
+  sim_->set_observer([&](const StepView& s) {
     live.clear();
-    for (size_t k = 0; k < log.contacts.size(); ++k) {
-      const ContactTrace& tr = log.contacts[k];
+    for (size_t k = 0; k < log_.contacts.size(); ++k) {
+      const ContactTrace& tr = log_.contacts[k];
       if (tr.begin > s.t1 || (tr.end >= 0 && tr.end < s.t0)) continue;
       if (s.model.ball_index(tr.a) >= 0) live.push_back(k);
     }
     if (live.empty()) return;
-    for (int j = 1; j <= kSamplesPerStep; ++j) sample(s, s.t0 + (s.t1 - s.t0) * j / kSamplesPerStep, live, log.contacts);
+    for (int j = 1; j <= kSamplesPerStep; ++j)
+      sample(s, s.t0 + (s.t1 - s.t0) * j / kSamplesPerStep, live, log_.contacts);
   });
-  while (sim.time() < until && sim.status() == Status::Ok) sim.advance(std::min(1.0, until - sim.time()));
-  for (ContactTrace& tr : log.contacts) tidy(tr);
-  return log;
+  while (sim_->time() < until && sim_->status() == Status::Ok) sim_->advance(std::min(1.0, until - sim_->time()));
+  sim_->set_observer(nullptr);
+  for (ContactTrace& tr : log_.contacts) tidy(tr);
+  return log_;
+}
+
+ContactLog trace_contacts(const Scene& start, const std::vector<Event>& events, double until) {
+  ContactTracer tracer(start);
+  return tracer.extend(events, until);
 }
 
 }  // namespace shotlab

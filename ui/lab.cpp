@@ -571,19 +571,25 @@ void Lab::report_prediction() {
 const ContactLog* Lab::contact_log() {
   if (!shot) return nullptr;
   if (log_job_.valid() && log_job_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
-    log_ = log_job_.get();
-    log_shot_ = job_shot_;
+    tracer_ = log_job_.get();
+    tracer_shot_ = log_shot_ = job_shot_;
+    log_ = tracer_->log();
   }
   const std::vector<Event>& events = shot->sim().events();
   const bool stale = log_shot_ != shot_id_ || log_.events != events.size();
-  // Each trace runs the shot again from its start: while it plays, new events come every frame, and tracing them all
-  // back to back would keep a core busy that the renderer needs. Then the log follows once a second.
+  // While the shot plays new events come every frame; the tracer follows them a few times a second, each time from
+  // where it stopped (ContactTracer), on a worker thread.
   const auto now = std::chrono::steady_clock::now();
-  const bool due = !playing || log_shot_ != shot_id_ || now - job_started_ >= std::chrono::seconds(1);
+  const bool due = !playing || log_shot_ != shot_id_ || now - job_started_ >= std::chrono::milliseconds(250);
   if (stale && due && !log_job_.valid()) {
+    if (!tracer_ || tracer_shot_ != shot_id_) tracer_ = std::make_unique<ContactTracer>(shot->start());
     job_started_ = now;
     job_shot_ = shot_id_;
-    log_job_ = std::async(std::launch::async, trace_contacts, shot->start(), events, shot->sim().time());
+    auto extend = [tracer = std::move(tracer_), events, until = shot->sim().time()]() mutable {
+      tracer->extend(events, until);
+      return std::move(tracer);
+    };
+    log_job_ = std::async(std::launch::async, std::move(extend));
   }
   return log_shot_ == shot_id_ ? &log_ : nullptr;
 }

@@ -198,9 +198,11 @@ class Lab {
   int shot_id_ = 0;         // counts shots started: which one the contact log describes
   ContactLog log_;
   int log_shot_ = -1;
-  std::future<ContactLog> log_job_;
+  std::unique_ptr<ContactTracer> tracer_;  // the shot tracer_shot_ run on to where log_ ends, while no job holds it
+  int tracer_shot_ = -1;
+  std::future<std::unique_ptr<ContactTracer>> log_job_;  // the tracer, extended on a worker thread
   int job_shot_ = -1;
-  std::chrono::steady_clock::time_point job_started_;  // of the last trace, which runs the shot again from its start
+  std::chrono::steady_clock::time_point job_started_;  // of the last trace
 };
 
 }  // namespace shotlab

@@ -120,6 +120,45 @@ TEST(Shot, ContactLogTracesTheCollisionForce) {
   EXPECT_GT(hit->peak_force(), 500.0);
 }
 
+// The contact log followed while the break plays, a tracer extended every tenth of a second from where it stopped,
+// holds the traces that one run over the whole shot gives: the same contacts, the same samples (bar, at most, the one
+// at a contact's very begin where an extension stopped).
+TEST(Shot, AContactLogFollowedWhileItPlaysIsTheWholeRunsLog) {
+  const Scene s = load_scene(test::preset("break.json"));
+  Shot shot(s);
+  ContactTracer tracer(s);
+  int extended = 0;
+  while (!shot.finished() && shot.sim().time() < 3.0) {
+    shot.advance(shot.sim().time() + 0.1, 60.0);
+    tracer.extend(shot.sim().events(), shot.sim().time());
+    ++extended;
+  }
+  const ContactLog whole = trace_contacts(s, shot.sim().events(), shot.sim().time());
+  const ContactLog& followed = tracer.log();
+  ASSERT_EQ(followed.contacts.size(), whole.contacts.size());
+  EXPECT_GT(whole.contacts.size(), 20u);
+  size_t samples = 0, missed = 0;
+  for (size_t k = 0; k < whole.contacts.size(); ++k) {
+    const ContactTrace &f = followed.contacts[k], &w = whole.contacts[k];
+    ASSERT_EQ(f.label(), w.label());
+    EXPECT_EQ(f.begin, w.begin);
+    EXPECT_EQ(f.end, w.end);
+    ASSERT_LE(f.time.size(), w.time.size());
+    ASSERT_GE(f.time.size() + 1, w.time.size()) << w.label();
+    const size_t skip = w.time.size() - f.time.size();  // the sample at the begin, where it was missed
+    if (skip) {
+      EXPECT_EQ(w.time.front(), w.begin) << w.label();
+    }
+    for (size_t i = 0; i < f.time.size(); ++i) {
+      ASSERT_EQ(f.time[i], w.time[i + skip]) << w.label();
+      ASSERT_EQ(f.force[i], w.force[i + skip]) << w.label();
+    }
+    samples += w.time.size(), missed += skip;
+  }
+  std::printf("[ log      ] %d extensions, %zu contacts, %zu samples, %zu missed at a begin\n", extended,
+              whole.contacts.size(), samples, missed);
+}
+
 // A ball that drops while it still touches the pocket's back gets no contact_end: its contact ends where the ball
 // left play, with the force it pushed with, not open with no force to the shot's end. The cut's object ball touches
 // the back before it drops; its contact_end is taken out of the events to make it such a contact.
