@@ -20,7 +20,7 @@ class Runner {
   virtual ~Runner() = default;
   virtual Status advance(double dt) = 0;
   virtual Status advance_on(double dt) = 0;
-  virtual Status advance_within(double dt, double wall_seconds) = 0;
+  virtual Status advance_within(double dt, double wall_seconds, bool new_window) = 0;
   virtual double time() const = 0;
   virtual const State& state() const = 0;
   virtual const Model& model() const = 0;

@@ -33,10 +33,10 @@ double checked_dt(double dt) {
 
 Status Simulation::advance(double dt) { return world_->advance(checked_dt(dt)); }
 Status Simulation::advance_on(double dt) { return world_->advance_on(checked_dt(dt)); }
-Status Simulation::advance_within(double dt, double wall_seconds) {
+Status Simulation::advance_within(double dt, double wall_seconds, bool new_window) {
   if (std::isnan(wall_seconds))
     throw std::invalid_argument("Simulation::advance_within: wall_seconds must not be NaN");
-  return world_->advance_within(checked_dt(dt), wall_seconds);
+  return world_->advance_within(checked_dt(dt), wall_seconds, new_window);
 }
 double Simulation::time() const { return world_->time(); }
 const State& Simulation::state() const { return world_->state(); }

@@ -207,8 +207,9 @@ Status World::advance(double dt) {
 
 Status World::advance_on(double dt) { return run(dt, std::numeric_limits<double>::infinity()); }
 
-Status World::advance_within(double dt, double wall_seconds) {
-  for (const auto& island : islands_) island->start_call();
+Status World::advance_within(double dt, double wall_seconds, bool new_window) {
+  if (new_window)
+    for (const auto& island : islands_) island->start_call();
   return run(dt, wall_seconds);
 }
 
@@ -232,7 +233,9 @@ Status World::run(double dt, double wall_seconds) {  // dt checked by Simulation
       break;
     }
     if (island.time() >= island.deadline()) {
-      regroup(island.time(), {&island}, {});
+      const double at = island.time();
+      regroup(at, {&island}, {});  // which may end the island
+      if (status_ != Status::Ok) reached = at;  // a member could not be rewound: stay where the regroup was
       continue;
     }
     if (island.call_steps() >= model_.integrator.max_steps_per_call) {

@@ -33,7 +33,7 @@ class World final : public Runner {
   // at sample times inside a window of its own counts the limit per window, however it samples.
   Status advance_on(double dt) override;
   // As advance(), but stopping once `wall_seconds` have passed (Simulation::advance_within).
-  Status advance_within(double dt, double wall_seconds) override;
+  Status advance_within(double dt, double wall_seconds, bool new_window) override;
 
   double time() const override { return state_.time; }
   const State& state() const override { return state_; }

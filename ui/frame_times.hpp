@@ -11,7 +11,7 @@ namespace shotlab {
 class FrameTimes {
  public:
   // Once a frame: whether a shot played through the last frame, and how long that frame took (s). A play that starts
-  // again starts a new record.
+  // again, after a pause too, starts a new record.
   void add(bool played, double seconds) {
     if (played && !played_) ms_.clear();
     if (played && ms_.size() < kMaxFrames) ms_.push_back(seconds * 1e3);

@@ -60,9 +60,12 @@ double Shot::advance(double target, double budget) {
   target = std::min(target, limit_);
   // Frames of kFrameStep are recorded for replay. The engine itself stops once the budget is spent (a step past it
   // at most), so a frame that meets thousands of small steps (a rack's first millisecond) keeps to its budget.
+  // A window of kFrameStep is one count of the step limit however many frames it takes.
   while (sim_->time() < target && !finished()) {
-    const double to = std::min(target, sim_->time() + kFrameStep);
-    sim_->advance_within(to - sim_->time(), std::max(budget - spent(), 0.0));
+    const bool new_window = !(sim_->time() < window_end_);
+    if (new_window) window_end_ = sim_->time() + kFrameStep;
+    const double to = std::min(target, window_end_);
+    sim_->advance_within(to - sim_->time(), std::max(budget - spent(), 0.0), new_window);
     if (sim_->time() - frames_.back().time >= kMinFrameGap || finished()) record();
     if (sim_->time() < to || spent() > budget) break;
   }

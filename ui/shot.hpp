@@ -71,6 +71,7 @@ class Shot {
   std::vector<Frame> frames_;
   std::vector<Sample> step_sizes_;
   double limit_;
+  double window_end_ = -1;  // s: where the step limit's current window ends (advance)
   long last_steps_ = 0, last_rhs_ = 0;
   double last_wall_ = 0;
 };

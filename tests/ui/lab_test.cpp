@@ -58,6 +58,24 @@ TEST(Shot, AnExhaustedBudgetTakesAStepAFrameAndKeepsThePhysics) {
     EXPECT_NEAR(framed.sim().state().x[i], to_there.state().x[i], 1e-9) << i;
 }
 
+// The step limit counts over windows of simulated time, not over a frame's slice of the wall time: a break held to
+// 300 steps a window stops at the same point whether each frame gets all the time it wants or none.
+TEST(Shot, TheStepLimitDoesNotDependOnTheFramesBudget) {
+  Scene s = load_scene(test::preset("bench/s8_break.json"));
+  s.model.integrator.max_steps_per_call = 300;
+  auto play = [&](double budget) {
+    Shot shot(s);
+    for (int frame = 0; frame < 200000 && !shot.finished() && shot.sim().time() < 2.0; ++frame)
+      shot.advance(shot.sim().time() + 1.0 / 60, budget);
+    return std::pair{shot.end(), shot.sim().time()};
+  };
+  const auto [end_free, t_free] = play(60.0);
+  const auto [end_none, t_none] = play(0.0);
+  EXPECT_EQ(end_free, ShotEnd::EngineStop);
+  EXPECT_EQ(end_none, ShotEnd::EngineStop);
+  EXPECT_EQ(t_none, t_free);
+}
+
 // VALIDATION.md R3: a ball rolling at 1 m/s with mu_r = 0.01 stops after 10.194 s. The scene's duration (4 s, for
 // headless runs) does not cut the shot: it runs until the ball rests and says so.
 TEST(Shot, RunsUntilEveryBallRestsPastTheScenesDuration) {

@@ -39,10 +39,12 @@ class Simulation {
   // at sample times inside a window of its own counts the limit per window, however it samples.
   Status advance_on(double dt);
   // As advance(), but it may stop short of t + dt: once `wall_seconds` of wall time have passed (checked after each
-  // step, one step at least) it stops at the latest time it can read every ball at; time() says where. A window that
-  // draws frames keeps its frame rate so. The steps do not depend on where calls stop: the results are those of any
-  // other slicing. The rigid model always does the whole dt (a break costs it under a millisecond).
-  Status advance_within(double dt, double wall_seconds);
+  // step, one step at least) it stops at the latest time it can read every ball at; time() says where (it may stay
+  // where it was while islands catch up with each other: call again). A window that draws frames keeps its frame
+  // rate so. The steps do not depend on where calls stop: the results are those of any other slicing. With
+  // `new_window` false the step limit counts on from the previous call, as advance_on(): a caller stopped short goes
+  // on in the same window. The rigid model always does the whole dt (a break costs it under a millisecond).
+  Status advance_within(double dt, double wall_seconds, bool new_window = true);
 
   double time() const;
   const State& state() const;
