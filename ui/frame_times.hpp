@@ -10,12 +10,13 @@ namespace shotlab {
 
 class FrameTimes {
  public:
-  // Once a frame: whether a shot played through the last frame, and how long that frame took (s). A play that starts
-  // again, after a pause too, starts a new record.
-  void add(bool played, double seconds) {
-    if (played && !played_) ms_.clear();
-    if (played && ms_.size() < kMaxFrames) ms_.push_back(seconds * 1e3);
-    played_ = played;
+  // Once a frame: whether a shot played in the last frame, which one (any number that names a shot run: a new run of
+  // it is a new shot), and how long that frame took (s). A record is a shot's: it goes on after a pause, and the
+  // first frame another shot plays in starts a new one.
+  void add(bool played, long shot, double seconds) {
+    if (!played) return;
+    if (shot != shot_) ms_.clear(), shot_ = shot;
+    if (ms_.size() < kMaxFrames) ms_.push_back(seconds * 1e3);
   }
 
   struct Summary {
@@ -38,7 +39,7 @@ class FrameTimes {
  private:
   static constexpr size_t kMaxFrames = 1 << 20;  // an hour of play at 300 fps
   std::vector<double> ms_;
-  bool played_ = false;
+  long shot_ = -1;  // whose frames ms_ holds
 };
 
 }  // namespace shotlab

@@ -201,7 +201,8 @@ int run_gui(const GuiOptions& options) {
       double last = glfwGetTime(), frame_seconds = 0;
       long frame = 0;
       FrameTimes play_frames;
-      bool played = false;  // a shot played through the last frame
+      bool played = false;   // a shot played in the last frame: at its physics or when it ended
+      int played_shot = -1;  // which
       std::signal(SIGINT, on_signal);
       std::signal(SIGTERM, on_signal);
       if (!options.dump_state.empty()) std::signal(SIGUSR1, on_dump_signal);
@@ -214,7 +215,7 @@ int run_gui(const GuiOptions& options) {
         frame_seconds = now - last;
         last = now;
         host.fps = frame_seconds > 0 ? 1 / frame_seconds : 0;
-        play_frames.add(played, frame_seconds);
+        play_frames.add(played, played_shot, frame_seconds);
 
         int w, h;
         glfwGetFramebufferSize(window.handle, &w, &h);
@@ -237,6 +238,8 @@ int run_gui(const GuiOptions& options) {
         const Viewport viewport(settings.camera, layout.view.x, layout.view.w, h);
         const ImVec2 mouse = ImGui::GetIO().MousePos;
         handle_input(lab, settings.camera, viewport, drag, layout.view.contains(mouse.x, mouse.y));
+        const bool playing = lab.playing;  // the frame a shot ends in counts too
+        const int playing_shot = lab.shot_id();
         lab.update(dt);
 
         settings.panels.left_open = left_panel(lab, settings.camera, layout);
@@ -275,7 +278,8 @@ int run_gui(const GuiOptions& options) {
           host.screen = nullptr;
         }
         glfwSwapBuffers(window.handle);
-        played = lab.playing;
+        played = playing || lab.playing;
+        played_shot = playing ? playing_shot : lab.shot_id();
       }
       if (script) {
         exit_code = script->failures() ? 1 : 0;

@@ -110,6 +110,7 @@ class Lab {
   void update(double real_dt);  // advances the clock while playing, on the settings' wall-time budget
   bool shot_over() const { return shot && shot->finished() && view_time >= shot->sim().time(); }
   bool animating() const;     // something changes on screen without input: the frame loop keeps drawing
+  int shot_id() const { return shot_id_; }  // counts the shots started (a rerun after a change of physics too)
 
   const Frame& frame() const { return frame_; }  // the balls as on screen
   bool contact_on_screen() const;  // a ball touches another ball or a cushion in the frame shown

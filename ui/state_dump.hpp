@@ -24,7 +24,7 @@ struct ScreenInfo {
   double fps = 0;
   double frame_ms = 0;
   long frame = 0;
-  const FrameTimes* play_frames = nullptr;  // the frames of the last play
+  const FrameTimes* play_frames = nullptr;  // the frames the last shot played in
 };
 
 nlohmann::json state_json(const Lab& lab, const ScreenInfo& screen);

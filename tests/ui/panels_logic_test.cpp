@@ -228,22 +228,24 @@ TEST(Files, AtomicWriteReplacesWholeAndLeavesNoTemporaries) {
   }
 }
 
-// The frame times of a play: only frames a shot played through count, a new play starts a new record, and the
-// summary's figures are the sorted frames' median, 95th percentile and largest, with those over the budget counted.
-TEST(FrameTimes, AnotherPlayStartsANewRecord) {
+// The frame times of a shot: only frames a shot played in count, a pause leaves the record to go on, another shot
+// starts a new one, and the summary's figures are the sorted frames' median, 95th percentile and largest, with those
+// over the budget counted.
+TEST(FrameTimes, APauseKeepsTheRecordAndAnotherShotStartsANewOne) {
   FrameTimes f;
-  f.add(false, 0.5);  // idle: not counted
-  for (int k = 1; k <= 100; ++k) f.add(true, k * 1e-3);  // 1 to 100 ms
+  f.add(false, 1, 0.5);  // idle: not counted
+  for (int k = 1; k <= 60; ++k) f.add(true, 1, k * 1e-3);  // 1 to 60 ms
+  f.add(false, 1, 0.2);  // paused: the record stays as it was
+  EXPECT_EQ(f.summary(1e3 / 60).frames, 60u);
+  EXPECT_DOUBLE_EQ(f.summary(1e3 / 60).worst_ms, 60.0);
+  for (int k = 61; k <= 100; ++k) f.add(true, 1, k * 1e-3);  // played on: 61 to 100 ms
   FrameTimes::Summary s = f.summary(1e3 / 60);
   EXPECT_EQ(s.frames, 100u);
   EXPECT_DOUBLE_EQ(s.median_ms, 50.0);  // the 50th of 100 sorted (index 49.5, rounded down)
   EXPECT_DOUBLE_EQ(s.p95_ms, 95.0);
   EXPECT_DOUBLE_EQ(s.worst_ms, 100.0);
   EXPECT_EQ(s.over_budget, 84u);  // 17 to 100 ms
-  f.add(false, 0.2);  // paused: the record stays as it was
-  EXPECT_EQ(f.summary(1e3 / 60).frames, 100u);
-  EXPECT_DOUBLE_EQ(f.summary(1e3 / 60).worst_ms, 100.0);
-  f.add(true, 0.010);  // played again: only this one
+  f.add(true, 2, 0.010);  // another shot: only this one
   s = f.summary(1e3 / 60);
   EXPECT_EQ(s.frames, 1u);
   EXPECT_DOUBLE_EQ(s.worst_ms, 10.0);
