@@ -123,6 +123,15 @@ PYBIND11_MODULE(_core, m) {
         const Status status = s.sim().advance(dt);
         if (status != Status::Ok) throw std::runtime_error(s.sim().diagnostic());
       }, py::arg("dt"), "Moves the clock by dt seconds; raises RuntimeError with the diagnostic if the run stops")
+      .def("advance_within", [](PySimulation& s, double dt, double wall_seconds, bool go_on) {
+        if (!(wall_seconds >= 0)) throw py::value_error("wall_seconds: must be a time >= 0");
+        const Status status = s.sim().advance_within(dt, wall_seconds, !go_on);
+        if (status != Status::Ok) throw std::runtime_error(s.sim().diagnostic());
+        return s.sim().time();
+      }, py::arg("dt"), py::arg("wall_seconds"), py::arg("go_on") = false,
+           "As advance, but it may stop short once wall_seconds of wall time have passed (one step at least), for a "
+           "loop that draws frames; returns the time reached. The step limit counts from this call, or with go_on "
+           "on from the last")
       .def("at_rest", [](PySimulation& s) { return s.sim().at_rest(); })
       .def_property_readonly("time", [](PySimulation& s) { return s.sim().time(); })
       .def_property_readonly("ids", [](PySimulation& s) {

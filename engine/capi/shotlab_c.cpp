@@ -175,6 +175,15 @@ shotlab_status shotlab_advance(shotlab_sim* sim, double dt) {
   });
 }
 
+shotlab_status shotlab_advance_within(shotlab_sim* sim, double dt, double wall_seconds, int go_on) {
+  return guarded(sim, [&] {
+    if (!std::isfinite(dt) || dt < 0) return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, "dt: must be a finite time >= 0");
+    if (!(wall_seconds >= 0))  // NaN too; infinity is no budget
+      return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, "wall_seconds: must be a time >= 0");
+    return status_of(*sim, sim->sim->advance_within(dt, wall_seconds, go_on == 0));
+  });
+}
+
 shotlab_status shotlab_reset(shotlab_sim* sim) {
   return guarded(sim, [&] {
     Prepared p = prepare(sim->scene);

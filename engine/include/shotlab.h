@@ -22,7 +22,7 @@
 extern "C" {
 #endif
 
-#define SHOTLAB_API_VERSION 1
+#define SHOTLAB_API_VERSION 2
 
 typedef enum shotlab_status {
   SHOTLAB_OK = 0,
@@ -66,6 +66,12 @@ SHOTLAB_API void shotlab_destroy(shotlab_sim* sim);
 
 /* Moves the clock by dt >= 0 s. */
 SHOTLAB_API shotlab_status shotlab_advance(shotlab_sim* sim, double dt);
+/* As shotlab_advance, but for a frame loop that must keep its frame rate (API version 2): it may stop short of t + dt
+ * once wall_seconds >= 0 of wall time have passed (one step at least), at the latest time every ball can be read at;
+ * shotlab_time says where (it may stay put while parts of the table catch up: call again). Results do not depend on
+ * where calls stop. The step limit (integrator.max_steps_per_call) counts from this call, or with go_on nonzero on
+ * from the last, for a caller finishing a stretch it was stopped short in. */
+SHOTLAB_API shotlab_status shotlab_advance_within(shotlab_sim* sim, double dt, double wall_seconds, int go_on);
 /* Back to the scene's start (as created), materials and strikes set since then kept. */
 SHOTLAB_API shotlab_status shotlab_reset(shotlab_sim* sim);
 

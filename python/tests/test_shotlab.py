@@ -24,6 +24,25 @@ def test_stun_shot_slides_then_rolls():
     assert again.velocities[0, 0] == pytest.approx(1.42857, rel=0.005)
 
 
+def test_a_frame_loop_with_no_time_to_spare_gets_the_same_break():
+    """advance_within with no wall time takes a step a call: the break's first 0.3 s in many calls ends where one
+    advance puts it."""
+    scene = os.path.join(SOURCE, "presets", "break.json")
+    whole = shotlab.Simulation(scene)
+    whole.advance(0.3)
+    sliced = shotlab.Simulation(scene)
+    calls = 0
+    while sliced.time < 0.3:
+        reached = sliced.advance_within(0.3 - sliced.time, 0.0, go_on=calls > 0)
+        assert reached == sliced.time
+        calls += 1
+    assert calls > 100 and sliced.time == 0.3
+    assert np.abs(sliced.positions - whole.positions).max() < 1e-9
+    assert np.abs(sliced.velocities - whole.velocities).max() < 1e-9
+    with pytest.raises(ValueError, match="wall_seconds"):
+        sliced.advance_within(0.1, float("nan"))
+
+
 def test_states_are_numpy_arrays():
     sim = shotlab.Simulation(os.path.join(SOURCE, "presets", "break.json"))
     n = len(sim.ids)

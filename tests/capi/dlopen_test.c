@@ -23,6 +23,8 @@ typedef const char* (*error_fn)(const shotlab_sim*);
 typedef shotlab_status (*json_fn)(const char*, shotlab_sim**);
 typedef void (*destroy_fn)(shotlab_sim*);
 typedef shotlab_status (*advance_fn)(shotlab_sim*, double);
+typedef shotlab_status (*within_fn)(shotlab_sim*, double, double, int);
+typedef shotlab_status (*time_fn)(const shotlab_sim*, double*);
 typedef shotlab_status (*reset_fn)(shotlab_sim*);
 typedef shotlab_status (*balls_fn)(const shotlab_sim*, double*, double*, double*, int*, int);
 typedef shotlab_status (*events_fn)(shotlab_sim*, shotlab_event*, int, int*);
@@ -49,14 +51,16 @@ int main(int argc, char** argv) {
   json_fn create = (json_fn)dlsym(lib, "shotlab_create_from_json");
   destroy_fn destroy = (destroy_fn)dlsym(lib, "shotlab_destroy");
   advance_fn advance = (advance_fn)dlsym(lib, "shotlab_advance");
+  within_fn within = (within_fn)dlsym(lib, "shotlab_advance_within");
+  time_fn now = (time_fn)dlsym(lib, "shotlab_time");
   reset_fn reset = (reset_fn)dlsym(lib, "shotlab_reset");
   balls_fn balls = (balls_fn)dlsym(lib, "shotlab_balls");
   events_fn events = (events_fn)dlsym(lib, "shotlab_events");
   material_fn material = (material_fn)dlsym(lib, "shotlab_set_material");
   from_balls_fn from_balls = (from_balls_fn)dlsym(lib, "shotlab_create_from_balls");
   strike_fn strike = (strike_fn)dlsym(lib, "shotlab_strike");
-  if (!version || !last_error || !create || !destroy || !advance || !reset || !balls || !events || !material ||
-      !from_balls || !strike)
+  if (!version || !last_error || !create || !destroy || !advance || !within || !now || !reset || !balls || !events ||
+      !material || !from_balls || !strike)
     return fprintf(stderr, "a function is missing from the library\n"), 1;
   CHECK(version() == SHOTLAB_API_VERSION, "the library's API version is the header's");
   CHECK(dlsym(lib, "_ZN7shotlab10SimulationC1ENS_5ModelENS_5StateE") == NULL, "the engine's C++ symbols are hidden");
@@ -82,6 +86,24 @@ int main(int argc, char** argv) {
   CHECK(fabs(p[0] / 0.49928 - 1) < 0.005, "R1 distance");
   CHECK(fabs(v[0] / 1.42857 - 1) < 0.005, "R1 speed");
   CHECK(in_play[0] == 1, "in play");
+
+  /* A frame loop with no wall time to spare: each call takes one step and the clock reaches the switch in many calls,
+   * where the ball is as one call put it. */
+  double q[3], w[3], t = 0;
+  int calls = 0;
+  CHECK(reset(sim) == SHOTLAB_OK, "reset");
+  for (; calls < 100000 && t < tau; ++calls) {
+    CHECK(within(sim, tau - t, 0.0, calls > 0) == SHOTLAB_OK, "advance within no wall time");
+    CHECK(now(sim, &t) == SHOTLAB_OK, "time");
+  }
+  CHECK(balls(sim, q, w, NULL, NULL, 1) == SHOTLAB_OK, "balls after the budgeted calls");
+  printf("to the switch in %d calls of no wall time: x off by %.1e m, v by %.1e m/s\n", calls, fabs(q[0] - p[0]),
+         fabs(w[0] - v[0]));
+  CHECK(calls > 5 && t == tau, "many calls, to the switch exactly");
+  CHECK(fabs(q[0] - p[0]) < 1e-9 && fabs(w[0] - v[0]) < 1e-9, "the state one call gives");
+  CHECK(within(sim, 0.1, -1, 0) == SHOTLAB_ERROR_ARGUMENT && strstr(last_error(sim), "wall_seconds"),
+        "a negative budget named");
+  CHECK(within(sim, 0.1, NAN, 0) == SHOTLAB_ERROR_ARGUMENT, "a NaN budget");
 
   /* From arrays: a pool ball at rest on the pool table, struck along +x at the cue's 2 m/s (centre hit: the rigid-cue
    * model gives (1 + e) M V0 / (M + m) = 2.66 m/s), rolls on. */
