@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,11 +21,45 @@ using namespace shotlab;
 
 namespace {
 
+// A dict's value as JSON: numbers (numpy's too, and numpy arrays as lists), strings, booleans, None, lists and
+// tuples, dicts with string keys. A non-finite number is an InputError and anything else a TypeError, naming `path`.
+nlohmann::json to_json(const py::handle& v, const std::string& path) {
+  if (v.is_none()) return nullptr;
+  if (py::isinstance<py::bool_>(v)) return v.cast<bool>();
+  if (py::isinstance<py::int_>(v)) return v.cast<long long>();
+  if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+  if (py::isinstance<py::dict>(v)) {
+    nlohmann::json out = nlohmann::json::object();
+    for (const auto& [key, item] : v.cast<py::dict>()) {
+      if (!py::isinstance<py::str>(key)) throw py::type_error("scene: " + path + ": a key that is not a string");
+      const std::string k = key.cast<std::string>();
+      out[k] = to_json(item, path.empty() ? k : path + "." + k);
+    }
+    return out;
+  }
+  if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v) || py::isinstance<py::array>(v)) {
+    const py::object items = py::isinstance<py::array>(v) ? v.attr("tolist")() : py::reinterpret_borrow<py::object>(v);
+    if (!py::isinstance<py::list>(items) && !py::isinstance<py::tuple>(items)) return to_json(items, path);  // 0-d
+    nlohmann::json out = nlohmann::json::array();
+    size_t k = 0;
+    for (const auto& item : items) out.push_back(to_json(item, path + "[" + std::to_string(k++) + "]"));
+    return out;
+  }
+  if (py::hasattr(v, "__float__") && !py::isinstance<py::bytes>(v)) {  // float, numpy.float64, numpy.int32, ...
+    const py::object index = py::module_::import("operator").attr("index");
+    if (py::hasattr(v, "__index__")) return index(v).cast<long long>();
+    const double x = py::float_(py::reinterpret_borrow<py::object>(v)).cast<double>();
+    if (!std::isfinite(x)) throw InputError("scene: " + path + ": must be a finite number, got " + std::to_string(x));
+    return x;
+  }
+  throw py::type_error("scene: " + path + ": a " + py::str(py::type::of(v).attr("__name__")).cast<std::string>() +
+                       " is not a scene value (numbers, strings, booleans, None, lists and dicts are)");
+}
+
 // A scene's JSON text and the name its messages use, from a path (str or os.PathLike), JSON text (starting with '{')
 // or a dict; anything else is a TypeError.
 std::pair<std::string, std::string> scene_text(const py::object& scene) {
-  if (py::isinstance<py::dict>(scene))
-    return {py::module_::import("json").attr("dumps")(scene).cast<std::string>(), "scene"};
+  if (py::isinstance<py::dict>(scene)) return {to_json(scene, "").dump(), "scene"};
   if (py::hasattr(scene, "__fspath__")) {  // a pathlib.Path
     const std::string path = py::str(py::module_::import("os").attr("fspath")(scene)).cast<std::string>();
     return {read_scene_file(path), path};
@@ -151,8 +186,11 @@ PYBIND11_MODULE(_core, m) {
       })
       .def_property_readonly("events", [](PySimulation& s) {
         py::list out;
-        for (const Event& e : s.sim().events()) out.append(py::dict(py::arg("time") = e.time, py::arg("kind") = e.kind,
-                                                                    py::arg("bodies") = e.bodies));
+        auto put = [&](const Event& e) {
+          out.append(py::dict(py::arg("time") = e.time, py::arg("kind") = e.kind, py::arg("bodies") = e.bodies));
+        };
+        for (const Event& e : s.run.extra) put(e);  // a miscue at the strike, which the engine does not make
+        for (const Event& e : s.sim().events()) put(e);
         return out;
       })
       .def_property_readonly("stats", [](PySimulation& s) { return to_python(result_to_json(s.sim())["stats"]); })

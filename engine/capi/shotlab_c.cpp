@@ -11,11 +11,13 @@
 #include <vector>
 
 #include "shotlab/cue.hpp"
+#include "shotlab/io/run.hpp"
 #include "shotlab/io/scene_json.hpp"
+#include "shotlab/scene.hpp"
 #include "shotlab/simulation.hpp"
 
 struct shotlab_sim {
-  shotlab::Scene scene;  // as created, with the materials and strikes set since
+  shotlab::Scene scene;  // as created, with the materials set since
   std::unique_ptr<shotlab::Simulation> sim;
   std::vector<shotlab::Event> pending;  // not yet taken when the simulation was rebuilt
   size_t taken = 0;                     // of sim->events()
@@ -28,7 +30,7 @@ using namespace shotlab;
 
 std::mutex registry_mutex;
 std::unordered_set<const shotlab_sim*> live;
-thread_local std::string create_error;
+thread_local std::string thread_error;  // of a failed create, or a call on an invalid handle
 
 bool is_live(const shotlab_sim* s) {
   std::lock_guard<std::mutex> lock(registry_mutex);
@@ -58,7 +60,9 @@ shotlab_status caught(std::string& where) {
 // Runs f on a live handle, turning every exception into a status and the handle's message.
 template <class F>
 shotlab_status guarded(const shotlab_sim* s, F&& f) {
-  if (!is_live(s)) return SHOTLAB_ERROR_HANDLE;
+  if (!is_live(s))
+    return fail(thread_error, SHOTLAB_ERROR_HANDLE, s ? "sim: not a valid handle (destroyed or never created)"
+                                                      : "sim: NULL");
   try {
     return f();
   } catch (...) {
@@ -66,12 +70,19 @@ shotlab_status guarded(const shotlab_sim* s, F&& f) {
   }
 }
 
+// The simulation of the handle's scene from its start (a miscue of the scene's cue is its first event).
+void restart(shotlab_sim& s) {
+  HeadlessRun run = start_run(s.scene);
+  s.sim = std::move(run.sim);
+  s.pending = std::move(run.extra);
+  s.taken = 0;
+}
+
 // A new simulation of `scene` from its start.
 shotlab_status start(Scene scene, shotlab_sim** out) {
-  Prepared p = prepare(scene);
   auto handle = std::make_unique<shotlab_sim>();
   handle->scene = std::move(scene);
-  handle->sim = std::make_unique<Simulation>(std::move(p.model), std::move(p.state));
+  restart(*handle);
   std::lock_guard<std::mutex> lock(registry_mutex);
   *out = handle.release();
   live.insert(*out);
@@ -81,19 +92,20 @@ shotlab_status start(Scene scene, shotlab_sim** out) {
 // Creates through make() (which builds the scene), with the thread's message on failure.
 template <class Make>
 shotlab_status create(shotlab_sim** out, Make&& make) {
-  if (!out) return fail(create_error, SHOTLAB_ERROR_ARGUMENT, "out: NULL");
+  if (!out) return fail(thread_error, SHOTLAB_ERROR_ARGUMENT, "out: NULL");
   *out = nullptr;
   try {
     return start(make(), out);
   } catch (...) {
-    return caught(create_error);
+    return caught(thread_error);
   }
 }
 
-bool finite(const double* v, int n) {
-  for (int k = 0; k < n; ++k)
-    if (!std::isfinite(v[k])) return false;
-  return true;
+// "name[k]: not finite" for the first of the n numbers at v (may be NULL) that is not, else "".
+std::string non_finite(const char* name, const double* v, int n) {
+  for (int k = 0; v && k < n; ++k)
+    if (!std::isfinite(v[k])) return std::string(name) + "[" + std::to_string(k) + "]: not finite";
+  return "";
 }
 
 // The simulation goes on from its current state with `model` (the events not yet taken kept).
@@ -120,29 +132,30 @@ extern "C" {
 int shotlab_api_version(void) { return SHOTLAB_API_VERSION; }
 
 const char* shotlab_last_error(const shotlab_sim* sim) {
-  if (!sim) return create_error.c_str();
+  if (!sim) return thread_error.c_str();
   return is_live(sim) ? sim->error.c_str() : "the simulation handle is not valid (destroyed or never created)";
 }
 
 shotlab_status shotlab_create_from_file(const char* path, shotlab_sim** out) {
-  if (!path) return fail(create_error, SHOTLAB_ERROR_ARGUMENT, "path: NULL");
+  if (!path) return fail(thread_error, SHOTLAB_ERROR_ARGUMENT, "path: NULL");
   return create(out, [&] { return load_scene(path); });
 }
 
 shotlab_status shotlab_create_from_json(const char* json, shotlab_sim** out) {
-  if (!json) return fail(create_error, SHOTLAB_ERROR_ARGUMENT, "json: NULL");
+  if (!json) return fail(thread_error, SHOTLAB_ERROR_ARGUMENT, "json: NULL");
   return create(out, [&] { return parse_scene(parse_json_text(json, "scene JSON"), "scene JSON"); });
 }
 
 shotlab_status shotlab_create_from_balls(int n, const double* position, const double* velocity, const double* spin,
                                          const double* radius, const double* mass, const char* table,
                                          shotlab_sim** out) {
-  if (n < 0 || n > 100000) return fail(create_error, SHOTLAB_ERROR_ARGUMENT, "n: must be 0 to 100000");
-  if (n > 0 && (!position || !radius || !mass))
-    return fail(create_error, SHOTLAB_ERROR_ARGUMENT, "position, radius and mass: NULL");
-  if (n > 0 && (!finite(position, 3 * n) || (velocity && !finite(velocity, 3 * n)) || (spin && !finite(spin, 3 * n)) ||
-                !finite(radius, n) || !finite(mass, n)))
-    return fail(create_error, SHOTLAB_ERROR_ARGUMENT, "balls: a number is not finite");
+  if (n < 0 || n > 100000) return fail(thread_error, SHOTLAB_ERROR_ARGUMENT, "n: must be 0 to 100000");
+  for (const auto& [name, v] : {std::pair{"position", position}, {"radius", radius}, {"mass", mass}})
+    if (n > 0 && !v) return fail(thread_error, SHOTLAB_ERROR_ARGUMENT, std::string(name) + ": NULL");
+  for (const auto& [name, v, count] : {std::tuple{"position", position, 3 * n}, {"velocity", velocity, 3 * n},
+                                       {"spin", spin, 3 * n}, {"radius", radius, n}, {"mass", mass, n}})
+    if (std::string bad = non_finite(name, v, count); !bad.empty())
+      return fail(thread_error, SHOTLAB_ERROR_ARGUMENT, bad);
   return create(out, [&] {
     nlohmann::json doc = {{"balls", nlohmann::json::array()}};
     if (table) doc["table"] = {{"type", table}};
@@ -186,9 +199,7 @@ shotlab_status shotlab_advance_within(shotlab_sim* sim, double dt, double wall_s
 
 shotlab_status shotlab_reset(shotlab_sim* sim) {
   return guarded(sim, [&] {
-    Prepared p = prepare(sim->scene);
-    sim->sim = std::make_unique<Simulation>(std::move(p.model), std::move(p.state));
-    sim->pending.clear(), sim->taken = 0;
+    restart(*sim);
     return SHOTLAB_OK;
   });
 }
@@ -209,11 +220,29 @@ shotlab_status shotlab_ball_count(const shotlab_sim* sim, int* count) {
   });
 }
 
+shotlab_status shotlab_ball_id(const shotlab_sim* sim, int index, char* id, int capacity) {
+  return guarded(sim, [&] {
+    std::string& error = const_cast<shotlab_sim*>(sim)->error;
+    const auto& balls = sim->sim->model().balls;
+    if (index < 0 || static_cast<size_t>(index) >= balls.size())
+      return fail(error, SHOTLAB_ERROR_ARGUMENT, "index: " + std::to_string(index) + " is not 0 to " +
+                                                   std::to_string(static_cast<long>(balls.size()) - 1));
+    if (!id) return fail(error, SHOTLAB_ERROR_ARGUMENT, "id: NULL");
+    const std::string& name = balls[index].id;
+    if (capacity < 0 || static_cast<size_t>(capacity) <= name.size())
+      return fail(error, SHOTLAB_ERROR_BUFFER, "capacity: " + std::to_string(capacity) + " bytes, the id needs " +
+                                                   std::to_string(name.size() + 1));
+    std::memcpy(id, name.c_str(), name.size() + 1);
+    return SHOTLAB_OK;
+  });
+}
+
 shotlab_status shotlab_balls(const shotlab_sim* sim, double* position, double* velocity, double* spin, int* in_play,
                              int capacity) {
   return guarded(sim, [&] {
     const State& s = sim->sim->state();
     const int n = s.ball_count();
+    if (capacity < 0) return fail(const_cast<shotlab_sim*>(sim)->error, SHOTLAB_ERROR_ARGUMENT, "capacity: below 0");
     if (capacity < n)
       return fail(const_cast<shotlab_sim*>(sim)->error, SHOTLAB_ERROR_BUFFER,
                   "capacity: " + std::to_string(capacity) + " balls, the simulation has " + std::to_string(n));
@@ -232,10 +261,11 @@ shotlab_status shotlab_balls(const shotlab_sim* sim, double* position, double* v
 shotlab_status shotlab_events(shotlab_sim* sim, shotlab_event* events, int capacity, int* count) {
   return guarded(sim, [&] {
     if (!count) return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, "count: NULL");
+    if (capacity < 0) return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, "capacity: below 0");
     const auto& fresh = sim->sim->events();
     const size_t n = sim->pending.size() + (fresh.size() - sim->taken);
     *count = static_cast<int>(n);
-    if (capacity < 0 || static_cast<size_t>(capacity) < n || (n > 0 && !events))
+    if (static_cast<size_t>(capacity) < n || (n > 0 && !events))
       return fail(sim->error, SHOTLAB_ERROR_BUFFER, "capacity: " + std::to_string(capacity) + " events, " +
                                                         std::to_string(n) + " waiting");
     size_t k = 0;
@@ -261,8 +291,16 @@ shotlab_status shotlab_set_material(shotlab_sim* sim, const char* pair, const ch
     nlohmann::json doc = scene_to_json(sim->scene);
     if (!doc["materials"].contains(pair))
       return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, std::string("pair: no material '") + pair + "'");
-    doc["materials"][pair][field] = value;
-    Scene changed = parse_scene(doc, std::string("materials.") + pair + "." + field);  // checks field and value
+    nlohmann::json& material = doc["materials"][pair];  // as written, it names every field a material has
+    if (!material.contains(field) || !material[field].is_number()) {
+      std::string known;
+      for (const auto& item : material.items())
+        if (item.value().is_number()) known += (known.empty() ? "" : ", ") + item.key();
+      return fail(sim->error, SHOTLAB_ERROR_ARGUMENT,
+                  std::string("field: no number '") + field + "' in a material (" + known + ")");
+    }
+    material[field] = value;
+    Scene changed = parse_scene(doc, "shotlab_set_material");  // checks the value, naming materials.PAIR.FIELD
     sim->scene.model.materials = changed.model.materials;
     Model model = sim->sim->model();
     model.materials = changed.model.materials;
@@ -271,14 +309,27 @@ shotlab_status shotlab_set_material(shotlab_sim* sim, const char* pair, const ch
   });
 }
 
+// What a scene's cue would refuse in the strike's numbers, naming the argument, or "".
+std::string strike_problem(double speed, double aim, double side, double height, double elevation) {
+  for (const auto& [name, v] : {std::pair{"speed", speed}, {"aim", aim}, {"side", side}, {"height", height},
+                                {"elevation", elevation}})
+    if (!std::isfinite(v)) return std::string(name) + ": not finite";
+  if (speed < 0 || speed > kMaxStartSpeed)
+    return "speed: " + std::to_string(speed) + " m/s is outside 0 to " + std::to_string(kMaxStartSpeed) + " m/s";
+  if (elevation < 0 || elevation > kMaxElevation) return "elevation: must be 0 to pi/2 rad (a level to a vertical cue)";
+  return "";  // a tip offset outside the ball: strike() says so
+}
+
 shotlab_status shotlab_strike(shotlab_sim* sim, const char* ball, double speed, double aim, double side, double height,
                               double elevation) {
   return guarded(sim, [&] {
-    const int i = ball ? sim->sim->model().ball_index(ball) : -1;
-    if (i < 0) return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, std::string("ball: no ball '") + (ball ? ball : "") + "'");
-    const double numbers[] = {speed, aim, side, height, elevation};
-    if (!finite(numbers, 5) || speed < 0)
-      return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, "speed, aim, side, height, elevation: finite, speed >= 0");
+    if (!ball) return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, "ball: NULL");
+    const int i = sim->sim->model().ball_index(ball);
+    if (i < 0) return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, std::string("ball: no ball '") + ball + "'");
+    if (!sim->sim->state().in_play[i])
+      return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, std::string("ball: '") + ball + "' is out of play");
+    if (std::string problem = strike_problem(speed, aim, side, height, elevation); !problem.empty())
+      return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, problem);
     CueStrike cue;
     cue.ball = ball, cue.speed = speed, cue.aim = aim, cue.side = side, cue.height = height, cue.elevation = elevation;
     const BallSpec& b = sim->sim->model().balls[i];
@@ -290,7 +341,9 @@ shotlab_status shotlab_strike(shotlab_sim* sim, const char* ball, double speed, 
     if (static_cast<size_t>(i) < state.rolling_on.size()) state.rolling_on[i] = -1;
     if (static_cast<size_t>(i) < state.sliding_on.size()) state.sliding_on[i] = -1;
     if (static_cast<size_t>(i) < state.still_for.size()) state.still_for[i] = 0;
+    const double now = sim->sim->time();
     rebuild(*sim, sim->sim->model(), std::move(state));
+    if (r.miscue) sim->pending.push_back({now, "miscue", {ball}});  // as a scene's cue reports it
     return SHOTLAB_OK;
   });
 }

@@ -30,14 +30,16 @@ typedef enum shotlab_status {
   SHOTLAB_ERROR_ARGUMENT = 2,  /* a NULL pointer, a non-finite or out-of-range number, an unknown name */
   SHOTLAB_ERROR_INPUT = 3,     /* a scene that cannot be read or is not valid */
   SHOTLAB_ERROR_BUFFER = 4,    /* a caller's buffer is too small: the count needed is written where asked */
-  SHOTLAB_ERROR_STOPPED = 5,   /* the simulation stopped (step limit, unstable, non-finite): see the message */
+  SHOTLAB_ERROR_STOPPED = 5,   /* the simulation stopped (step limit, unstable, non-finite): see the message; it
+                                * stays stopped (every advance says so again) until shotlab_reset */
   SHOTLAB_ERROR_INTERNAL = 6   /* anything else the engine reported; the handle stays usable for reading */
 } shotlab_status;
 
 typedef struct shotlab_sim shotlab_sim;
 
-/* An event since the last shotlab_events() call: kind (contact_begin, contact_end, rolling, sliding, pocketed, ...),
- * the bodies it names (a ball's id, a collider's name; body_b empty when it names one), and its time (s). */
+/* An event since the last shotlab_events() call: kind (contact_begin, contact_end, rolling, sliding, pocketed, miscue,
+ * ...), the bodies it names (a ball's id, a collider's name; body_b empty when it names one; a name is cut to its
+ * first 47 bytes), and its time (s). */
 typedef struct shotlab_event {
   double time;
   char kind[24];
@@ -48,8 +50,8 @@ typedef struct shotlab_event {
 /* SHOTLAB_API_VERSION of the library that is loaded. */
 SHOTLAB_API int shotlab_api_version(void);
 
-/* The message of the last failed call on `sim`, or of the last failed shotlab_create_* on this thread when sim is
- * NULL. Valid until the next call on the same handle (or thread); never NULL. */
+/* The message of the last failed call on `sim`; when sim is NULL, of this thread's last failed shotlab_create_* or
+ * call on a NULL or destroyed handle. Valid until the next call on the same handle (or thread); never NULL. */
 SHOTLAB_API const char* shotlab_last_error(const shotlab_sim* sim);
 
 /* Create a simulation from a scene file, a scene as JSON text (docs/scene-format.md), or arrays of n balls: position,
@@ -72,11 +74,15 @@ SHOTLAB_API shotlab_status shotlab_advance(shotlab_sim* sim, double dt);
  * where calls stop. The step limit (integrator.max_steps_per_call) counts from this call, or with go_on nonzero on
  * from the last, for a caller finishing a stretch it was stopped short in. */
 SHOTLAB_API shotlab_status shotlab_advance_within(shotlab_sim* sim, double dt, double wall_seconds, int go_on);
-/* Back to the scene's start (as created), materials and strikes set since then kept. */
+/* Back to the scene's start (as created, its own cue struck again), with the materials set since then; strikes
+ * made since are not repeated (they act on the state of their moment). */
 SHOTLAB_API shotlab_status shotlab_reset(shotlab_sim* sim);
 
 SHOTLAB_API shotlab_status shotlab_time(const shotlab_sim* sim, double* seconds);
 SHOTLAB_API shotlab_status shotlab_ball_count(const shotlab_sim* sim, int* count);
+/* The id of ball `index` (0 to count - 1, the order of shotlab_balls), as events and shotlab_strike name it, into
+ * `id` (capacity bytes, with its terminating NUL; SHOTLAB_ERROR_BUFFER when it does not fit). API version 2. */
+SHOTLAB_API shotlab_status shotlab_ball_id(const shotlab_sim* sim, int index, char* id, int capacity);
 /* Every ball's state into caller buffers of `capacity` balls (3 numbers each; any may be NULL); in_play (may be
  * NULL) gets 1 or 0 per ball. SHOTLAB_ERROR_BUFFER when capacity is below the ball count. */
 SHOTLAB_API shotlab_status shotlab_balls(const shotlab_sim* sim, double* position, double* velocity, double* spin,
@@ -89,8 +95,10 @@ SHOTLAB_API shotlab_status shotlab_events(shotlab_sim* sim, shotlab_event* event
  * scene's own) as the scene file names it: stiffness, damping, exponent, friction, rolling_resistance, spin_friction,
  * restitution, ... The simulation goes on from its current state with the new model. */
 SHOTLAB_API shotlab_status shotlab_set_material(shotlab_sim* sim, const char* pair, const char* field, double value);
-/* Strikes the ball `ball` (its id) with the cue: speed (m/s of the cue), aim (rad, 0 = +x, pi/2 = -z), tip offsets
- * side and height (ball radii), elevation (rad); the rigid-cue model with squirt (docs/model.md#cue). */
+/* Strikes the ball `ball` (its id, in play) with the cue: speed (0 to 30 m/s of the cue), aim (rad, 0 = +x, pi/2 =
+ * -z), tip offsets side and height (ball radii, inside the ball), elevation (0 to pi/2 rad); the rigid-cue model with
+ * squirt (docs/model.md#cue), as a scene's cue. A tip offset beyond the cue's miscue limit (half a radius) is struck
+ * as if the tip held, and a miscue event says so. */
 SHOTLAB_API shotlab_status shotlab_strike(shotlab_sim* sim, const char* ball, double speed, double aim, double side,
                                           double height, double elevation);
 

@@ -24,11 +24,12 @@ std::string describe(const nlohmann::json& v) {
 
 namespace {
 
-// Whether two field names are at most two single-letter edits apart (insert, delete, replace, swap neighbours;
-// ignoring case): a misspelling worth pointing out.
-bool near_miss(const std::string& a, const std::string& b) {
-  constexpr size_t kEdits = 2;
-  if (a == b || (a.size() > b.size() ? a.size() - b.size() : b.size() - a.size()) > kEdits) return false;
+constexpr size_t kEdits = 2;  // a name at most this many single-letter edits off is worth pointing out
+
+// How many single-letter edits (insert, delete, replace, swap neighbours; ignoring case) make a into b, or more than
+// kEdits when that is more than kEdits.
+size_t edits(const std::string& a, const std::string& b) {
+  if ((a.size() > b.size() ? a.size() - b.size() : b.size() - a.size()) > kEdits) return kEdits + 1;
   auto same = [](char x, char y) {
     return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
   };
@@ -41,7 +42,17 @@ bool near_miss(const std::string& a, const std::string& b) {
       if (i > 1 && j > 1 && same(a[i - 1], b[j - 2]) && same(a[i - 2], b[j - 1]))
         d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
-  return d[a.size()][b.size()] <= kEdits;
+  return d[a.size()][b.size()];
+}
+
+// The hint for a misspelt name: the nearest of `names` (the first of equals) within kEdits, said by `say`.
+template <class Names, class Say>
+std::string nearest(const std::string& name, const Names& names, Say&& say) {
+  size_t best = kEdits + 1;
+  std::string hint;
+  for (const std::string& known : names)
+    if (const size_t e = known == name ? best : edits(name, known); e < best) best = e, hint = say(known);
+  return hint;
 }
 
 }  // namespace
@@ -53,9 +64,8 @@ void JsonNode::finish() const {
   if (!j_->is_object()) return;
   for (const auto& item : j_->items())
     if (!used_->count(item.key())) {
-      std::string hint;
-      for (const std::string& known : *used_)
-        if (hint.empty() && near_miss(item.key(), known)) hint = " (did you mean '" + known + "'?)";
+      const std::string hint =
+          nearest(item.key(), *used_, [](const std::string& k) { return " (did you mean '" + k + "'?)"; });
       JsonNode(item.value(), source_, child_path(item.key())).fail("unknown field" + hint);
     }
 }
@@ -73,10 +83,11 @@ JsonNode JsonNode::operator[](const std::string& key) const {
   used_->insert(key);
   const auto it = j_->find(key);
   if (it == j_->end()) {
-    std::string hint;
+    std::vector<std::string> unused;
     for (const auto& item : j_->items())
-      if (hint.empty() && !used_->count(item.key()) && near_miss(item.key(), key))
-        hint = " (is '" + item.key() + "' a misspelling of it?)";
+      if (!used_->count(item.key())) unused.push_back(item.key());
+    const std::string hint =
+        nearest(key, unused, [](const std::string& k) { return " (is '" + k + "' a misspelling of it?)"; });
     JsonNode(*j_, source_, child_path(key)).fail("missing required field" + hint);
   }
   return JsonNode(*it, source_, child_path(key));

@@ -163,7 +163,7 @@ void read_cue(const JsonNode& n, CueStrike& c) {
   n.optional("aim_deg", [&](const JsonNode& v) { c.aim = v.angle_degrees(); });
   n.optional("elevation_deg", [&](const JsonNode& v) {
     c.elevation = v.angle_degrees();
-    if (c.elevation < 0 || c.elevation > M_PI / 2) v.fail("must be between 0 and 90 degrees");
+    if (c.elevation < 0 || c.elevation > kMaxElevation) v.fail("must be between 0 and 90 degrees");
   });
   n.optional("side", c.side, &JsonNode::number);
   n.optional("height", c.height, &JsonNode::number);

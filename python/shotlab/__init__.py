@@ -28,6 +28,13 @@ def _is_text(name):
     return name in _TEXT or name.endswith(".motion")
 
 
+def _strings(name, values):
+    """A list of PATH=VALUE(S) strings; a lone string is a TypeError (its characters would be read one by one)."""
+    if isinstance(values, (str, bytes)):
+        raise TypeError(f"{name}: a list of PATH=VALUES strings, got a lone string (put it in a list: [{values!r}])")
+    return list(values)
+
+
 def rows(header, lines):
     """The sweep's CSV lines as dicts keyed by the header's columns (numbers as int or float; names and messages as
     text)."""
@@ -46,5 +53,6 @@ def sweep(scene, vary, samples=0, seed=1, overrides=(), duration=None, timeout=6
     """Runs `scene` (path, JSON text or dict) over `vary` (PATH=VALUES strings as `shotlab sweep --vary` takes them)
     on `jobs` threads (0: one per core) and returns one dict per run, in run order (docs/sweep.md lists the columns).
     samples=0 runs the full grid; samples=N draws N runs at random with `seed`."""
-    s = Sweep(scene, list(vary), samples, seed, list(overrides), duration, timeout, max_events)
+    s = Sweep(scene, _strings("vary", vary), samples, seed, _strings("overrides", overrides), duration, timeout,
+              max_events)
     return rows(s.header, s.lines(jobs=jobs))

@@ -11,7 +11,7 @@ import argparse
 import math
 import sys
 
-from . import Sweep, rows, write_csv
+from . import Sweep, _strings, rows, write_csv
 
 
 def _chunk(sweep, begin, end):
@@ -38,7 +38,8 @@ def sweep_lines(client, sweep, chunk_size=None):
 def sweep(client, scene, vary, samples=0, seed=1, overrides=(), duration=None, timeout=60.0, max_events=100000,
           chunk_size=None):
     """shotlab.sweep() on the cluster of `client` (a dask.distributed.Client): the same rows, as dicts."""
-    s = Sweep(scene, list(vary), samples, seed, list(overrides), duration, timeout, max_events)
+    s = Sweep(scene, _strings("vary", vary), samples, seed, _strings("overrides", overrides), duration, timeout,
+              max_events)
     return rows(s.header, sweep_lines(client, s, chunk_size))
 
 

@@ -91,6 +91,29 @@ def test_errors_are_exceptions_that_name_the_field():
         shotlab.run("/nonexistent/scene.json")
 
 
+def test_a_dict_may_hold_numpy_values_and_its_bad_numbers_are_named():
+    """A user trial's dict with a NaN was reported as malformed JSON, and one with a numpy array was refused."""
+    scene = dict(STUN, balls=[{"id": "cue", "position": np.array([0, R, 0]), "velocity": [np.float64(2), 0, 0]}])
+    moving = shotlab.Simulation(scene)
+    moving.advance(0.1)
+    assert moving.velocities[0, 0] == pytest.approx(2 - 0.2 * 9.81 * 0.1, rel=1e-3)  # sliding: a = mu g
+    for bad in (float("nan"), np.inf):
+        with pytest.raises(shotlab.InputError, match=r"balls\[0\]\.velocity\[1\]: must be a finite number"):
+            shotlab.Simulation(dict(STUN, balls=[{"id": "cue", "position": [0, R, 0], "velocity": [2, bad, 0]}]))
+    with pytest.raises(TypeError, match=r"balls\[0\]\.id: a set is not a scene value"):
+        shotlab.Simulation(dict(STUN, balls=[{"id": {"cue"}, "position": [0, R, 0]}]))
+
+
+def test_the_scenes_miscue_is_an_event_and_misspellings_get_the_nearest_name():
+    cut = os.path.join(SOURCE, "presets", "cut.json")
+    sim = shotlab.Simulation(cut, ["cue.side=0.6"])
+    assert sim.events[0] == {"time": 0.0, "kind": "miscue", "bodies": ["cue"]}
+    with pytest.raises(shotlab.InputError, match="cue.sped: unknown field \\(did you mean 'speed'\\?\\)"):
+        shotlab.Simulation(cut, ["cue.sped=3"])
+    with pytest.raises(TypeError, match="vary: a list of PATH=VALUES strings, got a lone string"):
+        shotlab.sweep(cut, "cue.speed=1:3:3")
+
+
 def test_a_scene_is_a_path_text_or_a_dict_and_nothing_else():
     import pathlib
     cut = os.path.join(SOURCE, "presets", "cut.json")

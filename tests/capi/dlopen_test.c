@@ -32,6 +32,7 @@ typedef shotlab_status (*material_fn)(shotlab_sim*, const char*, const char*, do
 typedef shotlab_status (*from_balls_fn)(int, const double*, const double*, const double*, const double*, const double*,
                                         const char*, shotlab_sim**);
 typedef shotlab_status (*strike_fn)(shotlab_sim*, const char*, double, double, double, double, double);
+typedef shotlab_status (*id_fn)(const shotlab_sim*, int, char*, int);
 
 /* R1's ball on an endless cloth: friction 0.2, no rolling resistance or spin friction while it slides, friction
  * smoothing 1e4 s/m (its effect on the switch time is 15 us, 0.005 % of it). */
@@ -41,6 +42,14 @@ static const char* kStun =
     " \"model\": {\"friction_sharpness\": 1e4},"
     " \"integrator\": {\"method\": \"dopri5\", \"abs_tol\": 1e-10, \"rel_tol\": 1e-10, \"max_steps_per_call\": 1000000},"
     " \"balls\": [{\"id\": \"cue\", \"position\": [0, 0.028575, 0], \"velocity\": [2, 0, 0]}]}";
+
+/* presets/cut.json (it pockets ball "1" at 0.69 s), and with its tip 0.6 radii right of centre. */
+#define CUT_SCENE(more)                                                                                               \
+  "{\"table\": {\"type\": \"pool\"}, \"balls\": [{\"id\": \"cue\", \"position\": [0.6801793249039285, 0.028575,"      \
+  " -0.30837406568934533]}, {\"id\": \"1\", \"position\": [0.85, 0.028575, 0.215]}],"                                 \
+  " \"cue\": {\"ball\": \"cue\", \"speed\": 2.0, \"aim_deg\": -75.00000000000001" more "}}"
+static const char* kCut = CUT_SCENE("");
+static const char* kCutMiscue = CUT_SCENE(", \"side\": 0.6");
 
 int main(int argc, char** argv) {
   if (argc < 2) return fprintf(stderr, "usage: dlopen_test LIBRARY\n"), 2;
@@ -59,8 +68,9 @@ int main(int argc, char** argv) {
   material_fn material = (material_fn)dlsym(lib, "shotlab_set_material");
   from_balls_fn from_balls = (from_balls_fn)dlsym(lib, "shotlab_create_from_balls");
   strike_fn strike = (strike_fn)dlsym(lib, "shotlab_strike");
+  id_fn ball_id = (id_fn)dlsym(lib, "shotlab_ball_id");
   if (!version || !last_error || !create || !destroy || !advance || !within || !now || !reset || !balls || !events ||
-      !material || !from_balls || !strike)
+      !material || !from_balls || !strike || !ball_id)
     return fprintf(stderr, "a function is missing from the library\n"), 1;
   CHECK(version() == SHOTLAB_API_VERSION, "the library's API version is the header's");
   CHECK(dlsym(lib, "_ZN7shotlab10SimulationC1ENS_5ModelENS_5StateE") == NULL, "the engine's C++ symbols are hidden");
@@ -117,26 +127,78 @@ int main(int argc, char** argv) {
   CHECK(strike(table, "b0", 2, 0, 0.9, 0.9, 0) == SHOTLAB_ERROR_ARGUMENT, "a tip offset outside the ball");
   const double nan_position[3] = {0, NAN, 0};
   shotlab_sim* none = NULL;
-  CHECK(from_balls(1, nan_position, NULL, NULL, radius, mass, "pool", &none) == SHOTLAB_ERROR_ARGUMENT && none == NULL,
-        "a non-finite position");
+  CHECK(from_balls(1, nan_position, NULL, NULL, radius, mass, "pool", &none) == SHOTLAB_ERROR_ARGUMENT &&
+            none == NULL && strstr(last_error(NULL), "position[1]"),
+        "a non-finite position, named");
+  CHECK(from_balls(1, pos, NULL, NULL, radius, NULL, "pool", &none) == SHOTLAB_ERROR_ARGUMENT &&
+            strstr(last_error(NULL), "mass: NULL"),
+        "a NULL mass array, named");
   CHECK(from_balls(1, pos, NULL, NULL, radius, mass, "billiards", &none) == SHOTLAB_ERROR_INPUT &&
             strstr(last_error(NULL), "table"),
         "an unknown table type, named");
   destroy(table);
 
+  /* presets/cut.json, its tip offset beyond the miscue limit: the miscue is the first event, again after a reset; the
+   * object ball "1" is pocketed by 1 s and can be struck no more; ids by index. */
+  shotlab_sim* cut = NULL;
+  CHECK(create(kCutMiscue, &cut) == SHOTLAB_OK, "the miscued cut is created");
+  for (int round = 0; round < 2; ++round) {
+    CHECK(events(cut, ev, 64, &count) == SHOTLAB_OK && count >= 1 && strcmp(ev[0].kind, "miscue") == 0 &&
+              strcmp(ev[0].body_a, "cue") == 0 && ev[0].time == 0,
+          "the scene's miscue is its first event");
+    CHECK(reset(cut) == SHOTLAB_OK, "reset the cut");
+  }
+  destroy(cut);
+  CHECK(create(kCut, &cut) == SHOTLAB_OK, "the cut is created");
+  CHECK(events(cut, ev, 64, &count) == SHOTLAB_OK && count == 0, "no miscue there");
+  CHECK(advance(cut, 1.0) == SHOTLAB_OK && balls(cut, NULL, NULL, NULL, in_play, 0) == SHOTLAB_ERROR_BUFFER,
+        "a zero capacity is too small");
+  int cut_in_play[2] = {1, 1};
+  CHECK(balls(cut, NULL, NULL, NULL, cut_in_play, 2) == SHOTLAB_OK && cut_in_play[0] == 1 && cut_in_play[1] == 0,
+        "the object ball is pocketed");
+  CHECK(strike(cut, "1", 1.0, 0, 0, 0, 0) == SHOTLAB_ERROR_ARGUMENT && strstr(last_error(cut), "out of play"),
+        "a pocketed ball cannot be struck");
+  CHECK(events(cut, ev, 64, &count) == SHOTLAB_OK, "events taken");
+  CHECK(strike(cut, "cue", 1.0, 0, 0.6, 0, 0) == SHOTLAB_OK && events(cut, ev, 64, &count) == SHOTLAB_OK &&
+            count == 1 && strcmp(ev[0].kind, "miscue") == 0 && fabs(ev[0].time - 1.0) < 1e-12,
+        "a strike beyond the miscue limit reports a miscue at its moment");
+  char id[4];
+  CHECK(ball_id(cut, 0, id, 4) == SHOTLAB_OK && strcmp(id, "cue") == 0, "ball 0 is the cue ball");
+  CHECK(ball_id(cut, 1, id, 4) == SHOTLAB_OK && strcmp(id, "1") == 0, "ball 1 is '1'");
+  CHECK(ball_id(cut, 0, id, 3) == SHOTLAB_ERROR_BUFFER && strstr(last_error(cut), "needs 4"),
+        "an id that does not fit");
+  CHECK(ball_id(cut, 2, id, 4) == SHOTLAB_ERROR_ARGUMENT && strstr(last_error(cut), "index"), "no ball 2");
+  CHECK(strike(cut, "cue", 40, 0, 0, 0, 0) == SHOTLAB_ERROR_ARGUMENT && strstr(last_error(cut), "speed"),
+        "a cue speed over 30 m/s, named");
+  CHECK(strike(cut, "cue", 2, 0, 0, 0, 2.0) == SHOTLAB_ERROR_ARGUMENT && strstr(last_error(cut), "elevation"),
+        "an elevation past a vertical cue, named");
+  CHECK(strike(cut, NULL, 2, 0, 0, 0, 0) == SHOTLAB_ERROR_ARGUMENT && strstr(last_error(cut), "ball: NULL"),
+        "a NULL ball, named");
+  CHECK(material(cut, "ball_cloth", "friction", -1) == SHOTLAB_ERROR_INPUT &&
+            strstr(last_error(cut), "materials.ball_cloth.friction") &&
+            strstr(strstr(last_error(cut), "materials.ball_cloth.friction") + 1, "materials.ball_cloth") == NULL,
+        "a refused value names its field once");
+  destroy(cut);
+
   /* Errors: codes, never an abort. */
-  CHECK(advance(NULL, 0.1) == SHOTLAB_ERROR_HANDLE, "NULL handle");
+  CHECK(advance(NULL, 0.1) == SHOTLAB_ERROR_HANDLE && strstr(last_error(NULL), "sim: NULL"),
+        "NULL handle, said where a NULL handle's message is read");
   CHECK(advance(sim, NAN) == SHOTLAB_ERROR_ARGUMENT && strstr(last_error(sim), "dt"), "non-finite dt named");
   CHECK(advance(sim, -1) == SHOTLAB_ERROR_ARGUMENT, "negative dt");
   CHECK(balls(sim, p, v, NULL, NULL, 0) == SHOTLAB_ERROR_BUFFER, "buffer too small");
-  CHECK(material(sim, "ball_cloth", "frction", 0.3) == SHOTLAB_ERROR_INPUT && strstr(last_error(sim), "frction"),
-        "an unknown field is named");
+  CHECK(balls(sim, p, v, NULL, NULL, -1) == SHOTLAB_ERROR_ARGUMENT &&
+            events(sim, ev, -1, &count) == SHOTLAB_ERROR_ARGUMENT,
+        "a negative capacity");
+  CHECK(material(sim, "ball_cloth", "frction", 0.3) == SHOTLAB_ERROR_ARGUMENT && strstr(last_error(sim), "frction") &&
+            strstr(last_error(sim), "friction"),
+        "an unknown field is named, with the fields there are");
   CHECK(material(sim, "ball_cloth", "friction", -1) == SHOTLAB_ERROR_INPUT && strstr(last_error(sim), "friction"),
         "a negative friction is refused");
   CHECK(material(sim, "ball_cloth", "friction", 0.3) == SHOTLAB_OK, "a material is set");
   CHECK(material(sim, "nothing", "friction", 0.3) == SHOTLAB_ERROR_ARGUMENT, "an unknown pair");
   destroy(sim);
-  CHECK(advance(sim, 0.1) == SHOTLAB_ERROR_HANDLE, "a destroyed handle");
+  CHECK(advance(sim, 0.1) == SHOTLAB_ERROR_HANDLE && strstr(last_error(NULL), "not a valid handle"),
+        "a destroyed handle");
   CHECK(strstr(last_error(sim), "not valid") != NULL, "its message");
   destroy(sim); /* twice: ignored */
   shotlab_sim* bad = NULL;

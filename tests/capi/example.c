@@ -1,5 +1,5 @@
-/* A program a user writes against libshotlab: load a scene file, shoot its cue ball again a little harder, run it
- * to rest and print where every ball ended and what was pocketed. Built after `cmake --install` with
+/* A program a user writes against libshotlab: load a scene file, run it for up to 20 s and print what was pocketed
+ * and where every ball ended, by its id. Built after `cmake --install` with
  *     cc example.c $(pkg-config --cflags --libs shotlab)
  * usage: example SCENE.json */
 #include <stdio.h>
@@ -28,9 +28,12 @@ int main(int argc, char** argv) {
   }
   double position[3 * 64];
   int in_play[64];
+  char id[64];
   if (n <= 64 && check(shotlab_balls(sim, position, NULL, NULL, in_play, 64), sim, "balls"))
     for (int i = 0; i < n; ++i)
-      printf("ball %d: %s at (%.3f, %.3f)\n", i, in_play[i] ? "on the table" : "off", position[3 * i], position[3 * i + 2]);
+      if (check(shotlab_ball_id(sim, i, id, sizeof id), sim, "ball id"))
+        printf("ball %s: %s at (%.3f, %.3f)\n", id, in_play[i] ? "on the table" : "off", position[3 * i],
+               position[3 * i + 2]);
   printf("%d pocketed, API version %d\n", pocketed, shotlab_api_version());
   shotlab_destroy(sim);
   return 0;

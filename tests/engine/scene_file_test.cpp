@@ -87,6 +87,9 @@ TEST(SceneFile, BadInputNamesFileFieldAndProblem) {
        "missing required field (is 'positon' a misspelling of it?)"},
       {"misspelt_optional.json", R"({"balls": [{"id": "a", "position": [0, 1, 0], "Mass": 0.2}]})", "balls[0].Mass",
        "unknown field (did you mean 'mass'?)"},
+      // The nearest name, not the first of those near: 'sped' is one edit from 'speed' and two from 'side'.
+      {"misspelt_nearest.json", R"({"balls": [)" + kBall + R"(], "cue": {"ball": "a", "speed": 2, "sped": 3}})",
+       "cue.sped", "unknown field (did you mean 'speed'?)"},
       {"rod.json", R"({"balls": [)" + kBall + R"(], "rods": [{"ball": "zz", "anchor": [0, 1, 0]}]})", "rods[0].ball",
        "no ball with id 'zz'"},
       {"wall_up.json", R"({"colliders": [)" + arc_wall(R"("toward": [0, 1, 0])") + "]}", "colliders[0].toward",

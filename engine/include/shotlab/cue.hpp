@@ -19,6 +19,8 @@
 
 namespace shotlab {
 
+inline constexpr double kMaxElevation = 1.5707963267948966;  // rad: a vertical cue (a cue's elevation is 0 to this)
+
 struct CueStrike {
   std::string ball;               // id of the struck ball
   double speed = 2.0;             // V0, m/s
