@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,7 @@ ImVec2 v2(const glm::dvec2& p) { return {static_cast<float>(p.x), static_cast<fl
 // backing so that it reads over trails and cloth.
 class Labels {
   static constexpr float kHiddenShare = 0.35f;  // of a label's area covered at its best spot: it is left out
+  static constexpr int kSpots = 8;               // where a label may go, around its anchor
 
  public:
   explicit Labels(const ImRect& view) : view_(view) {}
@@ -54,7 +56,7 @@ class Labels {
     for (const Item& it : items_) {
       const ImVec2 size = ImGui::CalcTextSize(it.text.c_str());
       const float gap = em(5), x = it.anchor.x, y = it.anchor.y;
-      const ImVec2 spots[] = {it.wanted,
+      const ImVec2 spots[kSpots] = {it.wanted,
                               {x + gap, y - size.y / 2},           // right
                               {x - size.x - gap, y - size.y / 2},  // left
                               {x - size.x / 2, y + gap},           // below
@@ -64,11 +66,13 @@ class Labels {
                               {it.wanted.x, it.wanted.y + 2 * (size.y + 2)}};
       ImRect best;
       float least = INFINITY;
-      for (const ImVec2& s : spots) {
-        const ImRect r(s.x - 3, s.y - 1, s.x + size.x + 3, s.y + size.y + 1);
+      int& last = last_spot()[it.text];  // a free spot it took last frame is tried first: labels do not flit about
+      for (int k = 0; k < kSpots; ++k) {
+        const int n = k == 0 ? last : k <= last ? k - 1 : k;
+        const ImRect r(spots[n].x - 3, spots[n].y - 1, spots[n].x + size.x + 3, spots[n].y + size.y + 1);
         float covered = r.GetWidth() * r.GetHeight() - overlap(r, view_);  // off the view counts as covered
         for (const ImRect& t : taken) covered += overlap(r, t);
-        if (covered < least) least = covered, best = r;
+        if (covered < least) least = covered, best = r, last = n;
         if (covered == 0) break;
       }
       // Mostly hidden wherever it goes (a rack seen from afar): left out rather than stacked unreadably on the
@@ -89,6 +93,11 @@ class Labels {
     std::string text;
     ImU32 colour;
   };
+  static std::map<std::string, int>& last_spot() {  // by label text, over frames (forces' texts change: bounded)
+    static std::map<std::string, int> spot;
+    if (spot.size() > 512) spot.clear();
+    return spot;
+  }
   static float overlap(const ImRect& a, const ImRect& b) {
     const float w = std::min(a.Max.x, b.Max.x) - std::max(a.Min.x, b.Min.x);
     const float h = std::min(a.Max.y, b.Max.y) - std::max(a.Min.y, b.Min.y);
@@ -266,11 +275,12 @@ void labels_and_centre(ImDrawList* d, const Viewport& vp, const Lab& lab, Labels
   const ViewFlags& v = lab.settings.view;
   Vec3 sum{0.0};
   double mass = 0;
+  int count = 0;
   for (int i = 0; i < f.state.ball_count() && i < static_cast<int>(lab.scene.balls.size()); ++i) {
     if (!f.state.in_play[i]) continue;
     const Vec3 p = position(f.state.x, i);
     const BallSpec& b = lab.scene.balls[i].spec;
-    sum += b.mass * p, mass += b.mass;
+    sum += b.mass * p, mass += b.mass, ++count;
     if (!v.labels) continue;
     if (const auto s = vp.project(p + Vec3{0, b.radius * 1.3, 0})) {
       const ImVec2 size = ImGui::CalcTextSize(b.id.c_str());
@@ -278,7 +288,7 @@ void labels_and_centre(ImDrawList* d, const Viewport& vp, const Lab& lab, Labels
                  b.id, IM_COL32(255, 255, 255, 255));
     }
   }
-  if (!v.centre_of_mass || mass <= 0) return;
+  if (!v.centre_of_mass || mass <= 0 || count < 2) return;  // one ball's centre of mass is the ball
   if (const auto s = vp.project(sum / mass)) {  // a cross in a circle, as in the textbooks
     const float r = em(7);
     d->AddCircle(v2(*s), r, IM_COL32(255, 255, 255, 255), 24, 2.0f);

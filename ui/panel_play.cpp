@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <string>
 
 #include "shotlab/cue.hpp"
 #include "ui/aim.hpp"
@@ -359,21 +360,27 @@ float message_banner(Lab& lab, const Rect& view) {
 }
 
 void status_line(const Lab& lab, const Rect& view, double frame_seconds, bool slept) {
-  char text[200];
+  char part[3][80] = {};
   const double physics = lab.shot && lab.playing ? lab.shot->last_wall() * 1e3 : 0.0;
   const auto prediction = lab.prediction_seconds();
   // At idle the window sleeps until input (or half a second): the frame's time is then the wait, not the drawing.
-  const int n = !slept
-                    ? std::snprintf(text, sizeof text, "frame %.1f ms (%.0f fps)   physics %.2f ms/frame",
-                                    frame_seconds * 1e3, frame_seconds > 0 ? 1 / frame_seconds : 0.0, physics)
-                    : std::snprintf(text, sizeof text, "idle: drawn on input");
-  if (prediction && n > 0 && n < static_cast<int>(sizeof text))
-    std::snprintf(text + n, sizeof text - n, "   prediction %.1f ms", *prediction * 1e3);
+  if (slept) std::snprintf(part[0], sizeof part[0], "idle: drawn on input");
+  else std::snprintf(part[0], sizeof part[0], "frame %.1f ms (%.0f fps)", frame_seconds * 1e3,
+                     frame_seconds > 0 ? 1 / frame_seconds : 0.0);
+  if (!slept) std::snprintf(part[1], sizeof part[1], "physics %.2f ms/frame", physics);
+  if (prediction) std::snprintf(part[2], sizeof part[2], "prediction %.1f ms", *prediction * 1e3);
+  // As many parts as the view has room for (a narrow view at a large UI scale keeps the first), never over a panel.
+  std::string text = part[0];
+  for (int k = 1; k < 3; ++k)
+    if (*part[k] && ImGui::CalcTextSize((text + "   " + part[k]).c_str()).x <= view.w - em(12))
+      text += std::string("   ") + part[k];
   ImDrawList* d = ImGui::GetBackgroundDrawList();
-  const ImVec2 size = ImGui::CalcTextSize(text);
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
   const ImVec2 at{std::max(view.x + view.w - size.x - em(8), view.x + em(4)), view.bottom() - size.y - em(6)};
+  d->PushClipRect({view.x, view.y}, {view.x + view.w, view.bottom()});
   d->AddRectFilled({at.x - 4, at.y - 2}, {at.x + size.x + 4, at.y + size.y + 2}, IM_COL32(0, 0, 0, 140));
-  d->AddText(at, IM_COL32(220, 220, 220, 255), text);
+  d->AddText(at, IM_COL32(220, 220, 220, 255), text.c_str());
+  d->PopClipRect();
 }
 
 }  // namespace shotlab

@@ -37,7 +37,7 @@ void practice_section(Lab& lab) {
   ImGui::Separator();
   if (ImGui::Button("Keep this shot (K)")) lab.keep_shot();
   mark("Keep shot");
-  ImGui::SameLine();
+  same_line_if_fits("Clear kept");
   if (ImGui::Button("Clear kept")) lab.kept.clear();
   for (size_t k = 0; k < lab.kept.size(); ++k) {
     ImGui::PushID(static_cast<int>(k));

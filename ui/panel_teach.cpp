@@ -278,22 +278,27 @@ void momentum_diagram(const Lab& lab, const std::vector<std::pair<int, Vec3>>& m
 }
 
 // The balls that take part in the shot: moving at its start, or moved by the last frame worked out or, while it is
-// still worked out, in the predicted paths (which run ahead of a first playback). With at most 8 balls on the table
-// (a bar each) their bars stay from the start, at zero until they are hit, so that a class sees the momentum pass from
-// ball to ball; with more (a break) only the moving balls have bars, as the resting ones would crowd them out.
+// still worked out, in the predicted paths (which run ahead of a first playback); before a shot, the struck ball and
+// those its predicted paths move. With at most 8 balls on the table (a bar each) their bars stay from the start, at
+// zero until they are hit, so that a class sees the momentum pass from ball to ball; with more (a break) only the
+// moving balls have bars, as the resting ones would crowd them out.
 std::vector<bool> balls_in_shot(const Lab& lab, const Model& m) {
-  if (!lab.shot) return {};
-  const State& start = lab.shot->frames().front().state;
-  const State& last = lab.shot->frames().back().state;
-  if (std::count_if(start.in_play.begin(), start.in_play.end(), [](uint8_t p) { return p != 0; }) > 8) return {};
-  std::vector<bool> in(start.ball_count());
-  const auto predicted = lab.shot->finished() ? std::nullopt : lab.prediction();
-  for (int i = 0; i < start.ball_count(); ++i) {
-    in[i] = glm::length(ball_motion(m, start, i).momentum) > 1e-6 || last.in_play[i] != start.in_play[i] ||
-            glm::length(position(last.x, i) - position(start.x, i)) > 1e-6;
+  const State* start = lab.shot ? &lab.shot->frames().front().state : &lab.frame().state;
+  if (std::count_if(start->in_play.begin(), start->in_play.end(), [](uint8_t p) { return p != 0; }) > 8) return {};
+  std::vector<bool> in(start->ball_count());
+  const auto predicted = lab.shot && lab.shot->finished() ? std::nullopt : lab.prediction();
+  for (int i = 0; i < start->ball_count(); ++i) {
+    if (lab.shot) {
+      const State& last = lab.shot->frames().back().state;
+      in[i] = glm::length(ball_motion(m, *start, i).momentum) > 1e-6 || last.in_play[i] != start->in_play[i] ||
+              glm::length(position(last.x, i) - position(start->x, i)) > 1e-6;
+    } else {
+      in[i] = lab.scene.cue && i < static_cast<int>(lab.scene.balls.size()) &&
+              lab.scene.balls[i].spec.id == lab.scene.cue->ball;
+    }
     if (predicted && i < static_cast<int>(predicted->paths.size()))
       for (const PathPoint& q : predicted->paths[i])
-        in[i] = in[i] || glm::length(q.position - position(start.x, i)) > 1e-6;
+        in[i] = in[i] || glm::length(q.position - position(start->x, i)) > 1e-6;
   }
   return in;
 }

@@ -171,7 +171,7 @@ void changes_section(Lab& lab) {
   if (ImGui::Button("Reset to the scene's values")) lab.reset_physics();
   mark("Reset physics");
   ImGui::EndDisabled();
-  ImGui::SameLine();
+  same_line_if_fits("Pin as A");
   ImGui::BeginDisabled(!lab.shot);
   if (ImGui::Button("Pin as A")) lab.pin_compare();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))

@@ -14,6 +14,8 @@
 #include <imgui_internal.h>
 #include <utility>
 
+#include "ui/text_wrap.hpp"
+
 // Screen points as a Boost.Geometry line, for its Douglas-Peucker simplification (simplified_polyline).
 BOOST_GEOMETRY_REGISTER_POINT_2D(ImVec2, float, boost::geometry::cs::cartesian, x, y)
 BOOST_GEOMETRY_REGISTER_LINESTRING(std::vector<ImVec2>)
@@ -185,24 +187,13 @@ void wrap_lines(const char* text) {
   const std::string_view all(text);
   for (size_t start = 0; start <= all.size();) {  // each paragraph
     const size_t stop = std::min(all.find('\n', start), all.size());
-    const std::string_view paragraph = all.substr(start, stop - start);
-    size_t line = 0, end = 0;  // the line so far: paragraph[line, end)
-    for (size_t word = 0; word <= paragraph.size();) {
-      const size_t word_end = std::min(paragraph.find(' ', word), paragraph.size());
-      if (end > line && wide(paragraph.substr(line, word_end - line)) > width) {
-        emit(paragraph.substr(line, end - line));
-        line = paragraph.find_first_not_of(' ', end);  // the spaces at a break go
-        line = line == std::string_view::npos ? paragraph.size() : line;
-      }
-      end = word_end;
-      word = word_end + 1;
-    }
-    emit(paragraph.substr(line, end - line));
+    for (std::string_view line : wrap_paragraph(all.substr(start, stop - start), width, wide)) emit(line);
     start = stop + 1;
   }
   ImGui::EndGroup();
 }
 }  // namespace
+
 
 void text_wrapped(const char* fmt, ...) {
   char text[4096];

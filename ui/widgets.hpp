@@ -63,8 +63,9 @@ struct PanelWidths {
 // which also keys its drag.
 void panel_width_grip(const char* name, const Rect& strip, float outer_x, PanelWidths w, float scale, float standard);
 
-// Text wrapped at the panel's edge (or the wrap position pushed), printf-style. Lines break at spaces only: ImGui's
-// own wrapping (1.86) also breaks after a full stop, which splits a number such as "0.4" into "0." and "4".
+// Text wrapped at the panel's edge (or the wrap position pushed), printf-style. Lines break at spaces only, and not
+// between a number and its unit (ui/text_wrap.hpp): ImGui's own wrapping (1.86) also breaks after a full stop, which
+// splits a number such as "0.4" into "0." and "4".
 void text_wrapped(const char* fmt, ...) IM_FMTARGS(1);
 // text_wrapped in `colour`: a verdict or a warning stays whole in a narrow panel (ImGui's TextColored cuts it).
 void coloured_wrapped(const ImVec4& colour, const char* fmt, ...) IM_FMTARGS(2);

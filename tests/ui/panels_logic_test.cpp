@@ -15,6 +15,7 @@
 #include "ui/history.hpp"
 #include "ui/layout.hpp"
 #include "ui/plot_data.hpp"
+#include "ui/text_wrap.hpp"
 #include "ui/ticks.hpp"
 
 namespace shotlab {
@@ -250,6 +251,19 @@ TEST(FrameTimes, APauseKeepsTheRecordAndAnotherShotStartsANewOne) {
   EXPECT_EQ(s.frames, 1u);
   EXPECT_DOUBLE_EQ(s.worst_ms, 10.0);
   EXPECT_EQ(s.over_budget, 0u);
+}
+
+// Lines break at spaces, and a unit stays with its number: a teacher's trial saw "every ball at rest after 1.23" with
+// "s" alone on the next line. A character is 1 wide here.
+TEST(TextWrap, AUnitStaysWithItsNumber) {
+  auto wide = [](std::string_view s) { return static_cast<float>(s.size()); };
+  using Lines = std::vector<std::string_view>;
+  EXPECT_EQ(wrap_paragraph("every ball at rest after 1.23 s", 30, wide), (Lines{"every ball at rest after", "1.23 s"}));
+  EXPECT_EQ(wrap_paragraph("the angle is 86.0 deg.", 20, wide), (Lines{"the angle is", "86.0 deg."}));
+  EXPECT_EQ(wrap_paragraph("a speed of 2 s and more", 13, wide), (Lines{"a speed of", "2 s and more"}));
+  EXPECT_EQ(wrap_paragraph("pots 3 sides", 7, wide), (Lines{"pots 3", "sides"}));  // a word, not a unit
+  EXPECT_EQ(wrap_paragraph("1.23 s", 3, wide), (Lines{"1.23", "s"}));  // no room for the pair on any line
+  EXPECT_EQ(wrap_paragraph("", 10, wide), (Lines{""}));
 }
 
 }  // namespace
