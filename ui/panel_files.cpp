@@ -6,6 +6,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <sstream>
 
@@ -25,7 +26,7 @@ struct PresetEntry {
   std::string path, name, description;
 };
 
-// The presets folder, read once: each preset's name and its "what to look for" text.
+// The presets folder, read once: each preset's name and its "what to look for" text, by name.
 const std::vector<PresetEntry>& presets(const std::string& data_root) {
   static const std::vector<PresetEntry> list = [&] {
     std::vector<PresetEntry> out;
@@ -44,6 +45,13 @@ const std::vector<PresetEntry>& presets(const std::string& data_root) {
       }
       out.push_back(p);
     }
+    // In the order of the names shown (a file's name may differ: cradle.json is "Newton's cradle").
+    auto lower = [](std::string t) {
+      for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      return t;
+    };
+    std::stable_sort(out.begin(), out.end(),
+                     [&](const PresetEntry& a, const PresetEntry& b) { return lower(a.name) < lower(b.name); });
     return out;
   }();
   return list;

@@ -265,6 +265,26 @@ void momentum_diagram(const Lab& lab, const std::vector<std::pair<int, Vec3>>& m
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Each ball's momentum (its colour), head to tail: they add up to the total (cyan).\nDashed: the "
                       "total at the start. Collisions keep it; friction with the cloth and cushions changes it.");
+  // The key: a swatch of each arrow's colour (outlined, as a black ball's would not show) and whose it is.
+  bool first = true;
+  auto key = [&](ImU32 colour, const std::string& label) {
+    const float side = ImGui::GetTextLineHeight() * 0.7f;
+    if (!first) same_line_if_fits((std::string("MM") + label).c_str());
+    first = false;
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    const float y = p.y + (ImGui::GetTextLineHeight() - side) / 2;
+    d->AddRectFilled({p.x, y}, {p.x + side, y + side}, colour);
+    d->AddRect({p.x, y}, {p.x + side, y + side}, IM_COL32(160, 160, 160, 255));
+    ImGui::Dummy({side, ImGui::GetTextLineHeight()});
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::TextUnformatted(label.c_str());
+  };
+  for (const auto& [i, p] : momenta) {
+    const glm::vec3 c = ball_look(lab.scene.balls[i].spec.id).color;
+    key(ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, 1)), lab.scene.balls[i].spec.id);
+  }
+  key(kTotalColour, "total");
+  key(IM_COL32(160, 160, 160, 255), "total at the start (dashed)");
   if (momenta.size() != 2) return;
   const Vec3 a = momenta[0].second, b = momenta[1].second;
   const double angle = std::acos(std::clamp(glm::dot(a, b) / (glm::length(a) * glm::length(b)), -1.0, 1.0));
