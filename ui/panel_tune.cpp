@@ -152,6 +152,11 @@ void probe_readout(Lab& lab, const Tuning& t, int k) {
   spec.seekable = false;  // its own collision, not the shot's: no time of the shot to go to
   lab_plot(lab, (std::string("probe_") + *kPairs[k]).c_str(), spec,
            {{"normal force", IM_COL32(255, 110, 90, 255), p.time, p.force}}, em(110));
+  // A class asks why the force does not start at zero: the linear law's damping term is C_d times the closing speed.
+  if (!p.force.empty() && p.force.front() > 0.05 * p.peak_force &&
+      lab.scene.model.material(*kPairs[k]).damping_law == DampingLaw::Linear)
+    hint("It starts at C_d v, not 0: the linear damping law (the thesis's) pushes back from the first touch "
+         "(docs/model.md#damping).");
 }
 
 // In a box of fixed height, and the A line always there: a change never moves the sliders below, where the next

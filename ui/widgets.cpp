@@ -125,7 +125,9 @@ bool begin_side_panel(const char* name, const Rect& where, bool want_open, bool 
   // No background of its own: the window is cleared to it (panel_background), which costs a software renderer far
   // less than a blended rectangle over a third of the window.
   ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0, 0, 0, 0));
-  const bool open = ImGui::Begin(name, nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+  // The scrollbar always there: one that came and went as sections opened moved everything under the pointer.
+  const bool open = ImGui::Begin(name, nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                                    ImGuiWindowFlags_AlwaysVerticalScrollbar);
   ImGui::PopStyleColor();
   return open;
 }
