@@ -22,6 +22,14 @@ int cue_index(const Scene& s) {
     if (s.balls[i].spec.id == s.cue->ball) return static_cast<int>(i);
   return -1;
 }
+
+// rad: how far the cue ball's heading turns off the cue's line (squirt of side spin, + to the left); 0 for a tip
+// offset outside the ball, which strike() refuses and the cue panel does not let through.
+double squirt_of(const Scene& s, int cue) {
+  const CueStrike& q = *s.cue;
+  if (q.side * q.side + q.height * q.height >= 1) return 0;
+  return strike(q, s.balls[cue].spec.mass, s.balls[cue].spec.radius).squirt;
+}
 }  // namespace
 
 double heading(const Vec3& a, const Vec3& b) { return std::atan2(-(b.z - a.z), b.x - a.x); }
@@ -32,7 +40,8 @@ std::optional<AimLine> aim_line(const Scene& scene) {
   AimLine out;
   out.from = scene.balls[c].position;
   const double r = scene.balls[c].spec.radius;
-  const Vec3 dir = aim_direction(scene.cue->aim);
+  // Along the heading the ball leaves on: the cue's, turned by the squirt of side spin.
+  const Vec3 dir = aim_direction(scene.cue->aim + squirt_of(scene, c));
   double best = kNoHitLength;
   for (int j = 0; j < static_cast<int>(scene.balls.size()); ++j) {
     if (j == c) continue;
@@ -115,12 +124,31 @@ Tolerance aim_window(Scene scene, const std::string& object, const std::string& 
   return stroke_tolerance(scene, o, kAim, 0.005);
 }
 
+constexpr double kSearchStepDeg = 0.25, kSearchDeg = 4.0;  // a dropping aim is looked for this far off, in these steps
+
+// Whether the ghost-ball aim drops the ball or, with side spin or an elevated cue, the first aim that does, tried
+// outwards from it turned back by the squirt (the ball leaves off the cue's line by it, docs/model.md#cue),
+// alternately either side: swerve and throw move a spinning ball further. False when none within kSearchDeg does.
+bool find_drop(Scene& s, const std::string& id, PocketAim& a) {
+  const int cue = cue_index(s);
+  const bool spun = s.cue->side != 0 || s.cue->elevation > 0;
+  if (cue >= 0 && spun) a.aim -= squirt_of(s, cue);
+  const int steps = spun ? static_cast<int>(kSearchDeg / kSearchStepDeg) : 0;
+  for (int k = 0; k <= 2 * steps; ++k) {  // 0, +1, -1, +2, -2, ... steps
+    const double off = (k % 2 ? 1 : -1) * ((k + 1) / 2) * kSearchStepDeg * M_PI / 180;
+    s.cue->aim = a.aim + off;
+    if (drops_in(s, id, a.pocket)) return a.aim = s.cue->aim, true;
+  }
+  s.cue->aim = a.aim;
+  return false;
+}
+
 // One pocket's answer: whether the shot drops the ball there and, where it does, the aim moved to the middle of the
 // aims that drop it too (throw and the jaws put the ghost-ball aim off that middle). The middle is played once more
-// and taken only if it drops; a window open on a side (no miss within 4 deg) keeps the ghost-ball aim.
+// and taken only if it drops; a window open on a side (no miss within 4 deg) keeps the aim found.
 PocketAim checked(Scene s, const std::string& id, PocketAim a) {
   try {
-    a.drops = drops_in(s, id, a.pocket);
+    a.drops = find_drop(s, id, a);
     if (!a.drops) return a;
   } catch (const std::exception&) {
     a.drops = false;  // a scene the engine refuses drops nothing

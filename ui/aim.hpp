@@ -17,7 +17,8 @@ struct AimLine {
   Vec3 object_dir{0.0};  // unit, the hit ball's line of departure (the line of centres at contact)
   double cut_deg = 0;  // angle between the aim and the object ball's departure
 };
-// The aim line of the scene's cue strike (nullopt without one).
+// The aim line of the scene's cue strike (nullopt without one): along the heading the cue ball leaves on, the cue's
+// turned by the squirt of side spin (docs/model.md#cue).
 std::optional<AimLine> aim_line(const Scene& scene);
 
 // The heading (rad, CueStrike::aim) from a to b in the table plane.
