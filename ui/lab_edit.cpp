@@ -259,6 +259,9 @@ void Lab::place_cue_ball(const Vec3& at, bool drop) {
   if (!in_hand || !scene.cue || !scene.table) return;
   const int c = scene_ball(scene, scene.cue->ball);
   if (c < 0) return;
+  // The ball follows the pointer over the cloth only: off the table (on a panel's way, or below it) it stays where it
+  // was, so that S does not shoot from the rail the pointer was nearest to (a coach's trial broke from there).
+  if (!drop && (std::abs(at.x) > scene.table->length / 2 || std::abs(at.z) > scene.table->width / 2)) return;
   const Zone zone = hand_zone(*scene.table, scene.balls[c].spec.radius, break_position(scene));
   const Vec3 p = zone.clamp({at.x, scene.balls[c].position.y, at.z});
   // A full-ball aim (a break's at the apex) stays on its ball while the cue ball moves; any other keeps its heading.

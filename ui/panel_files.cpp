@@ -148,9 +148,10 @@ void save_as_popup(Lab& lab, std::string& typed, const std::string& folder) {
 void preset_combo(Lab& lab) {
   const Fields f({"preset", "recent"});
   f.label("preset");
+  // The preset the scene came from, or what it became there (Set up break on the cut preset shows "break").
   std::string current = "choose...";
   for (const PresetEntry& p : presets(lab.data_root))
-    if (lab.scene_path == p.path) current = p.name;
+    if (lab.scene_path == p.path) current = lab.scene.name.empty() ? p.name : lab.scene.name;
   if (ImGui::BeginCombo("##preset", current.c_str(), ImGuiComboFlags_HeightLarge)) {
     for (const PresetEntry& p : presets(lab.data_root)) {
       if (ImGui::Selectable(p.name.c_str(), lab.scene_path == p.path)) lab.load(p.path);

@@ -796,6 +796,25 @@ TEST_F(LabTest, BallInHandTwiceIsOneStep) {
   EXPECT_EQ(ball("cue"), start);
 }
 
+// The ball in hand follows the pointer over the cloth, and stays where it was when the pointer leaves the table: a
+// coach's trial moved the pointer below the table after Set up break, and S broke from the rail nearest it.
+TEST_F(LabTest, TheBallInHandStaysOnTheTableWhenThePointerLeavesIt) {
+  load("cut.json");
+  lab.setup_break();
+  ASSERT_TRUE(lab.in_hand);
+  lab.place_cue_ball({-0.8, 0, 0.1}, false);  // over the cloth behind the head string: it follows
+  const Vec3 over = ball("cue");
+  EXPECT_NEAR(over.x, -0.8, 1e-9);
+  EXPECT_NEAR(over.z, 0.1, 1e-9);
+  lab.place_cue_ball({-0.8, 0, 1.2}, false);  // below the table (its bed is 1.27 x 0.635 m each side of the centre)
+  EXPECT_EQ(ball("cue"), over);
+  lab.place_cue_ball({-2.0, 0, 0.0}, false);  // beyond the head rail
+  EXPECT_EQ(ball("cue"), over);
+  lab.place_cue_ball({-0.8, 0, 1.2}, true);  // a click there still puts it down, at the nearest spot in the kitchen
+  EXPECT_FALSE(lab.in_hand);
+  EXPECT_GT(ball("cue").z, 0.5);
+}
+
 // The shots kept on another position are not drawn over a new break (a player's trial saw the cut's lines over the
 // rack); undo brings them back with that position. Kept breaks stay for the next break, to compare.
 TEST_F(LabTest, SetUpBreakStartsTheKeptShotsAfresh) {
