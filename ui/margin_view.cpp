@@ -26,13 +26,17 @@ std::optional<MarginOptions> margin_options(const Lab& lab, const MarginView& vi
     o.goal.x = lab.target->x, o.goal.z = lab.target->z, o.goal.radius = lab.target_radius;
     return o;
   }
+  const auto& pockets = lab.table_model.pockets;
+  if (pockets.empty()) {  // a carom table: potting is no goal there (the measured shots are carom shots)
+    why = "this table has no pockets: set a target, and the goal \"cue ball stops in the target\"";
+    return std::nullopt;
+  }
   const auto line = aim_line(s);
   if (!line || line->hit < 0) {
     why = "aim at a ball: the margin is that of potting it";
     return std::nullopt;
   }
   o.goal.ball = s.balls[line->hit].spec.id;
-  const auto& pockets = lab.table_model.pockets;
   if (view.pocket > 0 && view.pocket <= static_cast<int>(pockets.size())) o.goal.pocket = pockets[view.pocket - 1].name;
   return o;
 }
@@ -83,14 +87,14 @@ void start_map(const Lab& lab, MarginView& view, const MarginOptions& o, const s
 
 void update_margin(const Lab& lab, MarginView& view) {
   view.map_current = false;  // until shown to hold below
-  if (!view.open || lab.shot) {  // nothing to work out: leave the cores to the shot
+  auto stop = [&] {  // nothing (more) to work out: leave the cores to the rest
     if (view.estimate.busy()) view.estimate.cancel(), view.asked.clear();
     if (view.map.busy()) view.map.cancel(), view.map_asked.clear();
-    return;
-  }
+  };
+  if (!view.open || lab.shot) return stop();
   view.problem.clear();
   const auto o = margin_options(lab, view, view.problem);
-  if (!o) return;
+  if (!o) return stop();  // a scene the goal does not fit (no pockets, no ball aimed at) any more
   if (const std::string key = margin_key(lab, *o); key != view.asked) {
     view.estimate.start([scene = lab.scene, opts = *o, key](const auto& progress, const std::atomic<bool>& cancel) {
       return MarginEstimate{key, opts, shot_margin(scene, opts, progress, &cancel)};

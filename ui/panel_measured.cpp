@@ -40,8 +40,8 @@ void measured_section(Lab& lab) {
   if (!v.fit.error().empty()) coloured_wrapped(ImVec4(1, 0.5f, 0.4f, 1), "%s", v.fit.error().c_str());
   if (!v.last || v.last->shots.empty()) return;
   const ShotFit& f = v.last->shots[0];
-  ImGui::Text("fitted: %.3f m/s, aim %.2f deg, side %+.2f R, height %+.2f R", f.cue.speed, f.cue.aim_deg, f.cue.side,
-              f.cue.height);
+  text_wrapped("fitted: %.3f m/s, aim %.2f deg, side %+.2f R, height %+.2f R", f.cue.speed, f.cue.aim_deg, f.cue.side,
+               f.cue.height);
   for (const auto& [ball, rms] : f.rms) {
     ImGui::BulletText("%s: %.0f mm from the tracked centres (rms)", ball.c_str(), rms * 1e3);
     readout("fit rms " + ball, rms);

@@ -43,8 +43,8 @@ void practice_section(Lab& lab) {
     ImGui::PushID(static_cast<int>(k));
     ImGui::Checkbox("##visible", &lab.kept[k].visible);
     ImGui::SameLine();
-    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(kept_colour(lab.kept[k].colour)), "%s", lab.kept[k].label.c_str());
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", lab.kept[k].label.c_str());  // whole, where the panel cuts it
+    // Wrapped, not cut at the panel's edge: two attempts differ at the end of the label (the aim).
+    coloured_wrapped(ImGui::ColorConvertU32ToFloat4(kept_colour(lab.kept[k].colour)), "%s", lab.kept[k].label.c_str());
     ImGui::PopID();
   }
   ImGui::Checkbox("camera follows the cue ball", &lab.settings.view.follow_cue);

@@ -13,6 +13,7 @@
 #include "ui/aim.hpp"
 #include "ui/contact_log.hpp"
 #include "ui/lab.hpp"
+#include "ui/margin_view.hpp"
 #include "ui/shot.hpp"
 
 namespace shotlab {
@@ -309,6 +310,19 @@ TEST_F(LabTest, PocketAimAllowsForSideSpin) {
     dropped |= e.kind == "pocketed" && e.bodies.size() > 1 && e.bodies[0] == "1" &&
                e.bodies[1] == "pocket-right-front";
   EXPECT_TRUE(dropped);
+}
+
+// On a table without pockets (a carom table, as the measured shots are on) potting is no goal: the margin asks for a
+// target instead of running the map for "the aimed-at ball into any pocket" (a coach's trial saw it run on).
+TEST_F(LabTest, TheMarginHasNoPottingGoalOnACaromTable) {
+  load("three_cushion.json");
+  MarginView view;
+  view.open = true;
+  std::string why;
+  EXPECT_FALSE(margin_options(lab, view, why));
+  EXPECT_NE(why.find("no pockets"), std::string::npos) << why;
+  load("cut.json");
+  EXPECT_TRUE(margin_options(lab, view, why)) << why;
 }
 
 // Pockets as players name them; names of other tables' pockets are left as they are.
