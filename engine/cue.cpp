@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+
+#include "shotlab/scene.hpp"
 #include <stdexcept>
 
 namespace shotlab {
@@ -23,6 +26,26 @@ StrikeResult strike(const CueStrike& cue, double mass, double radius) {
   const Vec3 v = j / mass * d;
   const Vec3 turned{std::cos(turn) * v.x + std::sin(turn) * v.z, v.y, -std::sin(turn) * v.x + std::cos(turn) * v.z};
   return {turned, j / inertia * qxd, j, turn, std::sqrt(offset2) > cue.miscue_limit};
+}
+
+std::string cue_problem(const CueStrike& cue) {
+  auto number = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", v);
+    return std::string(text);
+  };
+  for (const auto& [name, v] : {std::pair{"speed", cue.speed}, {"aim", cue.aim}, {"side", cue.side},
+                                {"height", cue.height}, {"elevation", cue.elevation}})
+    if (!std::isfinite(v)) return std::string(name) + ": not finite";
+  if (!(cue.speed > 0)) return "speed: must be above 0 m/s";
+  if (cue.speed > kMaxStartSpeed)
+    return "speed: " + number(cue.speed) + " m/s is faster than a cue strikes (at most " + number(kMaxStartSpeed) +
+           " m/s; a hard break is 10-14 m/s)";
+  if (cue.elevation < 0 || cue.elevation > kMaxElevation)
+    return "elevation: must be 0 to 90 degrees (a level to a vertical cue)";
+  if (cue.side * cue.side + cue.height * cue.height >= 1)
+    return "side, height: the tip offset must lie inside the ball";
+  return "";
 }
 
 // The tip does not slip on the ball while the shaft's end (mass m_e) is pushed sideways: the ball's sideways

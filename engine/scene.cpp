@@ -78,9 +78,8 @@ void validate(const Scene& s) {
     if (s.model.rods[r].ball < 0 || s.model.rods[r].ball >= static_cast<int>(s.balls.size()))
       fail("rods[" + std::to_string(r) + "].ball: no such ball");
   if (s.cue && !ids.count(s.cue->ball)) fail("cue.ball: no ball with id '" + s.cue->ball + "'");
-  if (s.cue && s.cue->speed > kMaxStartSpeed)
-    fail("cue.speed: " + number(s.cue->speed) + " m/s is faster than a cue strikes (at most " +
-         number(kMaxStartSpeed) + " m/s; a hard break is 10-14 m/s)");
+  if (s.cue)
+    if (const std::string problem = cue_problem(*s.cue); !problem.empty()) fail("cue." + problem);
   if (!(s.duration > 0) || !std::isfinite(s.duration)) fail("duration: must be a positive number of seconds");
 }
 

@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,32 +23,41 @@ using namespace shotlab;
 namespace {
 
 // A dict's value as JSON: numbers (numpy's too, and numpy arrays as lists), strings, booleans, None, lists and
-// tuples, dicts with string keys. A non-finite number is an InputError and anything else a TypeError, naming `path`.
-nlohmann::json to_json(const py::handle& v, const std::string& path) {
+// tuples, dicts with string keys. A non-finite number, an integer past 64 bits and nesting deeper than a scene file
+// may have are InputErrors, anything else a TypeError, naming `path`.
+nlohmann::json to_json(const py::handle& v, const std::string& path, int depth = 0) {
+  if (depth > kMaxJsonDepth)
+    throw InputError("scene: " + path + ": nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+  // Kept for the process (a static py::object would be released after the interpreter is gone).
+  static const py::handle numpy_bool = py::object(py::module_::import("numpy").attr("bool_")).release();
   if (v.is_none()) return nullptr;
-  if (py::isinstance<py::bool_>(v)) return v.cast<bool>();
-  if (py::isinstance<py::int_>(v)) return v.cast<long long>();
+  if (py::isinstance<py::bool_>(v) || py::isinstance(v, numpy_bool))
+    return py::bool_(py::reinterpret_borrow<py::object>(v)).cast<bool>();
   if (py::isinstance<py::str>(v)) return v.cast<std::string>();
   if (py::isinstance<py::dict>(v)) {
     nlohmann::json out = nlohmann::json::object();
     for (const auto& [key, item] : v.cast<py::dict>()) {
       if (!py::isinstance<py::str>(key)) throw py::type_error("scene: " + path + ": a key that is not a string");
       const std::string k = key.cast<std::string>();
-      out[k] = to_json(item, path.empty() ? k : path + "." + k);
+      out[k] = to_json(item, path.empty() ? k : path + "." + k, depth + 1);
     }
     return out;
   }
   if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v) || py::isinstance<py::array>(v)) {
     const py::object items = py::isinstance<py::array>(v) ? v.attr("tolist")() : py::reinterpret_borrow<py::object>(v);
-    if (!py::isinstance<py::list>(items) && !py::isinstance<py::tuple>(items)) return to_json(items, path);  // 0-d
+    if (!py::isinstance<py::list>(items) && !py::isinstance<py::tuple>(items)) return to_json(items, path, depth);
     nlohmann::json out = nlohmann::json::array();
     size_t k = 0;
-    for (const auto& item : items) out.push_back(to_json(item, path + "[" + std::to_string(k++) + "]"));
+    for (const auto& item : items) out.push_back(to_json(item, path + "[" + std::to_string(k++) + "]", depth + 1));
     return out;
   }
-  if (py::hasattr(v, "__float__") && !py::isinstance<py::bytes>(v)) {  // float, numpy.float64, numpy.int32, ...
-    const py::object index = py::module_::import("operator").attr("index");
-    if (py::hasattr(v, "__index__")) return index(v).cast<long long>();
+  if (py::isinstance<py::int_>(v) || (py::hasattr(v, "__index__") && py::hasattr(v, "__float__"))) {
+    const py::int_ i = py::module_::import("operator").attr("index")(v);
+    if (i < py::int_(std::numeric_limits<long long>::min()) || i > py::int_(std::numeric_limits<long long>::max()))
+      throw InputError("scene: " + path + ": the integer " + std::string(py::str(py::object(i))) + " is past 64 bits");
+    return i.cast<long long>();
+  }
+  if (py::hasattr(v, "__float__") && !py::isinstance<py::bytes>(v)) {  // float, numpy.float64, ...
     const double x = py::float_(py::reinterpret_borrow<py::object>(v)).cast<double>();
     if (!std::isfinite(x)) throw InputError("scene: " + path + ": must be a finite number, got " + std::to_string(x));
     return x;

@@ -225,8 +225,8 @@ shotlab_status shotlab_ball_id(const shotlab_sim* sim, int index, char* id, int 
     std::string& error = const_cast<shotlab_sim*>(sim)->error;
     const auto& balls = sim->sim->model().balls;
     if (index < 0 || static_cast<size_t>(index) >= balls.size())
-      return fail(error, SHOTLAB_ERROR_ARGUMENT, "index: " + std::to_string(index) + " is not 0 to " +
-                                                   std::to_string(static_cast<long>(balls.size()) - 1));
+      return fail(error, SHOTLAB_ERROR_ARGUMENT, "index: " + std::to_string(index) + ", the simulation has " +
+                                                   std::to_string(balls.size()) + " balls");
     if (!id) return fail(error, SHOTLAB_ERROR_ARGUMENT, "id: NULL");
     const std::string& name = balls[index].id;
     if (capacity < 0 || static_cast<size_t>(capacity) <= name.size())
@@ -286,6 +286,7 @@ shotlab_status shotlab_events(shotlab_sim* sim, shotlab_event* events, int capac
 
 shotlab_status shotlab_set_material(shotlab_sim* sim, const char* pair, const char* field, double value) {
   return guarded(sim, [&] {
+    if (sim->sim->status() != Status::Ok) return status_of(*sim, sim->sim->status());  // stays stopped until reset
     if (!pair || !field) return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, "pair and field: NULL");
     if (!std::isfinite(value)) return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, "value: not finite");
     nlohmann::json doc = scene_to_json(sim->scene);
@@ -309,31 +310,21 @@ shotlab_status shotlab_set_material(shotlab_sim* sim, const char* pair, const ch
   });
 }
 
-// What a scene's cue would refuse in the strike's numbers, naming the argument, or "".
-std::string strike_problem(double speed, double aim, double side, double height, double elevation) {
-  for (const auto& [name, v] : {std::pair{"speed", speed}, {"aim", aim}, {"side", side}, {"height", height},
-                                {"elevation", elevation}})
-    if (!std::isfinite(v)) return std::string(name) + ": not finite";
-  if (speed < 0 || speed > kMaxStartSpeed)
-    return "speed: " + std::to_string(speed) + " m/s is outside 0 to " + std::to_string(kMaxStartSpeed) + " m/s";
-  if (elevation < 0 || elevation > kMaxElevation) return "elevation: must be 0 to pi/2 rad (a level to a vertical cue)";
-  return "";  // a tip offset outside the ball: strike() says so
-}
-
 shotlab_status shotlab_strike(shotlab_sim* sim, const char* ball, double speed, double aim, double side, double height,
                               double elevation) {
   return guarded(sim, [&] {
+    if (sim->sim->status() != Status::Ok) return status_of(*sim, sim->sim->status());  // stays stopped until reset
     if (!ball) return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, "ball: NULL");
     const int i = sim->sim->model().ball_index(ball);
     if (i < 0) return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, std::string("ball: no ball '") + ball + "'");
     if (!sim->sim->state().in_play[i])
       return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, std::string("ball: '") + ball + "' is out of play");
-    if (std::string problem = strike_problem(speed, aim, side, height, elevation); !problem.empty())
-      return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, problem);
     CueStrike cue;
     cue.ball = ball, cue.speed = speed, cue.aim = aim, cue.side = side, cue.height = height, cue.elevation = elevation;
+    if (std::string problem = cue_problem(cue); !problem.empty())  // what a scene's cue may not be either
+      return fail(sim->error, SHOTLAB_ERROR_ARGUMENT, problem);
     const BallSpec& b = sim->sim->model().balls[i];
-    const StrikeResult r = strike(cue, b.mass, b.radius);  // throws invalid_argument for an offset outside the ball
+    const StrikeResult r = strike(cue, b.mass, b.radius);
     State state = sim->sim->state();
     set_velocity(state.x, i, r.velocity);
     set_spin(state.x, i, r.spin);

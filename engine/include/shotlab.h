@@ -81,7 +81,8 @@ SHOTLAB_API shotlab_status shotlab_reset(shotlab_sim* sim);
 SHOTLAB_API shotlab_status shotlab_time(const shotlab_sim* sim, double* seconds);
 SHOTLAB_API shotlab_status shotlab_ball_count(const shotlab_sim* sim, int* count);
 /* The id of ball `index` (0 to count - 1, the order of shotlab_balls), as events and shotlab_strike name it, into
- * `id` (capacity bytes, with its terminating NUL; SHOTLAB_ERROR_BUFFER when it does not fit). API version 2. */
+ * `id` (capacity bytes, with its terminating NUL; SHOTLAB_ERROR_BUFFER when it does not fit, and the message says
+ * how many bytes it needs; a scene's ids are short, 64 bytes hold any of the presets'). API version 2. */
 SHOTLAB_API shotlab_status shotlab_ball_id(const shotlab_sim* sim, int index, char* id, int capacity);
 /* Every ball's state into caller buffers of `capacity` balls (3 numbers each; any may be NULL); in_play (may be
  * NULL) gets 1 or 0 per ball. SHOTLAB_ERROR_BUFFER when capacity is below the ball count. */
@@ -95,10 +96,11 @@ SHOTLAB_API shotlab_status shotlab_events(shotlab_sim* sim, shotlab_event* event
  * scene's own) as the scene file names it: stiffness, damping, exponent, friction, rolling_resistance, spin_friction,
  * restitution, ... The simulation goes on from its current state with the new model. */
 SHOTLAB_API shotlab_status shotlab_set_material(shotlab_sim* sim, const char* pair, const char* field, double value);
-/* Strikes the ball `ball` (its id, in play) with the cue: speed (0 to 30 m/s of the cue), aim (rad, 0 = +x, pi/2 =
- * -z), tip offsets side and height (ball radii, inside the ball), elevation (0 to pi/2 rad); the rigid-cue model with
- * squirt (docs/model.md#cue), as a scene's cue. A tip offset beyond the cue's miscue limit (half a radius) is struck
- * as if the tip held, and a miscue event says so. */
+/* Strikes the ball `ball` (its id, in play) with the cue: speed (above 0, at most 30 m/s of the cue), aim (rad,
+ * 0 = +x, pi/2 = -z), tip offsets side and height (ball radii, inside the ball), elevation (0 to pi/2 rad); the
+ * rigid-cue model with squirt (docs/model.md#cue), as a scene's cue. A tip offset beyond the cue's miscue limit (half
+ * a radius) is struck as if the tip held, and a miscue event says so. A stopped simulation stays stopped: this and
+ * shotlab_set_material return SHOTLAB_ERROR_STOPPED until shotlab_reset. */
 SHOTLAB_API shotlab_status shotlab_strike(shotlab_sim* sim, const char* ball, double speed, double aim, double side,
                                           double height, double elevation);
 

@@ -102,6 +102,16 @@ def test_a_dict_may_hold_numpy_values_and_its_bad_numbers_are_named():
             shotlab.Simulation(dict(STUN, balls=[{"id": "cue", "position": [0, R, 0], "velocity": [2, bad, 0]}]))
     with pytest.raises(TypeError, match=r"balls\[0\]\.id: a set is not a scene value"):
         shotlab.Simulation(dict(STUN, balls=[{"id": {"cue"}, "position": [0, R, 0]}]))
+    # A review's cases: a list holding itself, an integer past 64 bits, numpy's booleans.
+    endless = []
+    endless.append(endless)
+    with pytest.raises(shotlab.InputError, match="nested deeper than 64 levels"):
+        shotlab.Simulation(dict(STUN, balls=endless))
+    with pytest.raises(shotlab.InputError, match=r"balls\[0\]\.mass: the integer 18446744073709551616 is past 64 bits"):
+        shotlab.Simulation(dict(STUN, balls=[{"id": "cue", "position": [0, R, 0], "mass": 2 ** 64}]))
+    allowed = dict(STUN, allow_overlap=np.array([True]).any(),
+                   balls=[{"id": "a", "position": [0, R, 0]}, {"id": "b", "position": [0.01, R, 0]}])
+    assert shotlab.Simulation(allowed).ids == ["a", "b"]
 
 
 def test_the_scenes_miscue_is_an_event_and_misspellings_get_the_nearest_name():

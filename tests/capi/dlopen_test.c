@@ -50,6 +50,7 @@ static const char* kStun =
   " \"cue\": {\"ball\": \"cue\", \"speed\": 2.0, \"aim_deg\": -75.00000000000001" more "}}"
 static const char* kCut = CUT_SCENE("");
 static const char* kCutMiscue = CUT_SCENE(", \"side\": 0.6");
+static const char* kCutHeld = CUT_SCENE("}, \"integrator\": {\"max_steps_per_call\": 3");
 
 int main(int argc, char** argv) {
   if (argc < 2) return fprintf(stderr, "usage: dlopen_test LIBRARY\n"), 2;
@@ -174,11 +175,24 @@ int main(int argc, char** argv) {
         "an elevation past a vertical cue, named");
   CHECK(strike(cut, NULL, 2, 0, 0, 0, 0) == SHOTLAB_ERROR_ARGUMENT && strstr(last_error(cut), "ball: NULL"),
         "a NULL ball, named");
+  CHECK(strike(cut, "cue", 0, 0, 0, 0, 0) == SHOTLAB_ERROR_ARGUMENT && strstr(last_error(cut), "speed"),
+        "no cue speed, as a scene's cue may not have");
   CHECK(material(cut, "ball_cloth", "friction", -1) == SHOTLAB_ERROR_INPUT &&
             strstr(last_error(cut), "materials.ball_cloth.friction") &&
             strstr(strstr(last_error(cut), "materials.ball_cloth.friction") + 1, "materials.ball_cloth") == NULL,
         "a refused value names its field once");
   destroy(cut);
+
+  /* A run stopped by its step limit stays stopped: a material or a strike does not start it again; reset does. */
+  shotlab_sim* held = NULL;
+  CHECK(create(kCutHeld, &held) == SHOTLAB_OK, "the held cut is created");
+  CHECK(advance(held, 0.5) == SHOTLAB_ERROR_STOPPED && strstr(last_error(held), "step limit"), "the step limit stops");
+  CHECK(material(held, "ball_cloth", "friction", 0.3) == SHOTLAB_ERROR_STOPPED, "no material on a stopped run");
+  CHECK(strike(held, "cue", 1, 0, 0, 0, 0) == SHOTLAB_ERROR_STOPPED, "no strike on a stopped run");
+  CHECK(advance(held, 0.1) == SHOTLAB_ERROR_STOPPED, "still stopped");
+  double held_t = -1;
+  CHECK(reset(held) == SHOTLAB_OK && now(held, &held_t) == SHOTLAB_OK && held_t == 0, "reset starts it again");
+  destroy(held);
 
   /* Errors: codes, never an abort. */
   CHECK(advance(NULL, 0.1) == SHOTLAB_ERROR_HANDLE && strstr(last_error(NULL), "sim: NULL"),

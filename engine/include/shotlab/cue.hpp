@@ -47,6 +47,11 @@ Vec3 aim_direction(double aim);
 
 StrikeResult strike(const CueStrike& cue, double mass, double radius);
 
+// What a cue strike may not be, naming the field ("speed: ..."), or "" when it may be struck: a speed above 0 and at
+// most kMaxStartSpeed (scene.hpp), an elevation from 0 to kMaxElevation, a tip offset inside the ball, every number
+// finite. The scene check and the C API's strike share it.
+std::string cue_problem(const CueStrike& cue);
+
 // rad: the squirt angle of TP A-31 for a tip offset `side` (ball radii) and ball mass over end mass, always >= 0:
 // tan a = (5/2) s c / (1 + m / m_e + (5/2) c^2) with s = |side|, c = sqrt(1 - s^2).
 double squirt_angle(double side, double mass_ratio);
