@@ -23,14 +23,15 @@ int cue_index(const Scene& s) {
   return -1;
 }
 
-// rad: how far the cue ball's heading turns off the cue's line (squirt of side spin, + to the left); 0 for a tip
-// offset outside the ball, which strike() refuses and the cue panel does not let through.
-double squirt_of(const Scene& s, int cue) {
+}  // namespace
+
+double squirt_of(const Scene& s) {
+  const int cue = cue_index(s);
+  if (cue < 0) return 0;
   const CueStrike& q = *s.cue;
-  if (q.side * q.side + q.height * q.height >= 1) return 0;
+  if (q.side * q.side + q.height * q.height >= 1) return 0;  // strike() refuses it; the cue panel lets none through
   return strike(q, s.balls[cue].spec.mass, s.balls[cue].spec.radius).squirt;
 }
-}  // namespace
 
 double heading(const Vec3& a, const Vec3& b) { return std::atan2(-(b.z - a.z), b.x - a.x); }
 
@@ -41,7 +42,7 @@ std::optional<AimLine> aim_line(const Scene& scene) {
   out.from = scene.balls[c].position;
   const double r = scene.balls[c].spec.radius;
   // Along the heading the ball leaves on: the cue's, turned by the squirt of side spin.
-  const Vec3 dir = aim_direction(scene.cue->aim + squirt_of(scene, c));
+  const Vec3 dir = aim_direction(scene.cue->aim + squirt_of(scene));
   double best = kNoHitLength;
   for (int j = 0; j < static_cast<int>(scene.balls.size()); ++j) {
     if (j == c) continue;
@@ -129,11 +130,12 @@ constexpr double kSearchStepDeg = 0.25, kSearchDeg = 4.0;  // a dropping aim is 
 // Whether the ghost-ball aim drops the ball or, with side spin or an elevated cue, the first aim that does, tried
 // outwards from it turned back by the squirt (the ball leaves off the cue's line by it, docs/model.md#cue),
 // alternately either side: swerve and throw move a spinning ball further. False when none within kSearchDeg does.
+// On a crowded table (a rack: each try is a break played out) only the aim turned back by the squirt is tried.
 bool find_drop(Scene& s, const std::string& id, PocketAim& a) {
-  const int cue = cue_index(s);
+  constexpr size_t kSearchBalls = 4;  // at most this many balls on the table for the search
   const bool spun = s.cue->side != 0 || s.cue->elevation > 0;
-  if (cue >= 0 && spun) a.aim -= squirt_of(s, cue);
-  const int steps = spun ? static_cast<int>(kSearchDeg / kSearchStepDeg) : 0;
+  if (spun) a.aim -= squirt_of(s);
+  const int steps = spun && s.balls.size() <= kSearchBalls ? static_cast<int>(kSearchDeg / kSearchStepDeg) : 0;
   for (int k = 0; k <= 2 * steps; ++k) {  // 0, +1, -1, +2, -2, ... steps
     const double off = (k % 2 ? 1 : -1) * ((k + 1) / 2) * kSearchStepDeg * M_PI / 180;
     s.cue->aim = a.aim + off;
@@ -195,9 +197,10 @@ int pocket_object(const Scene& scene) {
   const int c = cue_index(scene);
   int best = -1;
   double best_turn = INFINITY;
+  const double launch = scene.cue->aim + squirt_of(scene);
   for (int j = 0; j < static_cast<int>(scene.balls.size()); ++j) {
     if (j == c) continue;
-    const double turn = std::abs(std::remainder(heading(line->from, scene.balls[j].position) - scene.cue->aim, 2 * M_PI));
+    const double turn = std::abs(std::remainder(heading(line->from, scene.balls[j].position) - launch, 2 * M_PI));
     if (turn < best_turn) best_turn = turn, best = j;
   }
   return best;

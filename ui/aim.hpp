@@ -23,6 +23,9 @@ std::optional<AimLine> aim_line(const Scene& scene);
 
 // The heading (rad, CueStrike::aim) from a to b in the table plane.
 double heading(const Vec3& a, const Vec3& b);
+// rad: how far the scene's cue ball leaves off the cue's line (the squirt of side spin, + to the left; 0 without a
+// cue strike): the cue's aim for a launch heading H is H - squirt_of(scene).
+double squirt_of(const Scene& scene);
 
 // The cue heading that sends ball `object` straight at a pocket (ghost-ball aim; throw and squirt not counted), with
 // the cut angle it takes. Only pockets the object ball can reach with a cut under 85 degrees, easiest cut first.

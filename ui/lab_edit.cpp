@@ -52,7 +52,7 @@ void Lab::aim_at(const Vec3& point) {
   const Vec3 from = scene.balls[c].position;
   if (std::hypot(point.x - from.x, point.z - from.z) < 1e-4) return;
   CueStrike cue = *scene.cue;
-  cue.aim = heading(from, point);
+  cue.aim = heading(from, point) - squirt_of(scene);  // the aim line (the ball's launch heading) through the point
   set_cue(cue, "aim");
 }
 
@@ -269,7 +269,7 @@ void Lab::place_cue_ball(const Vec3& at, bool drop) {
   const int full_on = line && line->hit >= 0 && line->cut_deg < 0.01 ? line->hit : -1;
   if (fits(c, p) && glm::length(p - scene.balls[c].position) > 0) {
     scene.balls[c].position = p;
-    if (full_on >= 0) scene.cue->aim = heading(p, scene.balls[full_on].position);
+    if (full_on >= 0) scene.cue->aim = heading(p, scene.balls[full_on].position) - squirt_of(scene);
     scene_changed();
   }
   if (drop) {

@@ -67,8 +67,9 @@ class Labels {
       ImRect best;
       float least = INFINITY;
       int& last = last_spot()[it.text];  // a free spot it took last frame is tried first: labels do not flit about
+      const int before = last;
       for (int k = 0; k < kSpots; ++k) {
-        const int n = k == 0 ? last : k <= last ? k - 1 : k;
+        const int n = k == 0 ? before : k <= before ? k - 1 : k;  // before, then the others in their order
         const ImRect r(spots[n].x - 3, spots[n].y - 1, spots[n].x + size.x + 3, spots[n].y + size.y + 1);
         float covered = r.GetWidth() * r.GetHeight() - overlap(r, view_);  // off the view counts as covered
         for (const ImRect& t : taken) covered += overlap(r, t);
