@@ -181,6 +181,7 @@ int run_gui(const GuiOptions& options) {
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // panel places come from layout.hpp, not from a saved file
     ImGui::StyleColorsDark();
+    ImGui::GetStyle().Colors[ImGuiCol_PopupBg].w = 1;  // dialogs and lists opaque: trails showed through a file list
     install_key_queue(window.handle);
     ImGui_ImplGlfw_InitForOpenGL(window.handle, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");

@@ -210,7 +210,7 @@ void map_picture(Lab& lab, const MarginMap& m) {
   const int j = std::clamp(static_cast<int>((q.x - p0.x) / cw), 0, m.aims - 1);
   const int i = std::clamp(static_cast<int>((p0.y + h - q.y) / ch), 0, m.speeds - 1);
   const double aim = centre(m.aim_lo_deg, m.aim_hi_deg, m.aims, j), speed = centre(m.speed_lo, m.speed_hi, m.speeds, i);
-  ImGui::SetTooltip("aim %.2f deg, speed %.2f m/s: %.0f %%\nclick to shoot it like that", aim, speed,
+  ImGui::SetTooltip("aim %.2f deg, speed %.2f m/s: %.0f %%\nclick to take this aim and speed (S shoots)", aim, speed,
                     100 * m.cells[i * m.aims + j]);
   if (clicked) {
     CueStrike c = cue;

@@ -811,7 +811,7 @@ def rigid(binary, root, display, work):
 def coach(binary, root, display, work):
     """The shot margin of the cut: open its section (scrolling the panel with the wheel), read the success and the
     aim window, turn the aim and see the window move with it, map aim x speed with few replays, click a cell of the
-    map to shoot it like that."""
+    map to take its aim and speed."""
     app = App(binary, display, work, os.path.join(root, "presets", "cut.json"))
     s = app.state()
     panel = s["widgets"]["Shot margin"]
