@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-
-#include "shotlab/scene.hpp"
 #include <stdexcept>
+
+#include "message.hpp"
+#include "shotlab/scene.hpp"
 
 namespace shotlab {
 
@@ -29,11 +29,7 @@ StrikeResult strike(const CueStrike& cue, double mass, double radius) {
 }
 
 std::string cue_problem(const CueStrike& cue) {
-  auto number = [](double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g", v);
-    return std::string(text);
-  };
+  const auto number = message_number;
   for (const auto& [name, v] : {std::pair{"speed", cue.speed}, {"aim", cue.aim}, {"side", cue.side},
                                 {"height", cue.height}, {"elevation", cue.elevation}})
     if (!std::isfinite(v)) return std::string(name) + ": not finite";

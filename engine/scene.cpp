@@ -1,10 +1,10 @@
 #include "shotlab/scene.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <set>
 #include <stdexcept>
 
+#include "message.hpp"
 #include "shotlab/simulation.hpp"
 
 namespace shotlab {
@@ -19,11 +19,7 @@ namespace {
 
 void fail(const std::string& what) { throw std::invalid_argument(what); }
 
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", v);
-  return text;
-}
+const auto number = message_number;
 
 // A ball starts over the bed between the cushion noses (or above it): off it, it would start inside a cushion or in
 // the air beside the table.
