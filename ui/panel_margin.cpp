@@ -68,6 +68,43 @@ void goal_choice(Lab& lab, MarginView& v) {
   mark("margin level");
 }
 
+// What each error alone leaves of the success and the window it holds within: a table of three columns where they
+// fit; in a narrow panel (presentation mode's large text, where a third column shrank to a digit a line) two lines
+// an error, the window indented under its name and share.
+void sources_table(const MarginResult& r) {
+  static const char* names[] = {"aim (deg)", "speed (%)", "side (mm)", "height (mm)", "elevation (deg)"};
+  auto window = [&](int k) {
+    const Tolerance& t = r.tolerance[k];
+    if (!r.nominal_success) ImGui::TextDisabled("-");  // no window around a stroke that misses
+    else text_wrapped("%s%.3g .. %s%.3g", t.bounded_lo ? "" : "<", t.lo, t.bounded_hi ? "" : ">", t.hi);
+  };
+  const float pad = ImGui::GetStyle().CellPadding.x * 2;
+  if (ImGui::CalcTextSize(names[4]).x + ImGui::CalcTextSize("100 %").x + ImGui::CalcTextSize("<-0.123 .. >0.123").x +
+          3 * pad > ImGui::GetContentRegionAvail().x) {
+    hint("error: success with it alone, the window it holds within");
+    for (int k = 0; k < kNoiseSources; ++k) {
+      ImGui::TextUnformatted(names[k]);
+      const std::string share = std::to_string(static_cast<int>(std::lround(100 * r.alone[k]))) + " %";
+      same_line_if_fits(share.c_str());
+      ImGui::TextColored(verdict_colour(r.alone[k]), "%s", share.c_str());
+      ImGui::Indent(), window(k), ImGui::Unindent();
+    }
+    return;
+  }
+  if (!ImGui::BeginTable("margin sources", 3, ImGuiTableFlags_SizingStretchProp)) return;
+  ImGui::TableSetupColumn("error", ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn("alone", ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn("holds within", ImGuiTableColumnFlags_WidthStretch);
+  ImGui::TableHeadersRow();
+  for (int k = 0; k < kNoiseSources; ++k) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn(), ImGui::TextUnformatted(names[k]);
+    ImGui::TableNextColumn(), ImGui::TextColored(verdict_colour(r.alone[k]), "%.0f %%", 100 * r.alone[k]);
+    ImGui::TableNextColumn(), window(k);
+  }
+  ImGui::EndTable();
+}
+
 // The estimate's verdict and its table of errors alone. `stale` (0..1, the new estimate's progress): an earlier
 // estimate, dimmed, with the progress in its verdict's line, so that the panel keeps its height (the map below stays
 // under the pointer) while the new one is worked out; it says nothing to the readouts.
@@ -88,22 +125,7 @@ void estimate_lines(const MarginEstimate& e, std::optional<double> stale) {
   // Always a line, either way: the section keeps its height from one estimate to the next.
   if (r.nominal_success) coloured_wrapped(ImVec4(0.5f, 1, 0.5f, 1), "as aimed, without error: works");
   else coloured_wrapped(ImVec4(1, 0.6f, 0.3f, 1), "as aimed, without error: misses");
-  if (!ImGui::BeginTable("margin sources", 3, ImGuiTableFlags_SizingStretchProp)) return;
-  ImGui::TableSetupColumn("error", ImGuiTableColumnFlags_WidthFixed);
-  ImGui::TableSetupColumn("alone", ImGuiTableColumnFlags_WidthFixed);
-  ImGui::TableSetupColumn("holds within", ImGuiTableColumnFlags_WidthStretch);  // wraps in a narrow panel
-  ImGui::TableHeadersRow();
-  static const char* names[] = {"aim (deg)", "speed (%)", "side (mm)", "height (mm)", "elevation (deg)"};
-  for (int k = 0; k < kNoiseSources; ++k) {
-    ImGui::TableNextRow();
-    ImGui::TableNextColumn(), ImGui::TextUnformatted(names[k]);
-    ImGui::TableNextColumn(), ImGui::TextColored(verdict_colour(r.alone[k]), "%.0f %%", 100 * r.alone[k]);
-    ImGui::TableNextColumn();
-    const Tolerance& t = r.tolerance[k];
-    if (!r.nominal_success) ImGui::TextDisabled("-");  // no window around a stroke that misses
-    else text_wrapped("%s%.3g .. %s%.3g", t.bounded_lo ? "" : "<", t.lo, t.bounded_hi ? "" : ">", t.hi);
-  }
-  ImGui::EndTable();
+  sources_table(r);
 }
 
 void estimate_readout(Lab& lab, MarginView& v) {
@@ -254,7 +276,7 @@ void margin_section(Lab& lab) {
   if (lab.shot) hint("back to aiming (Undo or Next) to work it out");
   else if (!v.problem.empty()) hint(v.problem);
   else estimate_readout(lab, v);
-  ImGui::Checkbox("draw where the tries end", &v.scatter);
+  fitting_checkbox("draw where the tries end", "draw try ends", &v.scatter);
   ImGui::Separator();
   map_section(lab, v);
 }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "shotlab/cue.hpp"
@@ -96,8 +97,10 @@ void playback_section(Lab& lab) {
                          "%s after %.2f s", end_text(*lab.shot), lab.shot->sim().time());
     if (lab.shot->end() == ShotEnd::SafetyLimit && lab.shot_over()) {
       if (ImGui::Button("Run on")) lab.run_on();
-      ImGui::SameLine();
-      ImGui::TextDisabled("for another %.0f s", lab.settings.safety_limit);
+      char more[48];
+      std::snprintf(more, sizeof more, "for another %.0f s", lab.settings.safety_limit);
+      same_line_if_fits(more);
+      ImGui::TextDisabled("%s", more);
     }
     if (lab.playing && lab.achieved_speed < 0.95)
       coloured_wrapped(ImVec4(1, 0.7f, 0.2f, 1), "physics behind: clock slowed to %.0f%% of the set speed",
@@ -139,11 +142,13 @@ void aim_readouts(const Lab& lab, const CueStrike& cue) {
   const int c = scene_ball(lab.scene, cue.ball);
   if (c < 0) return;
   const StrikeResult r = strike(cue, lab.scene.balls[c].spec.mass, lab.scene.balls[c].spec.radius);
-  if (r.squirt != 0) ImGui::Text("squirt %.2f deg %s of the cue line", std::abs(r.squirt) * 180 / M_PI, r.squirt > 0 ? "left" : "right");
+  // Wrapped: presentation mode's large text in a narrow panel cut these lines at the edge.
+  if (r.squirt != 0)
+    text_wrapped("squirt %.2f deg %s of the cue line", std::abs(r.squirt) * 180 / M_PI, r.squirt > 0 ? "left" : "right");
   if (const auto line = aim_line(lab.scene); line && line->hit >= 0)
-    ImGui::Text("first ball %s, cut %.1f deg", lab.scene.balls[line->hit].spec.id.c_str(), line->cut_deg);
+    text_wrapped("first ball %s, cut %.1f deg", lab.scene.balls[line->hit].spec.id.c_str(), line->cut_deg);
   if (const auto miss = lab.target_miss())
-    ImGui::Text("%s miss of the target: %.1f cm", lab.shot ? "cue ball's" : "predicted", *miss * 100);
+    text_wrapped("%s miss of the target: %.1f cm", lab.shot ? "cue ball's" : "predicted", *miss * 100);
 }
 
 void aim_section(Lab& lab) {
@@ -157,8 +162,9 @@ void aim_section(Lab& lab) {
   }
   if (!lab.scene.cue) return;
   CueStrike cue = *lab.scene.cue;
-  ImGui::SameLine();
-  ImGui::TextDisabled("on %s", cue.ball.c_str());
+  const std::string on = "on " + cue.ball;
+  same_line_if_fits(on.c_str());
+  ImGui::TextDisabled("%s", on.c_str());
   tool_buttons(lab);
   if (ImGui::Button(lab.in_hand ? "Put down (click)" : "Ball in hand (B)")) lab.pick_up_cue_ball();
   mark("Ball in hand");
@@ -194,7 +200,7 @@ void aim_section(Lab& lab) {
   }
   if (tip_widget(cue, em(104))) lab.set_cue(cue, "tip");
   if (ImGui::IsItemDeactivated()) lab.end_gesture();
-  ImGui::SameLine();
+  same_line_if_fits("follow 0.00 R");  // the readouts' widest line: beside the pad, or under it in a narrow panel
   ImGui::BeginGroup();
   ImGui::Text("side %+.2f R", cue.side);
   ImGui::Text("%s %.2f R", cue.height >= 0 ? "follow" : "draw", std::abs(cue.height));
@@ -263,8 +269,8 @@ bool left_panel(Lab& lab, Camera& camera, const Layout& layout) {
     panel_width_grip("left panel width grip", Rect{grip.x, grip.y + bar, grip.w, grip.h - bar}, layout.left.x, widths,
                      ImGui::GetFontSize() / kBaseFontPx, PanelState{}.left_width);
     text_wrapped("%s", lab.scene.name.c_str());
-    if (ImGui::CollapsingHeader("What to look for", ImGuiTreeNodeFlags_DefaultOpen)) notes_section(lab);
-    if (ImGui::CollapsingHeader("Scene and files", ImGuiTreeNodeFlags_DefaultOpen)) scene_section(lab);
+    if (section("What to look for", "Notes", ImGuiTreeNodeFlags_DefaultOpen)) notes_section(lab);
+    if (section("Scene and files", "Files", ImGuiTreeNodeFlags_DefaultOpen)) scene_section(lab);
     if (ImGui::CollapsingHeader("Playback", ImGuiTreeNodeFlags_DefaultOpen)) playback_section(lab);
     if (ImGui::CollapsingHeader("Aim", ImGuiTreeNodeFlags_DefaultOpen)) aim_section(lab);
     if (ImGui::CollapsingHeader("Practice")) practice_section(lab);

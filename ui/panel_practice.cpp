@@ -47,7 +47,7 @@ void practice_section(Lab& lab) {
     coloured_wrapped(ImGui::ColorConvertU32ToFloat4(kept_colour(lab.kept[k].colour)), "%s", lab.kept[k].label.c_str());
     ImGui::PopID();
   }
-  ImGui::Checkbox("camera follows the cue ball", &lab.settings.view.follow_cue);
+  fitting_checkbox("camera follows the cue ball", "follow cue ball", &lab.settings.view.follow_cue);
 }
 
 void view_section(Lab& lab, Camera& camera) {
@@ -82,7 +82,7 @@ void view_section(Lab& lab, Camera& camera) {
     ImGui::EndCombo();
   }
   mark("UI scale");
-  ImGui::Checkbox("presentation mode (F5)", &lab.settings.presentation);
+  fitting_checkbox("presentation mode (F5)", "presentation", &lab.settings.presentation);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("large fonts for a projector");
   if (ImGui::Button("Screenshot (F12)")) lab.screenshot_request = export_path(lab, "screenshot", "png");
   same_line_if_fits("Strobe picture");

@@ -277,7 +277,7 @@ void momentum_diagram(const Lab& lab, const std::vector<std::pair<int, Vec3>>& m
     d->AddRect({p.x, y}, {p.x + side, y + side}, IM_COL32(160, 160, 160, 255));
     ImGui::Dummy({side, ImGui::GetTextLineHeight()});
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
-    ImGui::TextUnformatted(label.c_str());
+    text_wrapped("%s", label.c_str());
   };
   for (const auto& [i, p] : momenta) {
     const glm::vec3 c = ball_look(lab.scene.balls[i].spec.id).color;
@@ -427,7 +427,7 @@ const char* event_words(const std::string& kind) {
 // cut "contact begins" and "contact ends" to the same "contact" in a narrow inspector).
 void events_list(Lab& lab) {
   static bool bed = false;
-  ImGui::Checkbox("with the bed's contacts", &bed);
+  fitting_checkbox("with the bed's contacts", "bed contacts", &bed);
   const auto& events = lab.shot->sim().events();
   if (!ImGui::BeginTable("events", 1, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY,
                          ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * 12)))

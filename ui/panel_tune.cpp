@@ -143,7 +143,7 @@ bool material_editor(Lab& lab, Tuning& t, int k) {
 void probe_readout(Lab& lab, const Tuning& t, int k) {
   if (!t.probes.valid[k]) return ImGui::TextDisabled("measuring...");
   const CollisionProbe& p = t.probes.result[k];
-  ImGui::TextColored(ImVec4(0.6f, 0.9f, 1, 1), "contact %.3f ms, penetration %.3f mm,\nrestitution %.3f, peak %.0f N",
+  coloured_wrapped(ImVec4(0.6f, 0.9f, 1, 1), "contact %.3f ms, penetration %.3f mm, restitution %.3f, peak %.0f N",
                      p.contact_time * 1e3, p.peak_penetration * 1e3, p.restitution, p.peak_force);
   mark(std::string("probe ") + *kPairs[k]);
   readout(std::string("contact_time ") + *kPairs[k], p.contact_time);
@@ -173,7 +173,7 @@ void changes_section(Lab& lab) {
   pass_wheel_on();
   ImGui::EndChild();
   ImGui::BeginDisabled(changes.empty());
-  if (ImGui::Button("Reset to the scene's values")) lab.reset_physics();
+  if (fitting_button("Reset to the scene's values", "Reset all")) lab.reset_physics();
   mark("Reset physics");
   ImGui::EndDisabled();
   same_line_if_fits("Pin as A");
@@ -293,7 +293,7 @@ bool Tuning::busy() const {
 
 void tune_panel(Lab& lab, Tuning& tuning) {
   update_probes(lab, tuning);
-  if (ImGui::CollapsingHeader("Changes from the scene file", ImGuiTreeNodeFlags_DefaultOpen)) changes_section(lab);
+  if (section("Changes from the scene file", "Changes", ImGuiTreeNodeFlags_DefaultOpen)) changes_section(lab);
   bool changed = false;
   const Fields f({"probe impact speed"});
   f.label("probe impact speed");
@@ -311,10 +311,10 @@ void tune_panel(Lab& lab, Tuning& tuning) {
     }
     ImGui::PopID();
   }
-  const bool world = ImGui::CollapsingHeader("World and integrator");
+  const bool world = section("World and integrator", "World");
   mark("World and integrator");
   if (world) changed |= world_section(lab);
-  const bool pauses = ImGui::CollapsingHeader("Pause on events");
+  const bool pauses = section("Pause on events", "Pauses");
   mark("Pause on events");
   if (pauses) {
     PauseOn& p = lab.settings.pause_on;
@@ -325,14 +325,14 @@ void tune_panel(Lab& lab, Tuning& tuning) {
     same_line_if_checkbox_fits("pocketed");
     ImGui::Checkbox("pocketed", &p.pocketed);
   }
-  if (ImGui::CollapsingHeader("Integrator diagnostics", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (section("Integrator diagnostics", "Integrator", ImGuiTreeNodeFlags_DefaultOpen)) {
     diagnostics(lab);
     step_plot(lab);
   }
-  const bool contacts = ImGui::CollapsingHeader("Contacts of the shot");
+  const bool contacts = section("Contacts of the shot", "Contacts");
   mark("Contacts of the shot");
   if (contacts) contacts_section(lab);
-  const bool measured = ImGui::CollapsingHeader("Measured shot", lab.measured.shot ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+  const bool measured = section("Measured shot", "Measured", lab.measured.shot ? ImGuiTreeNodeFlags_DefaultOpen : 0);
   mark("Measured shot");
   if (measured) measured_section(lab);
   else lab.apply_fit();  // a fit that finished while the section was closed still lands

@@ -127,9 +127,11 @@ void time_axis(ImDrawList* d, const Area& p, const PlotSpec& spec, float left, f
     const std::string s = format_tick(x, ticks);
     d->AddText({X - ImGui::CalcTextSize(s.c_str()).x / 2, p.b.y + 1}, text, s.c_str());
   }
-  // Under the axis, centred; in a narrow panel the origin's label drops "time", then starts at the plot's left edge.
+  // Under the axis, centred; in a narrow panel the origin's label drops "time", then "since", then starts at the
+  // plot's left edge.
   std::string label = (spec.origin_name.empty() ? "time" : "time since " + spec.origin_name) + " (" + unit.name + ")";
-  if (!spec.origin_name.empty() && ImGui::CalcTextSize(label.c_str()).x > width) label = label.substr(5);
+  for (size_t drop : {5, 6})
+    if (!spec.origin_name.empty() && ImGui::CalcTextSize(label.c_str()).x > width) label = label.substr(drop);
   d->AddText({std::max(left, (p.a.x + p.b.x - ImGui::CalcTextSize(label.c_str()).x) / 2),
               p.b.y + ImGui::GetTextLineHeight()},
              text, label.c_str());

@@ -250,6 +250,41 @@ void same_line_if_room(float width) {
 }
 }  // namespace
 
+namespace {
+// `label` if `width` (its width with the widget's own parts) fits what is left of the row, else `short_label`; both
+// under the full label's ID.
+std::string fitting_label(const char* label, const char* short_label, float width, bool& shortened) {
+  shortened = width > ImGui::GetContentRegionAvail().x;
+  return std::string(shortened ? short_label : label) + "###" + label;
+}
+}  // namespace
+
+bool section(const char* label, const char* short_label, ImGuiTreeNodeFlags flags) {
+  const ImGuiStyle& st = ImGui::GetStyle();
+  const float width = ImGui::CalcTextSize(label).x + ImGui::GetFontSize() + st.FramePadding.x * 3;
+  bool shortened = false;
+  const bool open = ImGui::CollapsingHeader(fitting_label(label, short_label, width, shortened).c_str(), flags);
+  if (shortened && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", label);
+  return open;
+}
+
+bool fitting_button(const char* label, const char* short_label) {
+  const float width = ImGui::CalcTextSize(label).x + ImGui::GetStyle().FramePadding.x * 2;
+  bool shortened = false;
+  const bool pressed = ImGui::Button(fitting_label(label, short_label, width, shortened).c_str());
+  if (shortened && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", label);
+  return pressed;
+}
+
+bool fitting_checkbox(const char* label, const char* short_label, bool* value) {
+  const ImGuiStyle& st = ImGui::GetStyle();
+  const float width = ImGui::GetFrameHeight() + st.ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
+  bool shortened = false;
+  const bool changed = ImGui::Checkbox(fitting_label(label, short_label, width, shortened).c_str(), value);
+  if (shortened && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", label);
+  return changed;
+}
+
 void same_line_if_fits(const char* next) {
   same_line_if_room(ImGui::CalcTextSize(next, nullptr, true).x + ImGui::GetStyle().FramePadding.x * 2);
 }

@@ -75,6 +75,12 @@ void flat_arrow(ImDrawList* d, ImVec2 from, ImVec2 to, ImU32 color, float width)
 // A hint in the disabled colour, wrapped at the panel's edge: a sentence stays whole in a narrow panel.
 void hint(const std::string& text);
 
+// A collapsing header, button or checkbox labelled `label` where that fits the panel's width, else `short_label` (a narrow
+// panel, presentation mode's large text), with the full label as its tooltip; its ID is the full label's either way.
+bool section(const char* label, const char* short_label, ImGuiTreeNodeFlags flags = 0);
+bool fitting_button(const char* label, const char* short_label);
+bool fitting_checkbox(const char* label, const char* short_label, bool* value);
+
 // Before a button labelled `next`: on the same line when it fits in what is left of the row, else on the next.
 void same_line_if_fits(const char* next);
 void same_line_if_checkbox_fits(const char* next);  // the same before a checkbox labelled `next`

@@ -958,6 +958,7 @@ def layout(binary, root, display, work):
             check(folded["y"] + folded["h"] <= size[1] < bars["y"] + bars["h"],
                   f"{size}: folding Balls brings the energy bars up (y {bars['y']:.0f} -> {folded['y']:.0f})")
             app.click_widget(app.state(), "section Balls")
+            headers_whole(app, size)
             app.key("F5")
             s = app.wait(lambda s: s["readouts"]["font size"] == normal, 10, f"{size}: F5 turns it off again")
         if size == (1920, 1080):  # room to spare: the inspector's left edge dragged 300 px widens it
@@ -990,6 +991,27 @@ def layout(binary, root, display, work):
         check(title["h"] < 40 and apart, f"{size}: the banner leaves the collapsed inspector's title clear (title "
               f"{title['x']:.0f},{title['y']:.0f} {title['w']:.0f}x{title['h']:.0f}, banner at y {banner['y']:.0f})")
         app.close()
+
+
+def headers_whole(app, size):
+    """In presentation mode's narrow inspector a header too long for it shows its short name: its text ends short
+    of the header's right end instead of running into the edge and being cut there."""
+    app.click_widget(app.state(), "tab Tuning")
+    for name in ("World and integrator", "Contacts of the shot"):
+        s = scroll_into_view(app, name)
+        r, panel = app.widget(s, name), app.widget(s, "panel Inspector")
+        right = min(r["x"] + r["w"], panel["x"] + panel["w"] - 16)  # short of the scrollbar
+        img = app.grab()
+        ink = img.count(right - 10, r["y"] + 3, right, r["y"] + r["h"] - 3, lambda p: min(p) > 170)
+        check(ink == 0, f"{size}: presentation mode: the header '{name}' ends inside the inspector "
+              f"({ink} text pixels in its last 10 px)")
+    s = app.state()
+    for _ in range(20):  # back to the top and the Teaching tab
+        if "tab Teaching" in s["widgets"] and s["widgets"]["tab Teaching"]["y"] >= 0:
+            break
+        app.scroll(app.widget(s, "panel Inspector")["x"] + 60, size[1] // 2, -5)
+        s = app.state()
+    app.click_widget(s, "tab Teaching")
 
 
 def drag_left_edge(app, size, dx):
