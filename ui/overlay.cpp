@@ -187,13 +187,13 @@ void paths(ImDrawList* d, const Viewport& vp, const Trails& trails, float alpha,
 }
 
 // Where each ball that moved in a kept shot stopped: a ring of its size in the shot's colour (the paths of straight
-// shots with different tips lie over each other along the aim line; their ends tell them apart).
-void ends(ImDrawList* d, const Viewport& vp, const Trails& trails, double radius, ImU32 colour) {
+// shots with different tips lie over each other along the aim line; their ends tell them apart), `grow` px wider.
+void ends(ImDrawList* d, const Viewport& vp, const Trails& trails, double radius, ImU32 colour, float grow = 0) {
   for (const auto& path : trails) {
     if (path.empty() || glm::length(path.back().position - path.front().position) < 0.5 * radius) continue;
     if (const auto s = vp.project(path.back().position))
-      d->AddCircle(v2(*s), std::max(3.0f, static_cast<float>(vp.screen_radius(path.back().position, radius))), colour,
-                   24, 2.0f);
+      d->AddCircle(v2(*s), std::max(3.0f, static_cast<float>(vp.screen_radius(path.back().position, radius))) + grow,
+                   colour, 24, 2.0f);
   }
 }
 
@@ -391,10 +391,12 @@ void draw_all(const Lab& lab, const Viewport& vp, ImDrawList* d) {
   Labels labels(ImRect(static_cast<float>(vp.x0), 0, static_cast<float>(vp.x0 + vp.width), static_cast<float>(vp.height)));
   if (v.ghost) paths(d, vp, lab.ghost, 0.35f, 1.5f, false);
   const double radius = lab.scene.balls.empty() ? kPoolBall.radius : lab.scene.balls.front().spec.radius;
+  // Kept shots as wide bands under the thinner lines drawn later, their end rings outside those of the prediction:
+  // a kept shot that the prediction repeats shows as a coloured edge along it instead of vanishing under it.
   for (const KeptShot& k : lab.kept)
     if (k.visible) {
-      paths(d, vp, k.trails, 0.8f, 2.0f, false, kept_colour(k.colour));
-      ends(d, vp, k.trails, radius, kept_colour(k.colour));
+      paths(d, vp, k.trails, 0.6f, 5.0f, false, kept_colour(k.colour));
+      ends(d, vp, k.trails, radius, kept_colour(k.colour), 3.0f);
     }
   if (v.compare && !lab.compare.empty()) paths(d, vp, lab.compare, 0.8f, 2.0f, false, IM_COL32(255, 255, 255, 255), true);
   if (lab.shot) {
