@@ -1,5 +1,6 @@
 #include "shotlab/io/measured.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -37,19 +38,31 @@ MeasuredShot parse_measured(const std::string& text, const std::string& source) 
   shot.name = std::filesystem::path(source).stem().string();
   std::istringstream in(text);
   std::string line;
-  if (!std::getline(in, line) || split(line) != std::vector<std::string>{"time", "ball", "x", "z"})
-    throw InputError(source + ": line 1: expected the header time,ball,x,z");
+  // The columns by name: a tracker's time,ball,x,z, or a trajectory `shotlab run` wrote (its other columns unread).
+  const std::vector<std::string> header = std::getline(in, line) ? split(line) : std::vector<std::string>{};
+  size_t col[4];
+  const char* names[] = {"time", "ball", "x", "z"};
+  for (int k = 0; k < 4; ++k) {
+    col[k] = static_cast<size_t>(std::find(header.begin(), header.end(), names[k]) - header.begin());
+    if (col[k] == header.size())
+      throw InputError(source + ": line 1: the header names no column '" + names[k] +
+                       "' (a measured shot has time,ball,x,z; other columns are left unread)");
+  }
+  const std::string fields = std::to_string(header.size());
   for (int n = 2; std::getline(in, line); ++n) {
     if (line.empty() || line == "\r") continue;
     const std::string where = source + ": line " + std::to_string(n);
     const std::vector<std::string> f = split(line);
-    if (f.size() != 4) throw InputError(where + ": expected 4 fields (time,ball,x,z), got " + std::to_string(f.size()));
-    if (f[1].empty()) throw InputError(where + ": ball: empty");
-    const MeasuredSample s{number(f[0], where, "time"), number(f[2], where, "x"), number(f[3], where, "z")};
-    auto& track = shot.tracks[f[1]];
-    if (track.empty()) shot.balls.push_back(f[1]);
+    if (f.size() != header.size())
+      throw InputError(where + ": expected " + fields + " fields, as the header has, got " + std::to_string(f.size()));
+    const std::string& ball = f[col[1]];
+    if (ball.empty()) throw InputError(where + ": ball: empty");
+    const MeasuredSample s{number(f[col[0]], where, "time"), number(f[col[2]], where, "x"),
+                           number(f[col[3]], where, "z")};
+    auto& track = shot.tracks[ball];
+    if (track.empty()) shot.balls.push_back(ball);
     else if (s.t < track.back().t)
-      throw InputError(where + ": time: " + f[0] + " s comes before the ball's previous sample");
+      throw InputError(where + ": time: " + f[col[0]] + " s comes before the ball's previous sample");
     track.push_back(s);
   }
   if (shot.balls.size() < 2) throw InputError(source + ": fewer than two balls tracked");

@@ -68,8 +68,10 @@ TEST(Fit, RecoversTheCueStrikeOfAnEngineMadeShot) {
   EXPECT_NEAR(c.side, truth.side, 0.02);
   EXPECT_NEAR(c.height, truth.height, 0.02);
   EXPECT_LT(r.shots[0].rms.at("white"), 2 * kNoise);  // the path is found to within the tracker's noise
-  std::printf("recovered: speed %.4f (%.4f), aim %.4f (%.4f), side %.4f (%.4f), height %.4f (%.4f); rms %.2f mm\n",
-              c.speed, truth.speed, c.aim_deg, truth.aim_deg, c.side, truth.side, c.height, truth.height,
+  const CueFit& sd = r.shots[0].sd;
+  std::printf("recovered: speed %.4f (%.4f, sd %.2g), aim %.4f (%.4f, sd %.2g), side %.4f (%.4f, sd %.2g), "
+              "height %.4f (%.4f, sd %.2g); rms %.2f mm\n", c.speed, truth.speed, sd.speed, c.aim_deg, truth.aim_deg,
+              sd.aim_deg, c.side, truth.side, sd.side, c.height, truth.height, sd.height,
               r.shots[0].rms.at("white") * 1e3);
 }
 
@@ -83,10 +85,11 @@ TEST(Fit, MeasuredShotsWithErrorsAreRefusedByLineAndField) {
     return std::string("no error");
   };
   const std::string head = "time,ball,x,z\n";
-  EXPECT_NE(message("t,b,x,z\n").find("line 1"), std::string::npos);
+  EXPECT_NE(message("t,b,x,z\n").find("line 1: the header names no column 'time'"), std::string::npos);
+  EXPECT_NE(message("time,ball,x,y\n").find("no column 'z'"), std::string::npos);
   EXPECT_NE(message(head + "0,white,0,0\n0.02,white,abc,0\n").find("line 3: x"), std::string::npos);
   EXPECT_NE(message(head + "0,white,0,0\n0,red,nan,0\n").find("line 3: x"), std::string::npos);
-  EXPECT_NE(message(head + "0,white,0,0,1\n").find("4 fields"), std::string::npos);
+  EXPECT_NE(message(head + "0,white,0,0,1\n").find("expected 4 fields, as the header has, got 5"), std::string::npos);
   EXPECT_NE(message(head + "0.1,white,0,0\n0.05,white,0.1,0\n").find("comes before"), std::string::npos);
   EXPECT_NE(message(head + "0,white,0,0\n0.02,white,0.1,0\n").find("fewer than two balls"), std::string::npos);
   EXPECT_NE(message(head + "0,white,0,0\n0,red,1,0\n9,red,1,0\n").find("no ball moves"), std::string::npos);
@@ -94,6 +97,13 @@ TEST(Fit, MeasuredShotsWithErrorsAreRefusedByLineAndField) {
   EXPECT_EQ(ok.cue_ball, "red");
   EXPECT_DOUBLE_EQ(ok.first_move, 0.04);
   EXPECT_EQ(ok.name, "x");
+  // The columns by name, others left unread: a trajectory `shotlab run` wrote reads as a measured shot.
+  const MeasuredShot run = parse_measured("time,ball,x,y,z,motion\n0,a,0,0.03,0,sliding\n0,b,1,0.03,2,stationary\n"
+                                          "0.02,a,0.1,0.03,-0.01,sliding\n", "run.csv");
+  EXPECT_EQ(run.cue_ball, "a");
+  ASSERT_EQ(run.tracks.at("a").size(), 2u);
+  EXPECT_DOUBLE_EQ(run.tracks.at("a")[1].z, -0.01);
+  EXPECT_DOUBLE_EQ(run.tracks.at("b")[0].z, 2);
 }
 
 TEST(Fit, RecoversASharedMaterialFromTwoShots) {

@@ -21,8 +21,10 @@ struct MeasuredShot {
 
 inline constexpr double kFirstMove = 0.005;  // m: a ball has moved once it is this far from where it was first seen
 
-// Reads a measured shot. Throws InputError naming the file, the line and the field: a bad header, a number that is not
-// one, time going backwards for a ball, fewer than two balls, no ball that moves.
+// Reads a measured shot: columns time, ball, x and z by the header's names, in any order among others (a trajectory
+// that `shotlab run --trajectory` wrote reads as one). Throws InputError naming the file, the line and the field: a
+// header without those columns, a row of another length, a number that is not one, time going backwards for a ball,
+// fewer than two balls, no ball that moves.
 MeasuredShot read_measured(const std::string& path);
 // The same from CSV text; `source` names it in messages.
 MeasuredShot parse_measured(const std::string& text, const std::string& source);
