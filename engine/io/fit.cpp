@@ -459,6 +459,8 @@ FitResult fit_measured(const Scene& base, const std::vector<MeasuredShot>& shots
   std::vector<std::vector<double>> cue_u(shots.size(), std::vector<double>(ctx.cue_params, 1.0));
   std::vector<double> shared_u(settings.paths.size(), 1.0);
   ceres::Solver::Summary summary;
+  std::string report = settings.paths.empty() ? "no joint fit: no shared values (each strike fitted alone)"
+                                              : "no joint fit: no shot followed far enough to tell the shared values";
   int iterations = 0;
   size_t residuals = 0;
   for (size_t s = 0; s < shots.size(); ++s) residuals += ctx.residuals[s];
@@ -494,7 +496,8 @@ FitResult fit_measured(const Scene& base, const std::vector<MeasuredShot>& shots
     CancelCallback cancel(settings.cancel);
     ceres::Solve(solver_options(settings.max_iterations, &cancel), &problem, &summary);
     iterations += static_cast<int>(summary.iterations.size());
-    say("joint fit, round " + std::to_string(round + 1) + ": " + summary.BriefReport());
+    report = summary.BriefReport();
+    say("joint fit, round " + std::to_string(round + 1) + ": " + report);
   }
   if (!best_cue.empty()) cue_u = best_cue, shared_u = best_shared;  // empty: cancelled before a round ended
   ctx.robust = 0;  // the uncertainties and errors below are those of plain least squares, on the whole shots
@@ -505,8 +508,12 @@ FitResult fit_measured(const Scene& base, const std::vector<MeasuredShot>& shots
   std::vector<int> sizes;
   for (auto& u : cue_u) blocks.push_back(u.data()), sizes.push_back(ctx.cue_params);
   if (!shared_u.empty()) blocks.push_back(shared_u.data()), sizes.push_back(static_cast<int>(shared_u.size()));
+  // The residuals' variance from the kept values' own cost: the last joint round's was of its robust loss over the
+  // followed windows, and a strike fitted alone has none.
+  double cost = NAN;
+  problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr);
   std::vector<std::vector<double>> sd;
-  uncertainty(problem, blocks, sizes, summary.final_cost, residuals, sd);
+  uncertainty(problem, blocks, sizes, cost, residuals, sd);
 
   FitResult r;
   r.paths = settings.paths, r.start = ctx.start, r.values = ctx.shared(shared_u.data());
@@ -515,7 +522,7 @@ FitResult fit_measured(const Scene& base, const std::vector<MeasuredShot>& shots
   const Scene fitted = ctx.with(r.values);
   for (size_t s = 0; s < shots.size(); ++s) r.shots.push_back(shot_result(ctx, s, fitted, cue_u[s], sd[s]));
   r.iterations = iterations;
-  r.report = summary.BriefReport();
+  r.report = ctx.cancelled() ? "cancelled" : report;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

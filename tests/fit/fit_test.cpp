@@ -69,6 +69,8 @@ TEST(Fit, RecoversTheCueStrikeOfAnEngineMadeShot) {
   EXPECT_NEAR(c.height, truth.height, 0.02);
   EXPECT_LT(r.shots[0].rms.at("white"), 2 * kNoise);  // the path is found to within the tracker's noise
   const CueFit& sd = r.shots[0].sd;
+  for (double v : {sd.speed, sd.aim_deg, sd.side, sd.height})  // from the residuals' scatter: a strike alone has some
+    EXPECT_TRUE(v > 0 && std::isfinite(v)) << v;
   std::printf("recovered: speed %.4f (%.4f, sd %.2g), aim %.4f (%.4f, sd %.2g), side %.4f (%.4f, sd %.2g), "
               "height %.4f (%.4f, sd %.2g); rms %.2f mm\n", c.speed, truth.speed, sd.speed, c.aim_deg, truth.aim_deg,
               sd.aim_deg, c.side, truth.side, sd.side, c.height, truth.height, sd.height,
