@@ -248,9 +248,7 @@ void same_line_if_room(float width) {
   const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
   if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width <= right) ImGui::SameLine();
 }
-}  // namespace
 
-namespace {
 // `label` if `width` (its width with the widget's own parts) fits what is left of the row, else `short_label`; both
 // under the full label's ID.
 std::string fitting_label(const char* label, const char* short_label, float width, bool& shortened) {
