@@ -143,8 +143,13 @@ bool material_editor(Lab& lab, Tuning& t, int k) {
 void probe_readout(Lab& lab, const Tuning& t, int k) {
   if (!t.probes.valid[k]) return ImGui::TextDisabled("measuring...");
   const CollisionProbe& p = t.probes.result[k];
-  coloured_wrapped(ImVec4(0.6f, 0.9f, 1, 1), "contact %.3f ms, penetration %.3f mm, restitution %.3f, peak %.0f N",
+  if (p.parted)
+    coloured_wrapped(ImVec4(0.6f, 0.9f, 1, 1), "contact %.3f ms, penetration %.3f mm, restitution %.3f, peak %.0f N",
                      p.contact_time * 1e3, p.peak_penetration * 1e3, p.restitution, p.peak_force);
+  else  // overdamped: the damper holds the bodies together; what the probe saw in its time
+    coloured_wrapped(ImVec4(1, 0.7f, 0.3f, 1), "overdamped: still in contact after %.0f ms (parting at %.3f of the "
+                     "impact speed), penetration %.3f mm, peak %.0f N", p.contact_time * 1e3, p.restitution,
+                     p.peak_penetration * 1e3, p.peak_force);
   mark(std::string("probe ") + *kPairs[k]);
   readout(std::string("contact_time ") + *kPairs[k], p.contact_time);
   readout(std::string("restitution ") + *kPairs[k], p.restitution);

@@ -84,6 +84,22 @@ TEST(Restitution, AnOverdampedProbeCurveReachesTheContactsEnd) {
   EXPECT_EQ(hit.time.size(), hit.force.size());
 }
 
+// Softest stiffness with a strong linear damper (as a developer typed them: 1e4 N/m^1.5, 100 N s/m) at 2 m/s: the
+// damper's 200 N at the touch stops the balls within 2 mm and they never part. The probe says so and reports the time
+// it watched, instead of a contact of 0 ms that reached 1.7 mm.
+TEST(Restitution, AProbeThatNeverPartsSaysSo) {
+  ContactMaterial m = default_ball_ball();
+  m.stiffness = 1e4, m.damping = 100;
+  const CollisionProbe stuck = probe_collision(m, kM, kR, 2.0, true);
+  EXPECT_FALSE(stuck.parted);
+  EXPECT_GT(stuck.contact_time, 0.19);
+  EXPECT_GT(stuck.peak_penetration, 1e-3);
+  EXPECT_LT(stuck.restitution, 0.01);
+  const CollisionProbe normal = probe_collision(default_ball_ball(), kM, kR, 2.0, true);
+  EXPECT_TRUE(normal.parted);
+  EXPECT_LT(normal.contact_time, 1e-3);
+}
+
 // In a scene file: restitution replaces the damping, and a value out of range is refused with the field named.
 TEST(Restitution, SceneFileDerivesTheDamping) {
   nlohmann::json doc = {{"materials", {{"ball_cushion", {{"restitution", 0.8}, {"restitution_speed", 1.0}}}}},

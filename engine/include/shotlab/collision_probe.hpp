@@ -10,7 +10,8 @@
 namespace shotlab {
 
 struct CollisionProbe {
-  double contact_time = 0;       // s
+  double contact_time = 0;       // s; where the bodies do not part (`parted` false), the time probed in contact
+  bool parted = true;            // false: still touching at the probe's end, 0.2 s in (an overdamped contact)
   double peak_penetration = 0;   // m
   double peak_force = 0;         // N
   double restitution = 0;        // separation speed / approach speed
