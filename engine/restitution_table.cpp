@@ -45,4 +45,11 @@ double restitution_at(const ContactMaterial& m, double m_eff, double v) {
          (u + 1) * u * (u - 1) / 6 * d;
 }
 
+void switch_damping_law(ContactMaterial& material, DampingLaw law, double m_eff, double v) {
+  if (material.damping_law == law) return;
+  const double e = restitution_at(material, m_eff, v);
+  material.damping_law = law;
+  material.damping = damping_for_restitution(material, m_eff, v, e);
+}
+
 }  // namespace shotlab

@@ -122,7 +122,11 @@ bool material_editor(Lab& lab, Tuning& t, int k) {
   mark(std::string("stiffness ") + *kPairs[k]);
   int law = static_cast<int>(m.damping_law);
   f.label("damping law");
-  if (ImGui::Combo("##law", &law, "linear (thesis)\0Hunt-Crossley\0")) m.damping_law = static_cast<DampingLaw>(law), c = true;
+  if (ImGui::Combo("##law", &law, "linear (thesis)\0Hunt-Crossley\0")) {  // the same elasticity under the new law
+    switch_damping_law(m, static_cast<DampingLaw>(law), effective_mass(k == 0, probe_ball(lab).mass),
+                       lab.settings.impact_speed);
+    c = true;
+  }
   const bool linear = m.damping_law == DampingLaw::Linear;
   f.label("damping");
   c |= slider("##damping", m.damping, 0.0, linear ? 1e5 : 10.0, linear ? "%.4g N s/m" : "%.4g s/m", true);

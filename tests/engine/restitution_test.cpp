@@ -100,6 +100,20 @@ TEST(Restitution, AProbeThatNeverPartsSaysSo) {
   EXPECT_LT(normal.contact_time, 1e-3);
 }
 
+// The tuning panel's law switch: the cut's ball-ball damping of 20 N s/m kept as 20 s/m under Hunt-Crossley gave a
+// restitution of 0.025 instead of 0.957 (a developer's trial). Switched both ways, the probe's restitution at the
+// probe speed stays where it was.
+TEST(Restitution, SwitchingTheDampingLawKeepsTheRestitution) {
+  ContactMaterial m = default_ball_ball();
+  const double before = probe_collision(m, kM, kR, 2.0, true).restitution;
+  switch_damping_law(m, DampingLaw::HuntCrossley, effective_mass(true, kM), 2.0);
+  EXPECT_EQ(m.damping_law, DampingLaw::HuntCrossley);
+  EXPECT_NEAR(probe_collision(m, kM, kR, 2.0, true).restitution, before, 0.002);
+  switch_damping_law(m, DampingLaw::Linear, effective_mass(true, kM), 2.0);
+  EXPECT_NEAR(m.damping, default_ball_ball().damping, 0.01 * default_ball_ball().damping);
+  EXPECT_NEAR(probe_collision(m, kM, kR, 2.0, true).restitution, before, 0.002);
+}
+
 // In a scene file: restitution replaces the damping, and a value out of range is refused with the field named.
 TEST(Restitution, SceneFileDerivesTheDamping) {
   nlohmann::json doc = {{"materials", {{"ball_cushion", {{"restitution", 0.8}, {"restitution_speed", 1.0}}}}},

@@ -36,4 +36,9 @@ std::string apply_restitution(ContactMaterial& material, double m_eff);
 // kept; the material's own damping when e is out of range.
 double damping_for_restitution(const ContactMaterial& material, double m_eff, double v, double e);
 
+// Switches the material's damping law keeping its restitution at impact speed v (m/s) for effective mass m_eff: the
+// two laws' damping coefficients differ in meaning and unit (N s/m against s/m), so the number cannot be kept. Where
+// the old restitution is out of reach (an overdamped contact), the damping is left as it was.
+void switch_damping_law(ContactMaterial& material, DampingLaw law, double m_eff, double v);
+
 }  // namespace shotlab
