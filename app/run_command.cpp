@@ -33,7 +33,7 @@ std::string check_run(const RunOptions& o, double duration) {
 
 int run(const RunOptions& o) {
   Scene scene = load_scene(o.scene, o.overrides);
-  const double duration = o.duration.value_or(scene.duration);
+  const double duration = run_duration(scene, o.duration, o.until_rest);
   if (const std::string problem = check_run(o, duration); !problem.empty()) {
     std::cerr << "shotlab: " << problem << "\n";
     return 1;
@@ -78,6 +78,9 @@ int run(const RunOptions& o) {
                 << " rejected), " << st.rhs_evaluations << " rhs evaluations, ";
     std::cout << sim.events().size() << " events, wall " << st.wall_seconds << " s\n";
   }
+  if (o.until_rest && sim.status() == Status::Ok && !sim.at_rest())
+    std::cerr << "shotlab: warning: " << o.scene << ": balls still move at t = " << sim.time()
+              << " s, where the run ends (a longer --duration runs on to rest)\n";
   if (sim.status() != Status::Ok) {
     std::cerr << "shotlab: " << o.scene << ": simulation stopped (" << status_name(sim.status())
               << "): " << sim.diagnostic() << "\n";
@@ -107,7 +110,8 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--trajectory", o->trajectory, "Write every ball's state as CSV");
   cmd->add_option("--sample-rate", o->sample_rate, "Trajectory samples per second (0.001 to 100000)");
   cmd->add_option("--max-samples", o->max_samples, "Refuse runs of more samples than this (default 1000000)");
-  cmd->add_flag("--until-rest", o->until_rest, "Stop early once every ball is at rest");
+  cmd->add_flag("--until-rest", o->until_rest,
+                "Stop once every ball is at rest; without --duration, run up to 60 s (or the scene's duration if longer)");
   cmd->add_flag("-q,--quiet", o->quiet, "No summary line");
   cmd->callback([o] {
     if (const int code = run_scene(*o)) throw CLI::RuntimeError(code);

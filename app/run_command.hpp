@@ -16,7 +16,7 @@ struct RunOptions {
   std::string trajectory;              // CSV, empty: none
   double sample_rate = 60;             // Hz, trajectory samples (also the advance() slice)
   double max_samples = 1e6;            // runs of more samples (duration x sample rate) are refused
-  bool until_rest = false;             // stop early once every ball is at rest
+  bool until_rest = false;             // stop once every ball is at rest (run_duration: up to kRestLimit)
   bool quiet = false;
 };
 

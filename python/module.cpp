@@ -210,7 +210,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("run", [](const py::object& scene, const std::vector<std::string>& overrides, std::optional<double> duration,
                   bool until_rest, double sample_rate) {
     const Scene s = load(scene, overrides);
-    const double d = duration.value_or(s.duration);
+    const double d = run_duration(s, duration, until_rest);
     if (!(d > 0) || d > kMaxDuration) throw py::value_error("duration: must be above 0 and at most 3600 s");
     if (!(sample_rate > 0)) throw py::value_error("sample_rate: must be above 0");
     HeadlessRun run = start_run(s);

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "shotlab/io/run.hpp"
 #include "ui/camera.hpp"
 #include "ui/layout.hpp"
 
@@ -41,7 +42,7 @@ struct Settings {
   double slowmo = 1.0;          // simulated seconds per real second
   double impact_speed = 2.0;    // m/s, of the tuning panel's collision probes
   double budget_ms = 10.0;      // physics wall time per frame
-  double safety_limit = 60.0;   // s of simulated time a shot may run while balls still move
+  double safety_limit = kRestLimit;  // s of simulated time a shot may run while balls still move
   float ui_scale = 1.0f;        // fonts and widgets; presentation mode uses its own
   bool presentation = false;    // large fonts and thick lines for a projector; not saved: F5 always turns it on
   std::string last_scene;       // path

@@ -41,6 +41,11 @@ HeadlessRun start_run(const Scene& scene) {
   return run;
 }
 
+double run_duration(const Scene& scene, std::optional<double> duration, bool until_rest) {
+  if (duration) return *duration;
+  return until_rest ? std::max(scene.duration, kRestLimit) : scene.duration;
+}
+
 std::string advance_run(Simulation& sim, double duration, double sample_rate, bool until_rest,
                         const std::function<void()>& on_sample, const RunLimits& limits) {
   const auto start = std::chrono::steady_clock::now();

@@ -1,6 +1,9 @@
 // Sweep plans: --vary options read, and the grid or the random sample of runs they make.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <random>
 
 #include "shotlab/io/json_reader.hpp"
@@ -35,6 +38,15 @@ bool read_range(const std::string& text, SweepAxis& axis, const std::string& whe
   }
   axis.range = true;
   return true;
+}
+
+// Value k of a range's n: evenly spaced from lo to hi, the end exactly, in 12 significant digits (0:0.3:7 gives 0.05,
+// not the 0.049999999999999996 of its arithmetic, which a table of runs would not group with a typed 0.05).
+std::string grid_value(const SweepAxis& a, int k) {
+  if (k + 1 == a.count && a.count > 1) return number_text(a.hi);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.12g", a.lo + (a.hi - a.lo) * k / std::max(1, a.count - 1));
+  return number_text(std::strtod(text, nullptr));
 }
 
 // "a,b,c" split at commas outside brackets and quotes, so that "[1,0,0],[2,0,0]" is two values.
@@ -105,8 +117,10 @@ SweepPlan plan_sweep(const std::vector<SweepAxis>& axes, size_t samples, uint64_
     if (a.range && a.count == 0)
       throw InputError("--vary " + a.path + ": a grid needs the range's count, lo:hi:n (or sample it with --samples N)");
     std::vector<std::string> v = a.values;
+    if (a.range && a.count == 1 && a.hi != a.lo)
+      throw InputError("--vary " + a.path + ": a range of one value (lo:hi:1) runs lo only: give n of 2 or more");
     for (int k = 0; a.range && k < a.count; ++k)
-      v.push_back(number_text(k + 1 == a.count && a.count > 1 ? a.hi : a.lo + (a.hi - a.lo) * k / std::max(1, a.count - 1)));
+      v.push_back(grid_value(a, k));
     total *= static_cast<double>(v.size());
     values.push_back(std::move(v));
   }

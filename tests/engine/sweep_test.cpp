@@ -53,6 +53,26 @@ TEST(SweepPlan, GridVariesTheFirstPathSlowestAndKeepsRangeEnds) {
   EXPECT_EQ(p.rows[5][0], "0.3");  // the end exactly, not 0.1 + 2 * 0.1
   EXPECT_EQ(plan({"a=[1,2,3]"}).rows.size(), 3u);  // one JSON array: its elements
   EXPECT_EQ(plan({"integrator.method=rk4,dopri5"}).rows[1][0], "dopri5");
+  // The values a developer typed the range for, not their arithmetic's (0.3 / 6 = 0.049999999999999996).
+  const SweepPlan fine = plan({"f=0:0.3:7"});
+  EXPECT_EQ(fine.rows[1][0], "0.05");
+  EXPECT_EQ(fine.rows[2][0], "0.1");
+  EXPECT_EQ(fine.rows[4][0], "0.2");
+  EXPECT_EQ(plan({"f=0.1:0.1:1"}).rows.size(), 1u);  // one value where lo is hi
+}
+
+// A run to rest without a duration of its own goes past a scene's shorter one: the cut preset's 4 s end with the cue
+// ball still rolling; it rests at 5.8 s.
+TEST(RunDuration, ToRestItGoesPastAShortSceneDuration) {
+  const Scene cut = load_scene(preset("cut.json"));
+  ASSERT_LT(cut.duration, 5.0);
+  EXPECT_EQ(run_duration(cut, std::nullopt, false), cut.duration);
+  EXPECT_EQ(run_duration(cut, 2.5, true), 2.5);
+  HeadlessRun run = start_run(cut);
+  advance_run(*run.sim, run_duration(cut, std::nullopt, true), 60, true);
+  EXPECT_TRUE(run.sim->at_rest());
+  EXPECT_GT(run.sim->time(), cut.duration);
+  EXPECT_LT(run.sim->time(), 10.0);
 }
 
 TEST(SweepPlan, RandomSamplesAreFixedBySeedAndInsideTheirRanges) {
@@ -84,6 +104,7 @@ TEST(SweepPlan, BadOptionsNameTheOptionAndTheProblem) {
   EXPECT_NE(message({"cue.speed=1:x:3"}).find("numbers lo and hi"), std::string::npos);
   EXPECT_NE(message({"cue.speed=1:2:0"}).find("count n"), std::string::npos);
   EXPECT_NE(message({"cue.speed=1:2"}).find("lo:hi:n"), std::string::npos);
+  EXPECT_NE(message({"cue.speed=0.1:0.3:1"}).find("one value"), std::string::npos);
   EXPECT_NE(message({"a=0:1:10000", "b=0:1:10000"}).find("more than"), std::string::npos);
   EXPECT_NE(message({}).find("no path"), std::string::npos);
   EXPECT_EQ(message({"cue.speed=1:2"}, 5), "no error");
@@ -138,6 +159,14 @@ TEST(Sweep, ABrokenSceneOrAFailingWriterStopsWithAMessage) {
   SweepSettings too_long;
   too_long.duration = 1e9;
   EXPECT_THROW(Sweep(text_of(preset("cut.json")), "cut.json", plan({"cue.speed=1"}), too_long), InputError);
+  // A misspelt path would fail every row alike: refused before the first run, naming the option and the field.
+  try {
+    Sweep(text_of(preset("cut.json")), "cut.json", plan({"cue.speed=1", "materials.ball_ball.fricton=0:0.3:2"}), {});
+    ADD_FAILURE() << "a misspelt path was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--vary materials.ball_ball.fricton: cut.json: materials.ball_ball.fricton: "
+                                         "unknown field (did you mean 'friction'?)"), std::string::npos) << e.what();
+  }
   const Sweep sweep(text_of(preset("cut.json")), "cut.json", plan({"cue.speed=1:2:6"}), {});
   EXPECT_THROW(sweep.run(0, 6, 2, [](size_t i, const std::string&) {
     if (i == 2) throw InputError("out.csv: disk full");

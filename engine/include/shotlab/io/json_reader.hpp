@@ -16,6 +16,10 @@ namespace shotlab {
 struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// A field the format does not have (a misspelt name): what a sweep refuses before its first run.
+struct UnknownFieldError : InputError {
+  using InputError::InputError;
+};
 
 // A value as an error message quotes it: a number or a short string as written, anything longer or nested by its
 // kind ("an array of 3", "an object"); invalid UTF-8 replaced. Never long, never recursive.

@@ -3,6 +3,7 @@
 #pragma once
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,13 @@ struct RunLimits {
   size_t max_events = 0;    // events recorded
   std::function<bool(const Simulation&)> enough;  // if set, checked after each slice: true ends the run (not a limit)
 };
+
+// The longest a run to rest goes where no duration is given: any shot's balls rest well within it (a break takes 7 s).
+inline constexpr double kRestLimit = 60.0;  // s of simulated time
+
+// How long a run goes: `duration` where given, else the scene's; with until_rest and none given, the longer of the
+// scene's and kRestLimit (a scene's duration may end before its shot rests: the cut preset's 4 s, rest at 5.9 s).
+double run_duration(const Scene& scene, std::optional<double> duration, bool until_rest);
 
 // Advances to `duration` s in slices of 1 / sample_rate s, calling on_sample (if any) after each. The step limit counts
 // per kStepLimitWindow of simulated time, not per slice, so that how a run is sampled never changes whether it stops.
