@@ -34,10 +34,15 @@ void print_summary(const MarginCommand& o, const MarginOptions& m, const MarginR
             << m.samples << " replays, level " << o.level << "; the intended stroke "
             << (r.nominal_success ? "succeeds" : "fails") << ")\n";
   if (m.noise.aim_deg + m.noise.speed_pct + m.noise.tip_mm + m.noise.elevation_deg == 0) return;
-  for (int k = 0; k < kNoiseSources && !o.no_sensitivity; ++k)
+  for (int k = 0; k < kNoiseSources && !o.no_sensitivity; ++k) {
     std::cout << "  " << std::left << std::setw(14) << noise_source_name(k) << std::right << " alone: success "
-              << r.alone[k] << "; the shot holds from " << r.tolerance[k].lo << (r.tolerance[k].bounded_lo ? "" : " (or less)")
-              << " to " << r.tolerance[k].hi << (r.tolerance[k].bounded_hi ? "" : " (or more)") << "\n";
+              << r.alone[k] << "; ";
+    if (!r.nominal_success)  // no window around a stroke that misses (its tolerance reads 0 to 0)
+      std::cout << "no window: the intended stroke fails\n";
+    else
+      std::cout << "the shot holds from " << r.tolerance[k].lo << (r.tolerance[k].bounded_lo ? "" : " (or less)")
+                << " to " << r.tolerance[k].hi << (r.tolerance[k].bounded_hi ? "" : " (or more)") << "\n";
+  }
   std::cout << std::defaultfloat;
 }
 

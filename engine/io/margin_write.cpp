@@ -78,7 +78,8 @@ json margin_to_json(const Scene& scene, const MarginOptions& o, const MarginResu
     json sens = json::object();
     for (int k = 0; k < kNoiseSources; ++k)
       sens[noise_source_name(k)] = {{"alone", r.alone[k]},
-                                    {"tolerance", {r.tolerance[k].lo, r.tolerance[k].hi}},
+                                    {"tolerance", r.nominal_success ? json{r.tolerance[k].lo, r.tolerance[k].hi}
+                                                                    : json(nullptr)},  // none round a miss
                                     {"bounded", {r.tolerance[k].bounded_lo, r.tolerance[k].bounded_hi}}};
     out["sensitivity"] = sens;
   }

@@ -130,5 +130,19 @@ TEST(Margin, ThePresetCutPotsAtTheIntendedStrokeAndTheReportNamesIt) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 61);
 }
 
+// Aimed 5 degrees off, the cut misses as struck: there is no window round the stroke, and the report says none
+// (a developer read "the shot holds from 0.000 to 0.000" for every source).
+TEST(Margin, AStrokeThatMissesHasNoWindowInTheReport) {
+  MarginOptions o;
+  o.noise = stroke_noise("pro");
+  o.goal = parse_goal("pocket:1@pocket-right-front");
+  o.samples = 20;
+  const Scene off = load_scene(preset("cut.json"), {"cue.aim_deg=-80"});
+  const MarginResult r = shot_margin(off, o);
+  ASSERT_FALSE(r.nominal_success);
+  const nlohmann::json j = margin_to_json(off, o, r);
+  EXPECT_TRUE(j["sensitivity"]["aim_deg"]["tolerance"].is_null());
+}
+
 }  // namespace
 }  // namespace shotlab::test
