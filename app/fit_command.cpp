@@ -21,7 +21,7 @@ struct FitCommand {
   int jobs = 0, iterations = 100;
 };
 
-void print_table(const FitResult& r) {
+void print_table(const FitResult& r, int max_iterations) {
   std::cout << std::fixed << std::setprecision(1);
   for (const ShotFit& f : r.shots) {
     std::cout << f.name << ": cue " << f.cue_ball << " " << std::setprecision(3) << f.cue.speed << " m/s, aim "
@@ -33,7 +33,11 @@ void print_table(const FitResult& r) {
   for (size_t k = 0; k < r.paths.size(); ++k)
     std::cout << std::defaultfloat << std::setprecision(5) << r.paths[k] << ": " << r.start[k] << " -> " << r.values[k]
               << " (sd " << std::setprecision(2) << r.sd[k] << ")\n";
-  std::cout << std::defaultfloat << r.iterations << " iterations, " << std::setprecision(3) << r.seconds << " s\n";
+  std::cout << std::defaultfloat << r.iterations << " iterations over the joint fit's rounds (at most " << max_iterations
+            << " a round), " << std::setprecision(3) << r.seconds << " s\n";
+  if (r.report.find("NO_CONVERGENCE") != std::string::npos)
+    std::cerr << "shotlab fit: warning: the last joint round stopped at " << max_iterations
+              << " iterations before it converged: the values may still move (raise --iterations)\n";
 }
 
 int fit(const FitCommand& o) {
@@ -57,7 +61,7 @@ int fit(const FitCommand& o) {
       save_scene((std::filesystem::path(o.scenes) / (shots[s].name + ".json")).string(), one);
     }
   }
-  if (!o.quiet) print_table(r);
+  if (!o.quiet) print_table(r, o.iterations);
   if (!o.picture.empty()) return run_plot_script("fit_plot.py", {o.out, o.picture}, "shotlab fit") ? 0 : 1;
   return 0;
 }
@@ -73,7 +77,7 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--set", o->overrides, "Override a value of the scene first: PATH=VALUE");
   cmd->add_flag("--elevation", o->elevation, "Fit each cue's elevation too (else a level cue)");
   cmd->add_option("-j,--jobs", o->jobs, "Threads (default: one per core)")->check(CLI::Range(0, 1024));
-  cmd->add_option("--iterations", o->iterations, "Iterations of the joint fit (default 100)")->check(CLI::Range(1, 10000));
+  cmd->add_option("--iterations", o->iterations, "Iterations a round of the joint fit may take (default 100)")->check(CLI::Range(1, 10000));
   cmd->add_option("--out", o->out, "Write the fit as JSON");
   cmd->add_option("--picture", o->picture, "Draw measured and fitted paths into a PNG or SVG (needs --out)");
   cmd->add_option("--scenes", o->scenes, "Write each shot as a scene with its fitted strike into this folder");

@@ -495,7 +495,7 @@ FitResult fit_measured(const Scene& base, const std::vector<MeasuredShot>& shots
     if (problem.NumResidualBlocks() == 0) break;  // no shot is followed far enough to tell the shared values
     CancelCallback cancel(settings.cancel);
     ceres::Solve(solver_options(settings.max_iterations, &cancel), &problem, &summary);
-    iterations += static_cast<int>(summary.iterations.size());
+    iterations += std::max(0, static_cast<int>(summary.iterations.size()) - 1);  // Ceres lists its start as 0
     report = summary.BriefReport();
     say("joint fit, round " + std::to_string(round + 1) + ": " + report);
   }
