@@ -77,15 +77,17 @@ void browser_popup(Lab& lab, std::string& dir) {
   }
   ImGui::SameLine();
   if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
-  if (lab.message_kind == MessageKind::LoadError)  // wrapped: a load error names the whole path
-    coloured_wrapped(ImVec4(1, 0.6f, 0.4f, 1), "%s", lab.message.c_str());
   text_wrapped("%s", dir.c_str());
   if (ImGui::Button("Up")) dir = fs::path(dir).parent_path().string();
   ImGui::SameLine();
   if (ImGui::Button("Presets")) dir = lab.data_root + "/presets";
   ImGui::SameLine();
   if (ImGui::Button("Home")) dir = user_folder({}, "");
-  ImGui::BeginChild(("entries " + dir).c_str(), ImVec2(0, 0), true);  // one child a folder: each keeps its own scroll
+  // Under the list, in room kept for it: above, a load error pushed every entry down a row under the pointer, and the
+  // next click opened the file below the one that failed.
+  const bool failed = lab.message_kind == MessageKind::LoadError;
+  const float below = failed ? -3.2f * ImGui::GetTextLineHeightWithSpacing() : 0.0f;
+  ImGui::BeginChild(("entries " + dir).c_str(), ImVec2(0, below), true);  // one child a folder: each its own scroll
   for (const DirEntry& e : list_scene_dir(dir)) {
     const std::string label = e.folder ? "[" + e.name + "]" : e.name;
     const bool picked = ImGui::Selectable(label.c_str());
@@ -97,6 +99,7 @@ void browser_popup(Lab& lab, std::string& dir) {
     }
   }
   ImGui::EndChild();
+  if (failed) coloured_wrapped(ImVec4(1, 0.6f, 0.4f, 1), "%s", lab.message.c_str());  // wrapped: it names the path
   ImGui::EndPopup();
 }
 

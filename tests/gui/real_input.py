@@ -1076,6 +1076,7 @@ def bad_scene(binary, root, display, work):
     app.type(scenes)  # a folder typed: the dialog shows it
     app.key("Return")
     time.sleep(0.4)
+    listed = app.state()["widgets"].get("browse broken.json")
     # A name typed there is the file in the folder shown, not in the working folder.
     for path, what in (("broken.json", "a broken file"), (os.path.join(root, "presets", "break.json"), "the break preset")):
         if what != "a broken file":
@@ -1089,6 +1090,10 @@ def bad_scene(binary, root, display, work):
         if what == "a broken file":
             check(len(s["balls"]) == 2 and bad in s["message"] and "mass" in s["message"],
                   f"a broken file typed by its name in the folder shown is named, the scene kept ({s['message']})")
+            after = s["widgets"].get("browse broken.json")
+            check(listed is not None and after is not None and after["y"] == listed["y"],
+                  f"the list stays where it was under the error (broken.json at y {listed and listed['y']} -> "
+                  f"{after and after['y']}): the next click takes the entry under the pointer")
             app.key("s")  # the shoot key, with the dialog still open
             time.sleep(0.3)
             check(not app.state()["has_shot"], "keys do not reach the scene behind the open dialog: S does not shoot")
