@@ -148,6 +148,17 @@ void save_as_popup(Lab& lab, std::string& typed, const std::string& folder) {
   ImGui::EndPopup();
 }
 
+// The name a first save suggests: the file's, or the scene's where it became another there (Set up break on the cut
+// preset: "break", not "cut"), in letters, digits, '-' and '_'.
+std::string save_stem(const Lab& lab) {
+  if (lab.scene.name.empty() || lab.scene.name == lab.loaded.name)
+    return lab.scene_path.empty() ? "scene" : fs::path(lab.scene_path).stem().string();
+  std::string stem;
+  for (char c : lab.scene.name)
+    stem += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? static_cast<char>(std::tolower(c)) : '_';
+  return stem;
+}
+
 void preset_combo(Lab& lab) {
   const Fields f({"preset", "recent"});
   f.label("preset");
@@ -190,7 +201,7 @@ void scene_section(Lab& lab) {
   browser_popup(lab, browse_dir);
   same_line_if_fits("Save");
   static std::string save_path;
-  const std::string stem = lab.scene_path.empty() ? "scene" : fs::path(lab.scene_path).stem().string();
+  const std::string stem = save_stem(lab);
   const std::string mine = (fs::path(folder) / (stem + "-mine.json")).string();
   if (ImGui::Button("Save")) {
     if (shipped) {
@@ -200,6 +211,7 @@ void scene_section(Lab& lab) {
       save_to(lab, lab.scene_path);
     }
   }
+  mark("Save");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(shipped ? "a shipped preset is not overwritten: choose a file" : "save to %s",
                       lab.scene_path.c_str());
