@@ -8,6 +8,7 @@ usage: fit_plot.py [--] FIT.json PICTURE.png|svg   (`shotlab fit --picture` runs
 import json
 import math
 import sys
+import textwrap
 
 import matplotlib
 
@@ -50,8 +51,9 @@ def main(argv):
     for ax in list(axes.flat)[len(shots):]:
         ax.axis("off")
     axes[0][0].legend(fontsize=7, loc="upper right")
-    fig.suptitle(f"measured (dots) and fitted (lines); median cue-ball error {fit['median_cue_rms_mm']:.0f} mm",
-                 fontsize=10)
+    title = f"measured (dots) and fitted (lines); median cue-ball error {fit['median_cue_rms_mm']:.0f} mm"
+    # Wrapped to the figure's width (about 12 characters an inch at this size): one shot's figure cut it at both ends.
+    fig.suptitle(textwrap.fill(title, width=int(4.2 * cols * 12), break_on_hyphens=False), fontsize=10)
     fig.tight_layout()
     fig.savefig(args[1], dpi=110)
     return 0
