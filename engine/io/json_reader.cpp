@@ -66,7 +66,7 @@ void JsonNode::finish() const {
     if (!used_->count(item.key())) {
       const std::string hint =
           nearest(item.key(), *used_, [](const std::string& k) { return " (did you mean '" + k + "'?)"; });
-      throw UnknownFieldError(source_ + ": " + child_path(item.key()) + ": unknown field" + hint);
+      throw UnknownFieldError(source_ + ": " + child_path(item.key()) + ": unknown field" + hint, item.key());
     }
 }
 

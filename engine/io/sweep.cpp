@@ -72,14 +72,17 @@ Sweep::Sweep(const std::string& scene_text, const std::string& source, SweepPlan
   const Scene scene = parse_scene(doc_, settings_.overrides.empty() ? source : source + " (with --set overrides)");
   if (settings_.duration && !(*settings_.duration > 0 && *settings_.duration <= kMaxDuration))
     throw InputError("--duration: must be a number of seconds above 0 and at most " + number_text(kMaxDuration));
-  // A misspelt path fails every run alike: refused here, with the field's name, rather than as rows of errors. Its
-  // values are tried in the runs (a bad one fails only its rows).
+  // A path whose last name the format does not have (a misspelt field) fails every run alike: refused here, with the
+  // nearest name, rather than as rows of errors. Its values are tried in the runs (a bad one fails only its rows).
   for (size_t a = 0; a < plan_.paths.size() && !plan_.rows.empty(); ++a) try {
       nlohmann::json doc = doc_;
       apply_override(doc, plan_.paths[a] + "=" + plan_.rows[0][a]);
       parse_scene(doc, source_);
     } catch (const UnknownFieldError& e) {
-      throw InputError("--vary " + plan_.paths[a] + ": " + e.what());
+      const std::string& path = plan_.paths[a];
+      if (path.size() >= e.name.size() && path.compare(path.size() - e.name.size(), e.name.size(), e.name) == 0 &&
+          (path.size() == e.name.size() || path[path.size() - e.name.size() - 1] == '.'))
+        throw InputError("--vary " + path + ": " + e.what());
     } catch (const InputError&) {  // a value the scene refuses: that row's error
     }
   for (const InitialBall& b : scene.balls) ball_ids_.push_back(b.spec.id);

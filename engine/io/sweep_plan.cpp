@@ -40,13 +40,19 @@ bool read_range(const std::string& text, SweepAxis& axis, const std::string& whe
   return true;
 }
 
-// Value k of a range's n: evenly spaced from lo to hi, the end exactly, in 12 significant digits (0:0.3:7 gives 0.05,
-// not the 0.049999999999999996 of its arithmetic, which a table of runs would not group with a typed 0.05).
+// Value k of a range's n: evenly spaced from lo to hi, the ends exactly as typed, the others rounded to 12 digits of
+// the range's larger end (0:0.3:7 gives 0.05, not the 0.049999999999999996 of its arithmetic, which a table of runs
+// would not group with a typed 0.05; -0.2:0.4:4 gives 0, not 2.8e-17).
 std::string grid_value(const SweepAxis& a, int k) {
-  if (k + 1 == a.count && a.count > 1) return number_text(a.hi);
+  if (k == 0) return number_text(a.lo);
+  if (k + 1 == a.count) return number_text(a.hi);
+  const double v = a.lo + (a.hi - a.lo) * k / (a.count - 1);
+  const double scale = std::max(std::abs(a.lo), std::abs(a.hi));
+  if (!(scale > 0)) return number_text(v);
+  const double quantum = std::pow(10.0, std::floor(std::log10(scale)) - 11);
   char text[32];
-  std::snprintf(text, sizeof text, "%.12g", a.lo + (a.hi - a.lo) * k / std::max(1, a.count - 1));
-  return number_text(std::strtod(text, nullptr));
+  std::snprintf(text, sizeof text, "%.12g", std::round(v / quantum) * quantum);
+  return number_text(std::strtod(text, nullptr) + 0.0);  // + 0.0: no "-0"
 }
 
 // "a,b,c" split at commas outside brackets and quotes, so that "[1,0,0],[2,0,0]" is two values.

@@ -58,6 +58,9 @@ TEST(SweepPlan, GridVariesTheFirstPathSlowestAndKeepsRangeEnds) {
   EXPECT_EQ(fine.rows[1][0], "0.05");
   EXPECT_EQ(fine.rows[2][0], "0.1");
   EXPECT_EQ(fine.rows[4][0], "0.2");
+  EXPECT_EQ(plan({"f=-0.2:0.4:4"}).rows[1][0], "0");  // not the 2.8e-17 of the arithmetic
+  EXPECT_EQ(plan({"f=-0.1:0.5:7"}).rows[1][0], "0");
+  EXPECT_EQ(plan({"f=0.1234567890123456:1:3"}).rows[0][0], "0.1234567890123456");  // the ends as typed
   EXPECT_EQ(plan({"f=0.1:0.1:1"}).rows.size(), 1u);  // one value where lo is hi
 }
 
@@ -167,6 +170,9 @@ TEST(Sweep, ABrokenSceneOrAFailingWriterStopsWithAMessage) {
     EXPECT_NE(std::string(e.what()).find("--vary materials.ball_ball.fricton: cut.json: materials.ball_ball.fricton: "
                                          "unknown field (did you mean 'friction'?)"), std::string::npos) << e.what();
   }
+  // A value that brings its own unknown field is that row's error, not the path's.
+  const Sweep odd(text_of(preset("cut.json")), "cut.json", plan({R"(materials.ball_ball=[{"sped":2}])"}), {});
+  EXPECT_EQ(odd.status(odd.row(0)), "error");
   const Sweep sweep(text_of(preset("cut.json")), "cut.json", plan({"cue.speed=1:2:6"}), {});
   EXPECT_THROW(sweep.run(0, 6, 2, [](size_t i, const std::string&) {
     if (i == 2) throw InputError("out.csv: disk full");

@@ -16,9 +16,10 @@ namespace shotlab {
 struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
-// A field the format does not have (a misspelt name): what a sweep refuses before its first run.
+// A field the format does not have (a misspelt name), `name` its key: what a sweep refuses before its first run.
 struct UnknownFieldError : InputError {
-  using InputError::InputError;
+  UnknownFieldError(const std::string& message, std::string key) : InputError(message), name(std::move(key)) {}
+  std::string name;
 };
 
 // A value as an error message quotes it: a number or a short string as written, anything longer or nested by its
