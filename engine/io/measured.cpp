@@ -23,11 +23,18 @@ double number(const std::string& field, const std::string& where, const char* na
   return v;
 }
 
+// A CSV line's fields as RFC 4180 writes them (and csv_field, for a trajectory's ball ids): a quoted field may hold
+// commas, and a doubled quote inside it is one quote.
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> out(1);
-  for (char c : line)
-    if (c == ',') out.emplace_back();
+  bool quoted = false;
+  for (size_t k = 0; k < line.size(); ++k) {
+    const char c = line[k];
+    if (c == '"' && quoted && k + 1 < line.size() && line[k + 1] == '"') out.back() += c, ++k;
+    else if (c == '"') quoted = !quoted;
+    else if (c == ',' && !quoted) out.emplace_back();
     else if (c != '\r') out.back() += c;
+  }
   return out;
 }
 

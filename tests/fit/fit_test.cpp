@@ -106,6 +106,11 @@ TEST(Fit, MeasuredShotsWithErrorsAreRefusedByLineAndField) {
   ASSERT_EQ(run.tracks.at("a").size(), 2u);
   EXPECT_DOUBLE_EQ(run.tracks.at("a")[1].z, -0.01);
   EXPECT_DOUBLE_EQ(run.tracks.at("b")[0].z, 2);
+  // A ball id with a comma or a quote, as a trajectory quotes it.
+  const MeasuredShot quoted = parse_measured("time,ball,x,z\n0,\"a,1\",0,0\n0,\"say \"\"b\"\"\",1,0\n"
+                                             "0.02,\"a,1\",0.1,0\n", "q.csv");
+  EXPECT_EQ(quoted.cue_ball, "a,1");
+  EXPECT_EQ(quoted.balls.at(1), "say \"b\"");
 }
 
 TEST(Fit, RecoversASharedMaterialFromTwoShots) {
