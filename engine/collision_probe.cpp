@@ -61,7 +61,8 @@ CollisionProbe probe_collision(const ContactMaterial& material, double mass, dou
       if (e.kind == "contact_end" && begin >= 0) end = e.time;
     }
   }
-  out.parted = begin < 0 || end > begin;
+  if (sim.status() != Status::Ok) out.failure = sim.diagnostic();
+  out.parted = begin < 0 || end > begin || !out.failure.empty();
   out.contact_time = begin < 0 ? 0 : out.parted ? end - begin : sim.time() - begin;
   for (double& t : out.time) t -= std::max(begin, 0.0);
   // An overdamped contact pushes no more long before it ends (the clamp holds its force at zero while the ball creeps

@@ -45,11 +45,15 @@ double restitution_at(const ContactMaterial& m, double m_eff, double v) {
          (u + 1) * u * (u - 1) / 6 * d;
 }
 
-void switch_damping_law(ContactMaterial& material, DampingLaw law, double m_eff, double v) {
-  if (material.damping_law == law) return;
-  const double e = restitution_at(material, m_eff, v);
+bool switch_damping_law(ContactMaterial& material, DampingLaw law, double m_eff, double v) {
+  if (material.damping_law == law) return true;
+  ContactMaterial next = material;
+  next.damping_law = law;
+  next.restitution = restitution_at(material, m_eff, v), next.restitution_speed = v, next.contact_time = 0;
+  const bool kept = apply_restitution(next, m_eff).empty();
   material.damping_law = law;
-  material.damping = damping_for_restitution(material, m_eff, v, e);
+  if (kept) material.damping = next.damping;
+  return kept;
 }
 
 }  // namespace shotlab

@@ -123,8 +123,11 @@ bool material_editor(Lab& lab, Tuning& t, int k) {
   int law = static_cast<int>(m.damping_law);
   f.label("damping law");
   if (ImGui::Combo("##law", &law, "linear (thesis)\0Hunt-Crossley\0")) {  // the same elasticity under the new law
-    switch_damping_law(m, static_cast<DampingLaw>(law), effective_mass(k == 0, probe_ball(lab).mass),
-                       lab.settings.impact_speed);
+    if (!switch_damping_law(m, static_cast<DampingLaw>(law), effective_mass(k == 0, probe_ball(lab).mass),
+                            lab.settings.impact_speed))
+      lab.say(MessageKind::Note, "overdamped: no damping under the new law gives this contact's restitution; the "
+                                 "number is kept, in the new law's unit (" + std::string(law == 0 ? "N s/m" : "s/m") +
+                                 ")");
     c = true;
   }
   const bool linear = m.damping_law == DampingLaw::Linear;
@@ -147,7 +150,9 @@ bool material_editor(Lab& lab, Tuning& t, int k) {
 void probe_readout(Lab& lab, const Tuning& t, int k) {
   if (!t.probes.valid[k]) return ImGui::TextDisabled("measuring...");
   const CollisionProbe& p = t.probes.result[k];
-  if (p.parted)
+  if (!p.failure.empty())
+    coloured_wrapped(ImVec4(1, 0.5f, 0.4f, 1), "the probe's collision stopped: %s", p.failure.c_str());
+  else if (p.parted)
     coloured_wrapped(ImVec4(0.6f, 0.9f, 1, 1), "contact %.3f ms, penetration %.3f mm, restitution %.3f, peak %.0f N",
                      p.contact_time * 1e3, p.peak_penetration * 1e3, p.restitution, p.peak_force);
   else  // overdamped: the damper holds the bodies together; what the probe saw in its time

@@ -2,6 +2,7 @@
 // formula): contact time, peak penetration, peak force and restitution at a given impact speed. Used by the tuning
 // panel's readouts and by tests; gravity, table and friction are off so that only the normal law acts.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "shotlab/material.hpp"
@@ -12,6 +13,7 @@ namespace shotlab {
 struct CollisionProbe {
   double contact_time = 0;       // s; where the bodies do not part (`parted` false), the time probed in contact
   bool parted = true;            // false: still touching at the probe's end, 0.2 s in (an overdamped contact)
+  std::string failure;           // the engine's diagnostic where the probe's run stopped (then nothing above holds)
   double peak_penetration = 0;   // m
   double peak_force = 0;         // N
   double restitution = 0;        // separation speed / approach speed

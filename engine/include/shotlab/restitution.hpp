@@ -38,7 +38,7 @@ double damping_for_restitution(const ContactMaterial& material, double m_eff, do
 
 // Switches the material's damping law keeping its restitution at impact speed v (m/s) for effective mass m_eff: the
 // two laws' damping coefficients differ in meaning and unit (N s/m against s/m), so the number cannot be kept. Where
-// the old restitution is out of reach (an overdamped contact), the damping is left as it was.
-void switch_damping_law(ContactMaterial& material, DampingLaw law, double m_eff, double v);
+// the old restitution is out of reach (an overdamped contact), the damping number is left as it was: returns false.
+bool switch_damping_law(ContactMaterial& material, DampingLaw law, double m_eff, double v);
 
 }  // namespace shotlab
