@@ -35,9 +35,6 @@ void print_table(const FitResult& r, int max_iterations) {
               << " (sd " << std::setprecision(2) << r.sd[k] << ")\n";
   std::cout << std::defaultfloat << r.iterations << " iterations over the joint fit's rounds (at most " << max_iterations
             << " a round), " << std::setprecision(3) << r.seconds << " s\n";
-  if (r.report.find("NO_CONVERGENCE") != std::string::npos)
-    std::cerr << "shotlab fit: warning: the last joint round stopped at " << max_iterations
-              << " iterations before it converged: the values may still move (raise --iterations)\n";
 }
 
 int fit(const FitCommand& o) {
@@ -62,6 +59,9 @@ int fit(const FitCommand& o) {
     }
   }
   if (!o.quiet) print_table(r, o.iterations);
+  if (r.report.find("NO_CONVERGENCE") != std::string::npos)  // also with -q: a script's fit that did not settle
+    std::cerr << "shotlab fit: warning: the last joint round stopped at " << o.iterations
+              << " iterations before it converged: the values may still move (raise --iterations)\n";
   if (!o.picture.empty()) return run_plot_script("fit_plot.py", {o.out, o.picture}, "shotlab fit") ? 0 : 1;
   return 0;
 }
