@@ -25,9 +25,13 @@ std::string check_run(const RunOptions& o, double duration) {
     why << "--duration: must be a number of seconds above 0 and at most " << kMaxDuration;
   else if (!std::isfinite(o.sample_rate) || o.sample_rate < kMinSampleRate || o.sample_rate > kMaxSampleRate)
     why << "--sample-rate: must be between " << kMinSampleRate << " and " << kMaxSampleRate << " per second";
-  else if (duration * o.sample_rate > o.max_samples)
-    why << "--duration " << duration << " at --sample-rate " << o.sample_rate << " is " << duration * o.sample_rate
-        << " samples, more than " << o.max_samples << " (raise the limit with --max-samples N)";
+  else if (duration * o.sample_rate > o.max_samples) {
+    if (o.duration) why << "--duration " << duration << " s";
+    else why << "a run " << (o.until_rest ? "to rest, up to " : "of the scene's ") << duration << " s";
+    why << " at --sample-rate " << o.sample_rate << " is " << duration * o.sample_rate << " samples, more than "
+        << o.max_samples << " (" << (o.duration ? "" : "give a shorter --duration, or ") << "raise the limit with "
+        << "--max-samples N)";
+  }
   return why.str();
 }
 

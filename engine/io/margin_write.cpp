@@ -80,7 +80,9 @@ json margin_to_json(const Scene& scene, const MarginOptions& o, const MarginResu
       sens[noise_source_name(k)] = {{"alone", r.alone[k]},
                                     {"tolerance", r.nominal_success ? json{r.tolerance[k].lo, r.tolerance[k].hi}
                                                                     : json(nullptr)},  // none round a miss
-                                    {"bounded", {r.tolerance[k].bounded_lo, r.tolerance[k].bounded_hi}}};
+                                    {"bounded", r.nominal_success ? json{r.tolerance[k].bounded_lo,
+                                                                         r.tolerance[k].bounded_hi}
+                                                                  : json(nullptr)}};
     out["sensitivity"] = sens;
   }
   out["ends"] = scatter(r);

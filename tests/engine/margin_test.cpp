@@ -142,6 +142,7 @@ TEST(Margin, AStrokeThatMissesHasNoWindowInTheReport) {
   ASSERT_FALSE(r.nominal_success);
   const nlohmann::json j = margin_to_json(off, o, r);
   EXPECT_TRUE(j["sensitivity"]["aim_deg"]["tolerance"].is_null());
+  EXPECT_TRUE(j["sensitivity"]["aim_deg"]["bounded"].is_null());
 }
 
 }  // namespace

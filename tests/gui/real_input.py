@@ -444,7 +444,8 @@ def kept_under_prediction(app):
         return app.grab().count(v["x"], v["y"], v["x"] + v["w"], v["y"] + v["h"],
                                 lambda p: p[0] > 120 and p[0] > p[1] + 30 and p[0] > p[2] + 30 and p[1] > 80)
     before = reddish(app)
-    app.key("ctrl+y")  # the shot back, kept, and undone again: the aim is the kept shot's
+    app.key("ctrl+y")  # the shot back (it plays again), kept at rest, and undone: the aim is the kept shot's
+    app.wait(lambda s: s["shot_over"], 40, "the shot brought back by Ctrl+Y comes to rest")
     app.key("k")
     app.key("u")
     s = app.wait(lambda s: not s["has_shot"], 10, "U undoes the shot again")

@@ -33,7 +33,7 @@ struct RunLimits {
 inline constexpr double kRestLimit = 60.0;  // s of simulated time
 
 // How long a run goes: `duration` where given, else the scene's; with until_rest and none given, the longer of the
-// scene's and kRestLimit (a scene's duration may end before its shot rests: the cut preset's 4 s, rest at 5.9 s).
+// scene's and kRestLimit (a scene's duration may end before its shot rests: the cut preset's 4 s, rest at 5.8 s).
 double run_duration(const Scene& scene, std::optional<double> duration, bool until_rest);
 
 // Advances to `duration` s in slices of 1 / sample_rate s, calling on_sample (if any) after each. The step limit counts
