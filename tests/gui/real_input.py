@@ -437,8 +437,8 @@ def player(binary, root, display, work):
 
 def kept_under_prediction(app):
     """A kept shot that the aim repeats stays in sight beside its prediction (a coach saw it vanish under it): the
-    shot's reddish pixels in the view with it kept, against without. Kept as a line of 2 px under the prediction's
-    it showed about 170 more (mostly its end rings); as a wide band, about 420."""
+    shot's reddish pixels in the view with it kept, against without: about 900 more as a wide band. (Kept part way
+    through its replay, a line of 2 px under the prediction's showed about 170, mostly its end rings; the band 420.)"""
     def reddish(app):
         v = app.state()["view"]
         return app.grab().count(v["x"], v["y"], v["x"] + v["w"], v["y"] + v["h"],
