@@ -73,6 +73,7 @@ void goal_choice(Lab& lab, MarginView& v) {
 // an error, the window indented under its name and share.
 void sources_table(const MarginResult& r) {
   static const char* names[] = {"aim (deg)", "speed (%)", "side (mm)", "height (mm)", "elevation (deg)"};
+  auto share = [&](int k) { return std::to_string(static_cast<int>(std::lround(100 * r.alone[k]))) + " %"; };
   auto window = [&](int k) {
     const Tolerance& t = r.tolerance[k];
     if (!r.nominal_success) ImGui::TextDisabled("-");  // no window around a stroke that misses
@@ -84,9 +85,8 @@ void sources_table(const MarginResult& r) {
     hint("error: success with it alone, the window it holds within");
     for (int k = 0; k < kNoiseSources; ++k) {
       ImGui::TextUnformatted(names[k]);
-      const std::string share = std::to_string(static_cast<int>(std::lround(100 * r.alone[k]))) + " %";
-      same_line_if_fits(share.c_str());
-      ImGui::TextColored(verdict_colour(r.alone[k]), "%s", share.c_str());
+      same_line_if_fits(share(k).c_str());
+      ImGui::TextColored(verdict_colour(r.alone[k]), "%s", share(k).c_str());
       ImGui::Indent(), window(k), ImGui::Unindent();
     }
     return;
@@ -99,7 +99,7 @@ void sources_table(const MarginResult& r) {
   for (int k = 0; k < kNoiseSources; ++k) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn(), ImGui::TextUnformatted(names[k]);
-    ImGui::TableNextColumn(), ImGui::TextColored(verdict_colour(r.alone[k]), "%.0f %%", 100 * r.alone[k]);
+    ImGui::TableNextColumn(), ImGui::TextColored(verdict_colour(r.alone[k]), "%s", share(k).c_str());
     ImGui::TableNextColumn(), window(k);
   }
   ImGui::EndTable();

@@ -80,9 +80,7 @@ Sweep::Sweep(const std::string& scene_text, const std::string& source, SweepPlan
       parse_scene(doc, source_);
     } catch (const UnknownFieldError& e) {
       const std::string& path = plan_.paths[a];
-      if (path.size() >= e.name.size() && path.compare(path.size() - e.name.size(), e.name.size(), e.name) == 0 &&
-          (path.size() == e.name.size() || path[path.size() - e.name.size() - 1] == '.'))
-        throw InputError("--vary " + path + ": " + e.what());
+      if (path == e.name || path.ends_with("." + e.name)) throw InputError("--vary " + path + ": " + e.what());
     } catch (const InputError&) {  // a value the scene refuses: that row's error
     }
   for (const InitialBall& b : scene.balls) ball_ids_.push_back(b.spec.id);
