@@ -82,9 +82,8 @@ int run(const RunOptions& o) {
                 << " rejected), " << st.rhs_evaluations << " rhs evaluations, ";
     std::cout << sim.events().size() << " events, wall " << st.wall_seconds << " s\n";
   }
-  if (o.until_rest && sim.status() == Status::Ok && !sim.at_rest())
-    std::cerr << "shotlab: warning: " << o.scene << ": balls still move at t = " << sim.time()
-              << " s, where the run ends (a longer --duration runs on to rest)\n";
+  if (std::string why = unfinished_rest(sim, o.until_rest); !why.empty())
+    std::cerr << "shotlab: warning: " << o.scene << ": " << why << " (a longer --duration runs on to rest)\n";
   if (sim.status() != Status::Ok) {
     std::cerr << "shotlab: " << o.scene << ": simulation stopped (" << status_name(sim.status())
               << "): " << sim.diagnostic() << "\n";

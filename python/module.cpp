@@ -218,6 +218,10 @@ PYBIND11_MODULE(_core, m) {
       py::gil_scoped_release release;  // other Python threads run while the engine does
       advance_run(*run.sim, d, sample_rate, until_rest);
     }
+    if (std::string why = unfinished_rest(*run.sim, until_rest); !why.empty()) {
+      why += " (a longer duration runs on to rest)";
+      if (PyErr_WarnEx(PyExc_RuntimeWarning, why.c_str(), 1) != 0) throw py::error_already_set();  // warnings as errors
+    }
     return to_python(result_to_json(*run.sim, run.extra));
   }, py::arg("scene"), py::arg("overrides") = std::vector<std::string>{}, py::arg("duration") = py::none(),
      py::arg("until_rest") = false, py::arg("sample_rate") = 60.0,

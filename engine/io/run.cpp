@@ -74,4 +74,11 @@ std::string advance_run(Simulation& sim, double duration, double sample_rate, bo
   return {};
 }
 
+std::string unfinished_rest(const Simulation& sim, bool until_rest) {
+  if (!until_rest || sim.status() != Status::Ok || sim.at_rest()) return {};
+  std::ostringstream why;
+  why << "balls still move at t = " << sim.time() << " s, where the run ends";
+  return why.str();
+}
+
 }  // namespace shotlab

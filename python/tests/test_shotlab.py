@@ -4,6 +4,7 @@ import json
 import os
 import subprocess
 import tempfile
+import warnings
 
 import numpy as np
 import pytest
@@ -147,3 +148,16 @@ def test_the_rigid_model_is_a_switch_away():
     assert np.linalg.norm(np.subtract(ends[0], ends[1])[[0, 2]]) < 0.005  # m
     with pytest.raises(ValueError, match="model.contact.*hop"):
         shotlab.run(os.path.join(SOURCE, "presets", "jump.json"), ["model.contact=rigid"])
+
+
+def test_a_run_to_rest_cut_short_says_so_as_the_command_does():
+    scene = os.path.join(SOURCE, "presets", "cut.json")  # its balls rest at about 5.8 s
+    with pytest.warns(RuntimeWarning, match=r"balls still move at t = 1 s, where the run ends"):
+        shotlab.run(scene, duration=1.0, until_rest=True)
+    done = subprocess.run([os.environ["SHOTLAB_BIN"], "run", scene, "--until-rest", "--duration", "1", "-q"],
+                          capture_output=True, text=True, check=True)
+    assert "balls still move at t = 1 s, where the run ends" in done.stderr
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # neither a run to its rest nor one of a set length warns
+        shotlab.run(scene, until_rest=True)
+        shotlab.run(scene, duration=1.0)

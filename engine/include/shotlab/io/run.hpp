@@ -44,4 +44,8 @@ double run_duration(const Scene& scene, std::optional<double> duration, bool unt
 std::string advance_run(Simulation& sim, double duration, double sample_rate, bool until_rest,
                         const std::function<void()>& on_sample = {}, const RunLimits& limits = {});
 
+// What a run to rest that ended with balls moving says ("balls still move at t = 60 s, where the run ends"); empty
+// when the run was not to rest, has stopped on its own (sim.status()), or ended at rest.
+std::string unfinished_rest(const Simulation& sim, bool until_rest);
+
 }  // namespace shotlab
