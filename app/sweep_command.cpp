@@ -83,7 +83,8 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--seed", o->seed, "Seed of the random sampling (default 1)")->check(kNotNegative);
   cmd->add_option("-j,--jobs", o->jobs, "Threads (default: one per core)")->check(CLI::Range(0, 1024));
   cmd->add_option("--set", o->overrides, "Override a scene value in every run: PATH=VALUE");
-  cmd->add_option("--duration", o->duration, "Simulated time per run in seconds (default: the scene's); runs stop at rest");
+  cmd->add_option("--duration", o->duration,
+                  "Simulated time per run in seconds (default: on to rest, up to 60 s); runs stop at rest");
   cmd->add_option("--timeout", o->timeout, "Wall seconds one run may take before it is cut (its row says so); default 60");
   cmd->add_option("--max-events", o->max_events, "Events one run may record before it is cut; default 100000");
   cmd->add_option("--out", o->out, "Write the rows to this CSV file (default, or -: standard output)");

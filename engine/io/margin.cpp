@@ -84,7 +84,8 @@ MarginSample replay(const Scene& scene, const MarginOptions& o, const Judge& jud
     HeadlessRun run = start_run(shot);
     RunLimits limits = o.limits;
     if (!to_rest) limits.enough = [&](const Simulation& sim) { return judge.decided(sim); };
-    const std::string limit = advance_run(*run.sim, scene.duration, kMarginSampleRate, true, {}, limits);
+    const std::string limit = advance_run(*run.sim, run_duration(scene, {}, true), kMarginSampleRate, true, {},
+                                          limits);
     const Simulation& sim = *run.sim;
     s.status = !limit.empty() ? "limit" : sim.status() == Status::Ok ? "ok" : status_name(sim.status());
     s.reason = !limit.empty() ? limit : sim.diagnostic();

@@ -109,7 +109,7 @@ std::string Sweep::row(size_t i) const {
     for (size_t a = 0; a < plan_.paths.size(); ++a) apply_override(doc, plan_.paths[a] + "=" + plan_.rows[i][a]);
     const Scene scene = parse_scene(doc, source_ + " (run " + std::to_string(i) + ")");
     HeadlessRun run = start_run(scene);
-    const std::string limit = advance_run(*run.sim, settings_.duration.value_or(scene.duration), kSweepSampleRate,
+    const std::string limit = advance_run(*run.sim, run_duration(scene, settings_.duration, true), kSweepSampleRate,
                                           true, {}, settings_.limits);
     const Simulation& sim = *run.sim;
     const std::string status = !limit.empty() ? "limit" : sim.status() == Status::Ok ? "ok" : status_name(sim.status());

@@ -52,7 +52,7 @@ def main(argv=None):
     p.add_argument("--samples", type=int, default=0, help="random sampling: this many runs instead of the grid")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--set", dest="overrides", action="append", default=[], help="PATH=VALUE for every run")
-    p.add_argument("--duration", type=float, help="simulated seconds per run (default: the scene's)")
+    p.add_argument("--duration", type=float, help="simulated seconds per run (default: on to rest, up to 60 s)")
     p.add_argument("--timeout", type=float, default=60.0, help="wall seconds one run may take")
     p.add_argument("--max-events", type=int, default=100000)
     p.add_argument("--chunk", type=int, help="rows per task (default: about four tasks per worker thread)")

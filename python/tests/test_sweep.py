@@ -14,7 +14,6 @@ from scenes import SOURCE, STUN
 
 CUT = os.path.join(SOURCE, "presets", "cut.json")
 G = 9.81
-STUN_1S = dict(STUN, duration=1.0)  # R1's stun shot run for 1 s
 
 
 def stun_x(mu, t, v0=2.0):
@@ -29,7 +28,7 @@ def without_wall(rows):
 
 
 def test_a_grid_of_cloth_frictions_follows_r1():
-    rows = shotlab.sweep(STUN_1S, ["materials.ball_cloth.friction=0.2,0.3,0.4"], jobs=2)
+    rows = shotlab.sweep(STUN, ["materials.ball_cloth.friction=0.2,0.3,0.4"], duration=1.0, jobs=2)
     assert [r["materials.ball_cloth.friction"] for r in rows] == [0.2, 0.3, 0.4]
     for r in rows:
         assert r["status"] == "ok" and r["time"] == pytest.approx(1.0)

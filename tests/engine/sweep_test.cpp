@@ -133,7 +133,8 @@ TEST(Sweep, RowsMatchSingleRunsAndDoNotDependOnThreads) {
   EXPECT_EQ(pot[col("1.motion")], "pocketed");
 
   HeadlessRun single = start_run(load_scene(preset("cut.json"), {"cue.speed=2", "cue.aim_deg=-75"}));
-  advance_run(*single.sim, 4.0, 60, true);  // the preset's duration, the sweep's sampling
+  advance_run(*single.sim, kRestLimit, 60, true);  // to rest past the preset's 4 s, at the sweep's sampling
+  EXPECT_TRUE(single.sim->at_rest());
   const Vec3 cue = position(single.sim->state().x, 0);
   EXPECT_EQ(std::stod(pot[col("cue.x")]), cue.x);
   EXPECT_EQ(std::stod(pot[col("cue.z")]), cue.z);

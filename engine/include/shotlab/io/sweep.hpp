@@ -40,7 +40,7 @@ SweepPlan plan_sweep(const std::vector<SweepAxis>& axes, size_t samples, uint64_
 
 struct SweepSettings {
   std::vector<std::string> overrides;  // PATH=VALUE applied to every run before the varied paths
-  std::optional<double> duration;      // s; the scene's when unset. Every run stops at rest or at its duration.
+  std::optional<double> duration;      // s; unset: run_duration's to rest. Every run stops at rest or then.
   RunLimits limits{60, 100'000, {}};     // each run: wall seconds, events
 };
 
