@@ -174,11 +174,8 @@ void Lab::scene_changed() {
 }
 
 void Lab::physics_changed() {
-  if (shot && compare.empty() && settings.view.compare) {
-    compare = trails(shot->sim().time());
-    compare_frames = shot->frames();
-    compare_label = "A: the shot before the first change";
-  }
+  if (compare.empty() && settings.view.compare && take_compare())
+    compare_label = shot ? "A: the shot before the first change" : "A: the prediction before the first change";
   scene_changed();
   if (!shot) return;
   // The new run is shown at the moment the old one was, playing or paused as it was: a change made while stepping
@@ -230,12 +227,24 @@ void Lab::reset_physics() {
   say(MessageKind::Note, "physics reset to the scene file's values");
 }
 
+bool Lab::take_compare() {
+  if (shot) {
+    compare = trails(shot->sim().time());
+    compare_frames = shot->frames();
+    return true;
+  }
+  const std::optional<Prediction> p = prediction();
+  if (!p) return false;
+  compare = p->paths;
+  compare_frames.clear();  // a prediction keeps paths only: the plots have no A line
+  return true;
+}
+
 void Lab::pin_compare() {
-  if (!shot) return;
-  compare = trails(shot->sim().time());
-  compare_frames = shot->frames();
+  if (!take_compare()) return;
   const auto changes = physics_changes();
   compare_label = changes.empty() ? "A: as loaded" : "A: pinned (" + std::to_string(changes.size()) + " changes)";
+  if (!shot) compare_label += ", predicted";
 }
 
 void Lab::start_shot(const Scene& start) {

@@ -95,7 +95,8 @@ class Lab {
   static constexpr double kRetuneSeconds = 0.1;  // wall time physics_changed may spend reaching the moment shown
   std::vector<std::string> physics_changes() const;  // "materials.ball_ball.stiffness: 1e+10 -> 5e+09", ...
   void reset_physics();    // back to the loaded scene's materials, options and integrator
-  void pin_compare();      // the current shot's trails become the A of the A/B overlay
+  void pin_compare();      // the current shot's trails (before a shot: the predicted paths) become the A of A/B
+  bool can_pin() const { return shot || prediction(); }
 
   // Shots and playback (lab.cpp).
   void shoot();
@@ -157,6 +158,7 @@ class Lab {
   void keep_shot();
 
  private:
+  bool take_compare();  // A of A/B from the shot so far, else the finished prediction; false: neither there
   void adopt(Scene s, const std::string& path, const std::string& what);  // lab.cpp: a loaded scene taken on
   void take_step(HistoryStep step);  // the scene (and file) undo or redo goes back to
   SceneFile current_file() const;    // the scene's file and the workbench, for the history to bring back

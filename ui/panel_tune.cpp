@@ -191,17 +191,19 @@ void changes_section(Lab& lab) {
   mark("Reset physics");
   ImGui::EndDisabled();
   same_line_if_fits("Pin as A");
-  ImGui::BeginDisabled(!lab.shot);
+  ImGui::BeginDisabled(!lab.can_pin());
   if (ImGui::Button("Pin as A")) lab.pin_compare();
+  mark("Pin as A");
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip("keep this shot's trails as A: later changes are drawn as B over it");
+    ImGui::SetTooltip(lab.shot ? "keep this shot's trails as A: later changes are drawn as B over it"
+                               : "keep the predicted paths as A: later changes' predictions are drawn as B over them");
   ImGui::EndDisabled();
   ImGui::Checkbox("A/B overlay", &lab.settings.view.compare);
   // One short line whatever it says (the reason above), the rest in its tooltip.
   ImGui::TextDisabled("%s", lab.compare.empty() ? "A: none yet" : lab.compare_label.c_str());
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("%s", !lab.compare.empty()       ? "A's trails are the dashed grey lines"
-                            : lab.settings.view.compare ? "the first change pins the shot before it as A"
+                            : lab.settings.view.compare ? "the first change pins the shot (or prediction) before it"
                                                         : "Pin as A, or the overlay on: the first change pins one");
 }
 

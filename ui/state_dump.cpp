@@ -80,7 +80,8 @@ json physics_json(const Lab& lab) {
     m[name] = {{"stiffness", mat.stiffness}, {"damping", mat.damping}, {"friction", mat.friction},
                {"friction_law", mat.friction_law == FrictionLaw::Constant ? "constant" : "speed_dependent"}};
   return {{"materials", m}, {"contact", contact_model_name(lab.scene.model.options.contact)},
-          {"changes", lab.physics_changes()}, {"compare_trails", lab.compare.size()}};
+          {"changes", lab.physics_changes()}, {"compare_trails", lab.compare.size()},
+          {"compare_label", lab.compare_label}};
 }
 
 json measured_json(const Lab& lab) {

@@ -702,6 +702,11 @@ def developer(binary, root, display, work):
     app = App(binary, display, work, os.path.join(root, "presets", "cut.json"))
     s = app.state()
     app.click_widget(s, "tab Tuning")
+    # Before any shot, Pin as A keeps the predicted paths as A, for the changes after it to be drawn over.
+    s = app.wait(lambda s: "Pin as A" in s["widgets"] and s["prediction_ready"], 30, "the cut is predicted")
+    app.click_widget(s, "Pin as A")
+    s = app.wait(lambda s: s["physics"]["compare_trails"] == 2, 10, "Pin as A before a shot pins the prediction")
+    check(s["physics"]["compare_label"] == "A: as loaded, predicted", f"A says so ({s['physics']['compare_label']!r})")
     s = app.state()
     if check("ball_pocket" in s["widgets"], "the cut's Tuning tab lists the pockets' lining"):
         s = scroll_into_view(app, "ball_pocket")
