@@ -233,6 +233,7 @@ int run_gui(const GuiOptions& options) {
         ImGui::NewFrame();
         new_marks_frame();
         readout("font size", ImGui::GetFontSize());
+        if (std::string note = vet_number_typing(); !note.empty()) lab.say(MessageKind::Refused, std::move(note));
         const Layout layout = frame_layout(settings, w, h);
         fit_camera(settings.camera, lab.scene, layout.view);
         follow_cue_ball(settings.camera, lab);

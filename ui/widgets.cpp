@@ -88,6 +88,22 @@ bool slider(const char* id, double& v, double lo, double hi, const char* format,
 
 std::string take_slider_note() { return std::exchange(slider_note, std::string()); }
 
+std::string vet_number_typing() {
+  const ImGuiContext& g = *GImGui;
+  const ImGuiIO& io = ImGui::GetIO();
+  // Every number entry here is a slider's or drag's typed entry (ctrl+click), whose filter lets through what this does.
+  if (g.ActiveId == 0 || g.TempInputId != g.ActiveId) return {};
+  std::string dropped;
+  for (ImWchar c : io.InputQueueCharacters) {
+    if (c < 0x20 || c == ' ' || (c < 0x80 && std::strchr("0123456789.+-*/eE", static_cast<char>(c)))) continue;
+    char utf8[5];
+    dropped += ImTextCharToUtf8(utf8, c);
+  }
+  if (dropped.empty()) return {};
+  return "'" + dropped + "' is not part of a number: a number field takes digits, '.' for decimals, e for powers of "
+         "ten and signs";
+}
+
 bool tip_widget(CueStrike& cue, float size) {
   const float r = size / 2 - 6;
   const ImVec2 origin = ImGui::GetCursorScreenPos();

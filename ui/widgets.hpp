@@ -30,6 +30,9 @@ class Fields {
 bool slider(const char* id, double& v, double lo, double hi, const char* format, bool log = false);
 // What the last slider entry that had to be clamped says ("stiffness: 1e+30 is outside ..."), once; else empty.
 std::string take_slider_note();
+// Once a frame, before the panels: what was typed into the number field being edited that it drops ("'a,' is not
+// part of a number: ..."), where ImGui would drop it without a word; else empty.
+std::string vet_number_typing();
 
 // A drawn ball face: click or drag to put the cue tip (right is the shooter's right, up is follow); the dashed
 // ring is the miscue limit. Returns true while it changes the offsets.

@@ -662,6 +662,17 @@ def developer(binary, root, display, work):
     time.sleep(0.5)
     s = app.state()
     check(abs(stiff(s) - 4e9) < 1, "Escape leaves the stiffness as it was")
+    # A character the field cannot take is dropped, and the note says which: a decimal comma would have made 2,5e9
+    # read 25e9 without a word.
+    app.click_widget(s, "stiffness ball_ball", mods=("ctrl",))
+    app.key("ctrl+a")
+    app.type("2,5e9")
+    s = app.wait(lambda s: "is not part of a number" in s["message"], 10, "a comma typed is named")
+    check(s["message"].startswith("',' is not part of a number") and s["message_kind"] == "refused",
+          f"the note names the comma ({s['message']!r})")
+    app.key("Escape")
+    time.sleep(0.5)
+    s = app.state()
     # Tab moves on and keeps what was typed.
     app.click_widget(s, "stiffness ball_ball", mods=("ctrl",))
     app.key("ctrl+a")
