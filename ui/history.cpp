@@ -40,6 +40,14 @@ void History::record_target(const std::string& label, const Scene& current, cons
   push(std::move(e));
 }
 
+void History::record_kept(const std::string& label, const Scene& current, std::vector<KeptShot> before) {
+  seal();
+  redo_.clear();
+  HistoryStep e = entry(label, current);
+  e.kept = std::move(before);
+  push(std::move(e));
+}
+
 const std::string& History::undo_label() const {
   static const std::string none;
   return undo_.empty() ? none : undo_.back().label;
@@ -58,6 +66,7 @@ HistoryStep History::take(std::vector<HistoryStep>& from, std::vector<HistorySte
   if (e.file) back.file = current_file();
   back.same_table = e.same_table;
   if (e.target) back.target = current_target;
+  if (e.kept) back.kept = current_file().bench.kept;
   to.push_back(std::move(back));
   return e;
 }

@@ -1,5 +1,5 @@
 // One undo stack for everything the user does to the table: ball moves, adds and removals, aim and cue changes, a
-// break set up, the practice target, shots and Next. Each entry is the scene as it was before the action, with a
+// break set up, the practice target, clearing the kept shots, shots and Next. Each entry is the scene as it was before the action, with a
 // label for the menu. A run of edits of the same kind (dragging the aim, nudging the speed) merges into one entry, so
 // that one undo takes back the whole gesture. Tuned physics is not part of it (the tuning panel has its own reset),
 // except across a file load: undoing a load brings back the whole scene before it, its file, its tuned physics and
@@ -31,6 +31,7 @@ struct HistoryStep {
   bool same_table = false;        // with `file`: only the position changed (a break set up over another one), so the
                                   // tuned physics and the camera stay
   std::optional<std::optional<Vec3>> target;  // set for a practice target's step: the target then (none: no target)
+  std::optional<std::vector<KeptShot>> kept;  // set for a step of the kept shots alone: those kept then
 };
 
 class History {
@@ -44,6 +45,8 @@ class History {
   void record_load(const std::string& label, const Scene& before, SceneFile file, bool same_table = false);
   // Records the practice target as it was before it was set, moved or cleared (the scene does not change).
   void record_target(const std::string& label, const Scene& current, const std::optional<Vec3>& before);
+  // Records the kept shots as they were before they were cleared (the scene does not change).
+  void record_kept(const std::string& label, const Scene& current, std::vector<KeptShot> before);
 
   bool can_undo() const { return !undo_.empty(); }
   bool can_redo() const { return !redo_.empty(); }

@@ -296,7 +296,7 @@ void Lab::undo() {
   if (!history.can_undo()) return say(MessageKind::Note, "nothing to undo");
   const std::string what = history.undo_label();
   HistoryStep previous = history.undo(scene, [this] { return current_file(); }, target);
-  if (previous.target) {  // only the practice target moves: the shot on screen stays
+  if (previous.target || previous.kept) {  // only the practice target or the kept shots change: the shot stays
     take_step(std::move(previous));
     return say(MessageKind::Note, "undone: " + what);
   }
@@ -314,6 +314,7 @@ void Lab::undo() {
 // Undo and redo restore positions and aim; tuned physics stays (Reset in Tuning) unless the step crosses a file load.
 void Lab::take_step(HistoryStep step) {
   if (step.target) target = *step.target;
+  if (step.kept) kept = std::move(*step.kept);
   if (step.file) {
     scene_path = std::move(step.file->path);
     loaded = std::move(step.file->loaded);
@@ -353,7 +354,7 @@ void Lab::redo() {
   if (!history.can_redo()) return say(MessageKind::Note, "nothing to redo");
   const std::string what = history.redo_label();
   HistoryStep next = history.redo(scene, [this] { return current_file(); }, target);
-  const bool target_only = next.target.has_value();
+  const bool target_only = next.target || next.kept;
   take_step(std::move(next));
   say(MessageKind::Note, "redone: " + what);
   if (target_only) return;  // the shot on screen stays

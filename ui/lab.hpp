@@ -156,6 +156,7 @@ class Lab {
   void drag_target(const Vec3& at);       // carried by a drag after set_target: part of its undo step
   std::optional<double> target_miss() const;  // m from the cue ball's rest position (or predicted one) to the target
   void keep_shot();
+  void clear_kept();  // an undo step of its own
 
  private:
   bool take_compare();  // A of A/B from the shot so far, else the finished prediction; false: neither there

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "ui/aim.hpp"
 #include "ui/lab.hpp"
@@ -323,7 +324,8 @@ std::optional<double> Lab::target_miss() const {
 
 void Lab::keep_shot() {
   if (!shot) return say(MessageKind::Refused, "shoot first: a kept shot is one that has been played");
-  if (kept.size() >= kMaxKeptShots) kept.erase(kept.begin());
+  const bool full = kept.size() >= kMaxKeptShots;
+  if (full) kept.erase(kept.begin());
   KeptShot k;
   k.trails = trails(shot->sim().time());
   k.colour = kept.empty() ? 0 : kept.back().colour + 1;
@@ -340,7 +342,15 @@ void Lab::keep_shot() {
   } else {
     k.label = "shot " + std::to_string(k.colour + 1);
   }
+  say(MessageKind::Note, "kept: " + k.label + (full ? " (the oldest kept shot made room)" : " (listed under Practice)"));
   kept.push_back(std::move(k));
+}
+
+void Lab::clear_kept() {
+  if (kept.empty()) return;
+  const size_t n = kept.size();
+  history.record_kept("clear kept shots", scene, std::exchange(kept, {}));
+  say(MessageKind::Note, "cleared " + std::to_string(n) + " kept shot" + (n == 1 ? "" : "s") + " (Undo brings them back)");
 }
 
 }  // namespace shotlab

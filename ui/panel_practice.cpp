@@ -38,7 +38,10 @@ void practice_section(Lab& lab) {
   if (ImGui::Button("Keep this shot (K)")) lab.keep_shot();
   mark("Keep shot");
   same_line_if_fits("Clear kept");
-  if (ImGui::Button("Clear kept")) lab.kept.clear();
+  ImGui::BeginDisabled(lab.kept.empty());
+  if (ImGui::Button("Clear kept")) lab.clear_kept();
+  mark("Clear kept");
+  ImGui::EndDisabled();
   for (size_t k = 0; k < lab.kept.size(); ++k) {
     ImGui::PushID(static_cast<int>(k));
     ImGui::Checkbox("##visible", &lab.kept[k].visible);

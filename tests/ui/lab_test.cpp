@@ -796,6 +796,32 @@ TEST_F(LabTest, KeptShotsAreNamedByTheirTipFirst) {
   EXPECT_EQ(lab.kept[1].label, "follow 0.39 R, left 0.10 R, 1.80 m/s, aim 30.0 deg");
 }
 
+// From a coach's trial: Clear kept threw every kept shot away, and U then undid the last tip change instead. Clearing
+// is an undo step of its own; undoing it leaves the stroke and the shot on screen as they are.
+TEST_F(LabTest, ClearingKeptShotsIsUndone) {
+  load("stun.json");
+  lab.shoot();
+  lab.keep_shot();
+  EXPECT_NE(lab.message.find("kept: draw 0.20 R"), std::string::npos) << lab.message;
+  lab.scene.cue->height = 0.39;
+  lab.shoot();
+  lab.keep_shot();
+  ASSERT_EQ(lab.kept.size(), 2u);
+  const CueStrike stroke = *lab.scene.cue;
+  lab.clear_kept();
+  EXPECT_TRUE(lab.kept.empty());
+  EXPECT_EQ(lab.history.undo_label(), "clear kept shots");
+  lab.undo();
+  ASSERT_EQ(lab.kept.size(), 2u);
+  EXPECT_EQ(lab.kept[1].label, "follow 0.39 R, 1.80 m/s, aim 30.0 deg");
+  EXPECT_EQ(lab.scene.cue->height, stroke.height);
+  EXPECT_TRUE(lab.shot);  // the shot on screen stays
+  lab.redo();
+  EXPECT_TRUE(lab.kept.empty());
+  lab.undo();
+  EXPECT_EQ(lab.kept.size(), 2u);
+}
+
 // A break in one action: rack, cue ball in hand behind the head string, a centre-ball cue strike at the apex.
 TEST_F(LabTest, SetUpBreakRacksAndGivesBallInHand) {
   load("cut.json");
