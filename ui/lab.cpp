@@ -52,6 +52,7 @@ void Lab::adopt(Scene s, const std::string& path, const std::string& what) {
     history.record_load("open " + std::filesystem::path(path).filename().string(), scene, current_file());
   loaded = s;
   set_scene(std::move(s));
+  removed_cue_.reset();
   ghost.clear();
   restore({});
   std::string note = "loaded ";

@@ -157,8 +157,11 @@ class Lab {
   std::optional<double> target_miss() const;  // m from the cue ball's rest position (or predicted one) to the target
   void keep_shot();
   void clear_kept();  // an undo step of its own
+  void set_cue_strike(bool on);  // off keeps the stroke aside (spare_cue); on brings it back
+  CueStrike spare_cue() const;   // the stroke unticked last, on its ball if still there, else on the selected ball
 
  private:
+  std::optional<CueStrike> removed_cue_;  // set_cue_strike(false) keeps it; a load forgets it
   bool take_compare();  // A of A/B from the shot so far, else the finished prediction; false: neither there
   void adopt(Scene s, const std::string& path, const std::string& what);  // lab.cpp: a loaded scene taken on
   void take_step(HistoryStep step);  // the scene (and file) undo or redo goes back to

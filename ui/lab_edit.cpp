@@ -346,6 +346,24 @@ void Lab::keep_shot() {
   kept.push_back(std::move(k));
 }
 
+void Lab::set_cue_strike(bool on) {
+  if (on == scene.cue.has_value()) return;
+  history.record(on ? "add cue strike" : "remove cue strike", scene);
+  if (on) {
+    scene.cue = spare_cue();
+  } else {
+    removed_cue_ = scene.cue;
+    scene.cue.reset();
+  }
+  scene_changed();
+}
+
+CueStrike Lab::spare_cue() const {
+  CueStrike c = removed_cue_.value_or(CueStrike{});
+  if (!removed_cue_ || scene_ball(scene, c.ball) < 0) c.ball = scene.balls.at(selected).spec.id;
+  return c;
+}
+
 void Lab::clear_kept() {
   if (kept.empty()) return;
   const size_t n = kept.size();

@@ -145,27 +145,16 @@ void aim_readouts(const Lab& lab, const CueStrike& cue) {
   // Wrapped: presentation mode's large text in a narrow panel cut these lines at the edge.
   if (r.squirt != 0)
     text_wrapped("squirt %.2f deg %s of the cue line", std::abs(r.squirt) * 180 / M_PI, r.squirt > 0 ? "left" : "right");
-  if (const auto line = aim_line(lab.scene); line && line->hit >= 0)
+  std::optional<Scene> greyed;  // an unticked cue strike's stroke reads as it would struck: the lines stay
+  if (!lab.scene.cue) greyed = lab.scene, greyed->cue = cue;
+  if (const auto line = aim_line(greyed ? *greyed : lab.scene); line && line->hit >= 0)
     text_wrapped("first ball %s, cut %.1f deg", lab.scene.balls[line->hit].spec.id.c_str(), line->cut_deg);
   if (const auto miss = lab.target_miss())
     text_wrapped("%s miss of the target: %.1f cm", lab.shot ? "cue ball's" : "predicted", *miss * 100);
 }
 
-void aim_section(Lab& lab) {
-  if (lab.scene.balls.empty()) return;
-  bool has_cue = lab.scene.cue.has_value();
-  if (ImGui::Checkbox("cue strike", &has_cue) && !lab.shot) {
-    lab.history.record(has_cue ? "add cue strike" : "remove cue strike", lab.scene);
-    if (has_cue) lab.scene.cue = CueStrike{lab.scene.balls[lab.selected].spec.id};
-    else lab.scene.cue.reset();
-    lab.scene_changed();
-  }
-  if (!lab.scene.cue) return;
-  CueStrike cue = *lab.scene.cue;
-  const std::string on = "on " + cue.ball;
-  same_line_if_fits(on.c_str());
-  ImGui::TextDisabled("%s", on.c_str());
-  tool_buttons(lab);
+// The stroke of the cue strike: ball in hand, pocket aims, speed, aim, elevation, tip and what they give.
+void aim_controls(Lab& lab, CueStrike& cue) {
   if (ImGui::Button(lab.in_hand ? "Put down (click)" : "Ball in hand (B)")) lab.pick_up_cue_ball();
   mark("Ball in hand");
   same_line_if_fits("< pocket");
@@ -208,6 +197,43 @@ void aim_section(Lab& lab) {
   if (ImGui::SmallButton("centre")) cue.side = cue.height = 0, lab.set_cue(cue, "tip");
   ImGui::EndGroup();
   aim_readouts(lab, cue);
+}
+
+// The ball the cue strikes, any of the scene's: the stroke (speed, aim, tip) stays as it is.
+void struck_ball(Lab& lab, CueStrike& cue) {
+  same_line_if_fits("on 00000000");
+  ImGui::TextUnformatted("on");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  if (ImGui::BeginCombo("##struck ball", cue.ball.c_str())) {
+    for (const InitialBall& b : lab.scene.balls)
+      if (ImGui::Selectable(b.spec.id.c_str(), b.spec.id == cue.ball) && b.spec.id != cue.ball) {
+        cue.ball = b.spec.id;
+        lab.set_cue(cue, "struck ball");
+      }
+    ImGui::EndCombo();
+  }
+  mark("struck ball");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the ball the cue strikes; speed, aim and tip stay");
+}
+
+void aim_section(Lab& lab) {
+  if (lab.scene.balls.empty()) return;
+  bool has_cue = lab.scene.cue.has_value();
+  if (ImGui::Checkbox("cue strike", &has_cue) && !lab.shot) lab.set_cue_strike(has_cue);
+  mark("cue strike");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("untick for a scene whose balls start as placed (moving or not); the stroke stays, greyed");
+  // Unticked, the stroke stays drawn greyed: the panel keeps its height (unticking once pulled the checkbox from
+  // under the pointer), and ticking brings the same stroke back.
+  CueStrike cue = lab.scene.cue ? *lab.scene.cue : lab.spare_cue();
+  ImGui::BeginDisabled(!lab.scene.cue);
+  struck_ball(lab, cue);
+  ImGui::EndDisabled();
+  tool_buttons(lab);  // Move balls and Target serve a scene without a cue strike too
+  ImGui::BeginDisabled(!lab.scene.cue);
+  aim_controls(lab, cue);
+  ImGui::EndDisabled();
 }
 
 void balls_section(Lab& lab) {

@@ -844,11 +844,35 @@ def rigid(binary, root, display, work):
     app.close()
 
 
+def struck_ball(app):
+    """A coach strikes another ball from the Aim section's list, the stroke kept; unticking the cue strike leaves the
+    checkbox under the pointer (the section stays, greyed) and ticking it again brings the same stroke back."""
+    app.scroll(150, 400, 10)  # the left panel scrolled down, as on a laptop: a shorter section would pull it back
+    s = app.state()
+    before, box = s["cue"], app.widget(s, "cue strike")
+    app.click_widget(s, "cue strike")
+    s = app.wait(lambda s: s["cue"] is None, 10, "unticked, no cue strike")
+    check(app.widget(s, "cue strike")["y"] == box["y"], f"the checkbox stays where it was (y {box['y']})")
+    app.click_widget(s, "cue strike")
+    s = app.wait(lambda s: s["cue"] is not None, 10, "ticked again")
+    check(s["cue"] == before, f"the same stroke is back ({s['cue']})")
+    combo = app.widget(s, "struck ball")
+    app.click_widget(s, "struck ball")
+    time.sleep(0.5)
+    app.click(combo["x"] + combo["w"] * 0.5, combo["y"] + combo["h"] * 2.5)  # the list's second ball, "1"
+    s = app.wait(lambda s: s["cue"]["ball"] == "1", 10, "the 1 ball chosen from the list")
+    check({k: v for k, v in s["cue"].items() if k != "ball"} == {k: v for k, v in before.items() if k != "ball"},
+          "striking the 1 ball keeps speed, aim and tip")
+    app.key("u")
+    s = app.wait(lambda s: s["cue"] == before, 10, "Undo strikes the cue ball again")
+
+
 def coach(binary, root, display, work):
     """The shot margin of the cut: open its section (scrolling the panel with the wheel), read the success and the
     aim window, turn the aim and see the window move with it, map aim x speed with few replays, click a cell of the
     map to take its aim and speed."""
     app = App(binary, display, work, os.path.join(root, "presets", "cut.json"))
+    struck_ball(app)
     s = app.state()
     panel = s["widgets"]["Shot margin"]
     app.scroll(panel["x"] + 100, 300, 15)

@@ -822,6 +822,26 @@ TEST_F(LabTest, ClearingKeptShotsIsUndone) {
   EXPECT_EQ(lab.kept.size(), 2u);
 }
 
+// From a coach's trial: unticking the cue strike and ticking it again (then the only way to strike another ball) lost
+// the draw preset's aim, tip and speed. The stroke is kept aside and comes back.
+TEST_F(LabTest, ACueStrikeTickedAgainIsTheSameStroke) {
+  load("draw.json");
+  const CueStrike stroke = *lab.scene.cue;
+  lab.set_cue_strike(false);
+  ASSERT_FALSE(lab.scene.cue);
+  EXPECT_EQ(lab.spare_cue().height, stroke.height);
+  lab.set_cue_strike(true);
+  ASSERT_TRUE(lab.scene.cue);
+  EXPECT_EQ(lab.scene.cue->ball, "cue");
+  EXPECT_EQ(lab.scene.cue->aim, stroke.aim);
+  EXPECT_EQ(lab.scene.cue->speed, stroke.speed);
+  EXPECT_EQ(lab.scene.cue->height, stroke.height);
+  lab.undo();
+  EXPECT_FALSE(lab.scene.cue);
+  lab.undo();
+  EXPECT_EQ(lab.scene.cue->height, stroke.height);
+}
+
 // A break in one action: rack, cue ball in hand behind the head string, a centre-ball cue strike at the apex.
 TEST_F(LabTest, SetUpBreakRacksAndGivesBallInHand) {
   load("cut.json");
