@@ -103,48 +103,80 @@ void browser_popup(Lab& lab, std::string& dir) {
   ImGui::EndPopup();
 }
 
-void save_to(Lab& lab, const std::string& path) {
+bool save_to(Lab& lab, const std::string& path) {
   try {
     save_scene(path, lab.scene);
     lab.scene_path = path;
     lab.loaded = lab.scene;  // the file now holds these values: the list of changes starts again from them
     remember_file(lab.settings, path);
     lab.say(MessageKind::Note, "saved " + path);
+    return true;
   } catch (const std::exception& e) {
     lab.say(MessageKind::Refused, e.what());
+    return false;
   }
 }
 
-// Save as: a path box (a relative path is taken inside `folder`, the one it proposes), with a confirmation before
-// replacing a file that exists.
+// Save as: a path box (a relative path is taken inside `folder`, the one it proposes). Replacing a file that exists
+// takes the Replace button or a second Return (a habitual Return wrote over a coach's drill); a folder that does not
+// exist yet is made. A failed save keeps the dialog and the name typed, the error under the box.
 void save_as_popup(Lab& lab, std::string& typed, const std::string& folder) {
-  if (!ImGui::BeginPopupModal("Save scene as", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  static std::string armed;  // the path a first Return over an existing file armed for replacing
+  static std::string failed;  // why the last save from here failed
+  if (!ImGui::BeginPopupModal("Save scene as", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    armed.clear();
+    return;
+  }
   ImGui::TextUnformatted("File (a .json scene):");
   ImGui::SetNextItemWidth(em(420));
   const bool enter = ImGui::InputText("##saveas", &typed, ImGuiInputTextFlags_EnterReturnsTrue);
   mark("save path");
+  if (ImGui::IsItemEdited()) failed.clear();
   const std::string path = scene_file_path(typed, folder);
+  const fs::path parent = fs::path(path).parent_path();
   std::error_code ec;
   const bool folder_typed = !path.empty() && fs::is_directory(path, ec);
   const bool exists = !path.empty() && fs::exists(path, ec);
+  const bool new_folder = !path.empty() && !parent.empty() && !fs::exists(parent, ec);
   const bool preset = inside(path, lab.data_root + "/presets");
   const bool blocked = path.empty() || preset || folder_typed;
-  if (folder_typed) coloured_wrapped(ImVec4(1, 0.7f, 0.3f, 1), "that is a folder: add a file name");
-  else if (preset) coloured_wrapped(ImVec4(1, 0.7f, 0.3f, 1), "that is a shipped preset: choose another name");
+  const bool arm = enter && !blocked && exists && armed != path;
+  if (arm) {
+    armed = path;
+    ImGui::SetKeyboardFocusHere(-1);  // Return ended the entry: the box takes the second Return
+  }
+  const ImVec4 warn(1, 0.7f, 0.3f, 1);
+  if (folder_typed) coloured_wrapped(warn, "that is a folder: add a file name");
+  else if (preset) coloured_wrapped(warn, "that is a shipped preset: choose another name");
+  else if (exists && armed == path) coloured_wrapped(warn, "Return again, or Replace, writes over the file that exists");
   else if (exists) coloured_wrapped(ImVec4(1, 0.8f, 0.4f, 1), "a file of that name exists: Replace writes over it");
+  else if (new_folder) coloured_wrapped(ImVec4(1, 0.8f, 0.4f, 1), "the folder %s does not exist yet: Save makes it",
+                                        parent.filename().string().c_str());
   if (!path.empty() && !folder_typed) {
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + em(420));  // a long path wraps under the box, not past the window
     ImGui::TextDisabled("saves %s", path.c_str());
     ImGui::PopTextWrapPos();
   }
+  if (!failed.empty()) {
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + em(420));
+    ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "%s", failed.c_str());
+    ImGui::PopTextWrapPos();
+  }
   ImGui::BeginDisabled(blocked);
-  if (ImGui::Button(exists ? "Replace" : "Save") || (enter && !blocked)) {
-    save_to(lab, path);
-    ImGui::CloseCurrentPopup();
+  const bool clicked = ImGui::Button(exists ? "Replace" : "Save");
+  mark("save button");
+  if (clicked || (enter && !blocked && !arm && (!exists || armed == path))) {
+    if (new_folder) fs::create_directories(parent, ec);
+    if (ec) lab.say(MessageKind::Refused, failed = "cannot make the folder " + parent.string() + ": " + ec.message());
+    else if (!save_to(lab, path)) failed = lab.message;
+    else failed.clear(), armed.clear(), ImGui::CloseCurrentPopup();
   }
   ImGui::EndDisabled();
   ImGui::SameLine();
-  if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
+  if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+    failed.clear(), armed.clear();
+    ImGui::CloseCurrentPopup();
+  }
   ImGui::EndPopup();
 }
 

@@ -1159,6 +1159,53 @@ def bad_scene(binary, root, display, work):
     with open(os.path.join(config, "shotlab", "settings.json")) as f:
         last = json.load(f)["last_scene"]
     check(last.endswith("cut.json"), f"the settings still name the last good scene ({os.path.basename(last)})")
+    save_as(binary, root, display, work)
+
+
+def save_as(binary, root, display, work):
+    """A coach's trial: Save as into a folder that did not exist failed with a technical message and lost the name
+    typed; Return over an existing drill replaced it at once. The folder is made; Return over an existing file asks
+    for a second Return; a failed save keeps the dialog, the name and the error."""
+    app = App(binary, display, work, os.path.join(root, "presets", "cut.json"))
+    target = os.path.join(work, "drills", "drill_cut")
+    shutil.rmtree(os.path.dirname(target), ignore_errors=True)
+
+    def type_path(path):
+        app.click_widget(app.state(), "Save as...")
+        time.sleep(0.4)
+        app.click_widget(app.state(), "save path")
+        app.key("ctrl+a")
+        app.type(path)
+        time.sleep(0.3)
+
+    def saved_aim():
+        with open(target + ".json") as f:
+            return json.load(f)["cue"]["aim_deg"]
+    type_path(target)
+    app.key("Return")
+    s = app.wait(lambda s: s["readouts"]["popup open"] == 0, 10, "Return saves into a new folder and closes")
+    check(os.path.exists(target + ".json") and "saved" in s["message"], f"the folder is made ({s['message']!r})")
+    first = saved_aim()
+    app.key("Right", 5)
+    type_path(target)
+    app.key("Return")
+    time.sleep(0.5)
+    s = app.state()
+    check(s["readouts"]["popup open"] == 1 and saved_aim() == first,
+          "one Return over the existing file keeps it and the dialog open")
+    app.key("Return")
+    s = app.wait(lambda s: s["readouts"]["popup open"] == 0, 10, "a second Return replaces it")
+    check(abs(saved_aim() - s["cue"]["aim_deg"]) < 1e-9 and saved_aim() != first, "the file holds the new aim")
+    blocker = os.path.join(work, "drills", "a_file")
+    open(blocker, "w").close()
+    type_path(os.path.join(blocker, "sub", "drill"))  # a folder that cannot be made: a file is in its way
+    app.key("Return")
+    time.sleep(0.5)
+    s = app.state()
+    check(s["readouts"]["popup open"] == 1 and "cannot make the folder" in s["message"],
+          f"a save that fails keeps the dialog open and says why ({s['message']!r})")
+    app.key("Escape")
+    app.close()
 
 
 def help_below_banner(app, size):
