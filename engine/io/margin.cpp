@@ -210,13 +210,12 @@ void edge_search(const Scene& scene, const MarginOptions& o, const Judge& judge,
     return !replay(scene, o, judge, e, false).success;
   };
   double good = 0, bad = 0;
-  bool found = false;
+  bool found = false, level = false;  // level: the window reaches a level cue, where it ends
   const double floor = k == kElevation ? -scene.cue->elevation / kDeg : -1e300;  // no cue below level
-  for (int n = 1; n <= kToleranceSteps && !found; ++n) {
+  for (int n = 1; n <= kToleranceSteps && !found && !level; ++n) {
     const double x = std::max(floor, n * step);
     if (fails(x)) bad = x, found = true;
-    else if (x == floor) break;
-    else good = x;
+    else good = x, level = x == floor;
   }
   // Halvings to `resolution`, at most 60 (past a double's precision on any step).
   const int halvings = resolution > 0 ? 60 : kToleranceBisections;
@@ -224,8 +223,8 @@ void edge_search(const Scene& scene, const MarginOptions& o, const Judge& judge,
     const double mid = 0.5 * (good + bad);
     (fails(mid) ? bad : good) = mid;
   }
-  (dir < 0 ? out.lo : out.hi) = good;
-  (dir < 0 ? out.bounded_lo : out.bounded_hi) = found;
+  (dir < 0 ? out.lo : out.hi) = good + 0.0;  // + 0.0: a level cue's floor, -0, is 0
+  (dir < 0 ? out.bounded_lo : out.bounded_hi) = found || level;
 }
 }  // namespace
 

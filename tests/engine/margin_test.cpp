@@ -64,6 +64,10 @@ TEST(Margin, AimToleranceAndSuccessFollowTheGeometryOfAStraightShot) {
   EXPECT_NEAR(r.probability, expected, 3 * r.standard_error + 0.02) << "alpha_max " << alpha_max << " deg";
   EXPECT_NEAR(r.alone[kAim], r.probability, 1e-12);  // aim is the only source: the same draws
   EXPECT_EQ(r.alone[kSpeed], 1.0);                    // the others have no noise: every replay is the straight shot
+  // A level cue goes no lower: elevation's window ends there, at 0 (not "-0 or less", as a coach read it).
+  EXPECT_EQ(r.tolerance[kElevation].lo, 0.0);
+  EXPECT_FALSE(std::signbit(r.tolerance[kElevation].lo));
+  EXPECT_TRUE(r.tolerance[kElevation].bounded_lo);
 }
 
 TEST(Margin, ReplaysDoNotDependOnThreadsAndNoNoiseMeansTheNominalOutcome) {

@@ -67,7 +67,7 @@ struct MarginOptions {
 // lo <= 0 <= hi when the intended stroke succeeds; both 0 when it fails.
 struct Tolerance {
   double lo = 0, hi = 0;
-  bool bounded_lo = true, bounded_hi = true;  // false: no failure found that far out
+  bool bounded_lo = true, bounded_hi = true;  // false: no failure found that far out (a level cue ends elevation's)
 };
 
 struct MarginResult {
