@@ -261,10 +261,20 @@ void notes_section(Lab& lab) {
     }
     if (tall > cap) ImGui::EndChild();
     else if (*text) text_wrapped("%s", text);
-    if (ImGui::SmallButton(lab.scene.description.empty() ? "Add notes" : "Edit notes")) editing = true;
+    if (ImGui::SmallButton(lab.scene.description.empty() ? "Add notes" : "Edit name and notes")) editing = true;
     mark("Edit notes");
     return;
   }
+  // The scene's name too: a drill saved from a preset kept the preset's name, with nowhere to change it.
+  std::string name = lab.scene.name;
+  const Fields f({"name"});
+  f.label("name");
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  if (ImGui::InputText("##scene name", &name)) {
+    lab.history.record("name", lab.scene, "name");
+    lab.scene.name = std::move(name);
+  }
+  mark("scene name");
   std::string text = lab.scene.description;
   if (ImGui::InputTextMultiline("##notes", &text, ImVec2(-FLT_MIN, em(100)))) {
     lab.history.record("notes", lab.scene, "notes");
