@@ -1181,10 +1181,20 @@ def save_as(binary, root, display, work):
     def saved_aim():
         with open(target + ".json") as f:
             return json.load(f)["cue"]["aim_deg"]
+    # The drill gets its own name first (it kept the preset's, "cut shot", with nowhere to change it).
+    app.click_widget(app.state(), "Edit notes")
+    time.sleep(0.3)
+    app.click_widget(app.state(), "scene name")
+    app.key("ctrl+a")
+    app.type("cut drill")
+    app.click_widget(app.state(), "Done")
+    app.wait(lambda s: s["scene_name"] == "cut drill", 10, "the scene is renamed in the notes' editor")
     type_path(target)
     app.key("Return")
     s = app.wait(lambda s: s["readouts"]["popup open"] == 0, 10, "Return saves into a new folder and closes")
     check(os.path.exists(target + ".json") and "saved" in s["message"], f"the folder is made ({s['message']!r})")
+    with open(target + ".json") as f:
+        check(json.load(f)["name"] == "cut drill", "the file holds the new name")
     first = saved_aim()
     app.key("Right", 5)
     type_path(target)
