@@ -22,7 +22,8 @@ int contacts_table(const ContactLog& log, int selected) {
   if (!ImGui::BeginTable("contacts", 5, flags, ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * rows + scrollbar)))
     return selected;
   ImGui::TableSetupScrollFreeze(0, 1);
-  for (const char* h : {"pair", "begins (s)", "lasts (ms)", "peak (N)", "depth (um)"}) ImGui::TableSetupColumn(h);
+  const std::string depth = std::string("depth (") + kMicro + "m)";
+  for (const char* h : {"pair", "begins (s)", "lasts (ms)", "peak (N)", depth.c_str()}) ImGui::TableSetupColumn(h);
   ImGui::TableHeadersRow();
   for (int k = 0; k < static_cast<int>(log.contacts.size()); ++k) {
     const ContactTrace& c = log.contacts[k];
@@ -60,7 +61,7 @@ void contacts_section(Lab& lab) {
   std::vector<double> depth_um;
   for (double d : c.depth) depth_um.push_back(d * 1e6);
   PlotSpec force{"normal force, " + c.label(), "N", lab.view_time, c.begin, end};
-  PlotSpec depth{"penetration, " + c.label(), "um", lab.view_time, c.begin, end};
+  PlotSpec depth{"penetration, " + c.label(), std::string(kMicro) + "m", lab.view_time, c.begin, end};
   for (PlotSpec* spec : {&force, &depth}) spec->origin = c.begin, spec->origin_name = "contact start";
   if (const auto t = lab_plot(lab, "contact_force", force, {{"force", IM_COL32(255, 110, 90, 255), c.time, c.force}}, em(120)))
     lab.seek(*t);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ui/ticks.hpp"
 #include "ui/panels.hpp"
 #include "ui/widgets.hpp"
 
@@ -113,8 +114,8 @@ void collision_plot(Lab& lab) {
   PlotSpec spec{"normal force, " + c.label(), "N", lab.view_time, c.begin, std::max(end, c.begin + 1e-6)};
   spec.origin = c.begin, spec.origin_name = "contact start";
   seek_to(lab, lab_plot(lab, "collision", spec, {f}, em(150)));
-  text_wrapped("peak %.0f N, lasted %.3f ms, deepest %.1f um", c.peak_force(), (end - c.begin) * 1e3,
-               c.max_depth() * 1e6);
+  text_wrapped("peak %.0f N, lasted %.3f ms, deepest %.1f %sm", c.peak_force(), (end - c.begin) * 1e3,
+               c.max_depth() * 1e6, kMicro);
   if (ImGui::SmallButton("go to its start")) lab.seek(c.begin);
 }
 

@@ -155,7 +155,7 @@ TEST(Ticks, OneTwoFiveStepsInsideTheRange) {
 
 // A 0.35 ms collision needs microseconds: the readouts and plot axes switch unit with the span shown.
 TEST(Ticks, TimeUnitsResolveACollision) {
-  EXPECT_STREQ(time_unit(3.5e-4).name, "us");
+  EXPECT_EQ(time_unit(3.5e-4).name, std::string(kMicro) + "s");
   EXPECT_STREQ(time_unit(0.05).name, "ms");
   EXPECT_STREQ(time_unit(6.0).name, "s");
   EXPECT_EQ(format_time(0.11105234, true), "0.111052 s");
@@ -185,6 +185,19 @@ TEST(PlotCsv, ACollisionPlotWritesTheTimeSinceTheContactToo) {
   EXPECT_EQ(first, "0.25,0,0");
   EXPECT_EQ(second.substr(0, 7), "0.2501,");
   EXPECT_NEAR(std::stod(second.substr(7)), 1e-4, 1e-12);
+  std::filesystem::remove(file);
+}
+
+// On screen a depth reads in micrometres with the micro sign; the CSV keeps to ASCII, "um", for any spreadsheet.
+TEST(PlotCsv, TheMicroSignIsWrittenAsU) {
+  const auto file = std::filesystem::temp_directory_path() / ("shotlab-plot-u-" + std::to_string(::getpid()) + ".csv");
+  PlotSpec spec;
+  spec.unit = std::string(kMicro) + "m";
+  write_plot_csv(file.string(), spec, {{"depth", 0, {0.25}, {12.5}}});
+  std::istringstream lines(read(file));
+  std::string header;
+  std::getline(lines, header);
+  EXPECT_EQ(header, "time_s,\"depth (um)\"");
   std::filesystem::remove(file);
 }
 
