@@ -66,7 +66,26 @@ struct BallRow {
   Motion motion = Motion::Stationary;
   std::string speed_tip;  // the speed cell's tooltip ("" for none)
   std::string rod_tip;    // the state's tooltip for a ball on a rod ("" for the motion's meaning)
+  std::string spin_tip;   // the spin cell's: top- or backspin, side spin (the cell is the spin's size alone)
 };
+
+// The spin split as a player reads it: about the horizontal axis across the ball's path (positive: topspin, the way
+// it rolls), about the vertical (side spin), about the path itself. y is up.
+std::string spin_parts(const Vec3& w, const Vec3& v, double radius, double rest_speed) {
+  char out[200];
+  const double along = std::hypot(v.x, v.z);
+  if (along < rest_speed) {
+    std::snprintf(out, sizeof out, "about the vertical (side spin): %.1f rad/s; about horizontal axes: %.1f rad/s",
+                  w.y, std::hypot(w.x, w.z));
+    return out;
+  }
+  const Vec3 path{v.x / along, 0, v.z / along}, across{path.z, 0, -path.x};  // across = up x path
+  const double roll = glm::dot(w, across);
+  std::snprintf(out, sizeof out, "%.1f rad/s of %s (rolling at this speed: %.1f of topspin)\nside spin (about the "
+                "vertical): %.1f rad/s; about its path: %.1f rad/s", std::abs(roll), roll >= 0 ? "topspin" : "backspin",
+                along / radius, w.y, glm::dot(w, path));
+  return out;
+}
 
 BallRow ball_row(const Lab& lab, const Model& m, const Frame& f, int i) {
   BallRow r;
@@ -94,6 +113,7 @@ BallRow ball_row(const Lab& lab, const Model& m, const Frame& f, int i) {
     r.cells[2] = text("%.3f", v);
   }
   r.cells[3] = text("%.1f", glm::length(spin(f.state.x, i)));
+  r.spin_tip = spin_parts(spin(f.state.x, i), velocity(f.state.x, i), m.balls[i].radius, m.options.rest_speed);
   const BallMotion b = ball_motion(m, f.state, i);
   r.cells[4] = text("%.4f", b.translation + b.rotation);
   const Vec3 p = position(f.state.x, i);
@@ -140,6 +160,7 @@ float ball_rows(Lab& lab, const char* id, const std::vector<BallRow>& rows, cons
       } else {
         ImGui::TextUnformatted(r.cells[c].c_str());
         if (c == 2 && !r.speed_tip.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.speed_tip.c_str());
+        if (c == 3 && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.spin_tip.c_str());
       }
     }
   }
