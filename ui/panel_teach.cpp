@@ -217,26 +217,44 @@ void ball_table(Lab& lab) {
     }
 }
 
+// Gravity's energy (J) of the balls on rods at the start above the bottom of their swing: a pendulum let go from a
+// height starts with it, as a textbook draws it (from the start alone, a cradle's bars added up to 0 J).
+double height_to_swing(const Model& m, const State& start) {
+  const double g = glm::length(m.options.gravity);
+  if (g == 0) return 0;
+  double e = 0;
+  for (const Rod& rod : m.rods)
+    if (start.in_play[rod.ball]) {
+      const Vec3 lowest = rod.anchor + rod.length * m.options.gravity / g;
+      e -= m.balls[rod.ball].mass * glm::dot(m.options.gravity, position(start.x, rod.ball) - lowest);
+    }
+  return e;
+}
+
 // Energy as bars that always add up to what the shot started with: what moves, what is stored in contacts, what
-// gravity holds (relative to the start) and what friction and damping have turned into heat and sound.
+// gravity holds (relative to the start, or for a ball on a rod to the bottom of its swing) and what friction and
+// damping have turned into heat and sound.
 void energy_bars(const Lab& lab) {
   const Frame& f = lab.frame();
   const Model& m = shown_model(lab);
-  const Energy start = lab.shot ? lab.shot->frames().front().energy : f.energy;
+  const Frame& first = lab.shot ? lab.shot->frames().front() : f;
+  const Energy start = first.energy;
+  const double swing = height_to_swing(m, first.state);
   double translation = 0, rotation = 0;
   for (int i = 0; i < f.state.ball_count(); ++i)
     if (f.state.in_play[i]) {
       const BallMotion b = ball_motion(m, f.state, i);
       translation += b.translation, rotation += b.rotation;
     }
-  const double potential = f.energy.potential - start.potential;
+  const double potential = f.energy.potential - start.potential + swing;
   const double lost = start.total() - f.energy.total();
-  double scale = start.kinetic + start.elastic;  // the largest motion energy of the shot spans the bars
+  double scale = start.kinetic + start.elastic + swing;  // the largest energy of the shot spans the bars
   if (lab.shot)
     for (const Frame& fr : lab.shot->frames()) scale = std::max(scale, fr.energy.kinetic + fr.energy.elastic);
   // A ball dropped into a pocket turns height into heat and sound beyond what ever moved: those bars fit too.
   scale = std::max({scale, kEnergyBarFloor, std::abs(potential), std::abs(lost)});
-  text_wrapped("Energy (J): the bars add up to the energy at the start");
+  readout("energy at the start", start.kinetic + start.elastic + swing);
+  text_wrapped("Energy (J): the bars add up to the energy at the start, %.4g J", start.kinetic + start.elastic + swing);
   bar_chart("energy", {{"moving", translation, IM_COL32(80, 170, 255, 255)},
                        {"spinning", rotation, IM_COL32(255, 220, 80, 255)},
                        {"in contacts", f.energy.elastic, IM_COL32(120, 230, 120, 255)},
@@ -246,7 +264,8 @@ void energy_bars(const Lab& lab) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("in contacts: elastic energy of squeezed contacts (a resting ball's weight presses it about a "
                       "micrometre into the cloth: a few microjoules);\nheight: gravity's potential energy since the "
-                      "start (a ball sinks into the cloth, hops, falls into a pocket);\nheat, sound: what friction and "
+                      "start (a ball sinks into the cloth, hops, falls into a pocket), for a ball on a rod above the "
+                      "bottom of its swing;\nheat, sound: what friction and "
                       "contact damping have taken out of the motion");
 }
 

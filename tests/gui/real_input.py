@@ -9,6 +9,7 @@ layout bad_scene)
 Standard-library python3 only; needs Xvfb, xdotool and xwd (scripts/setup.sh installs them).
 """
 import json
+import math
 import os
 import shutil
 import signal
@@ -637,6 +638,13 @@ def developer(binary, root, display, work):
     """Change the ball-ball stiffness, see the contact-time readout change, reset."""
     app = App(binary, display, work, os.path.join(root, "presets", "cradle.json"))
     s = app.state()
+    # The raised ball's height above the bottom of its swing is the cradle's energy (a trial read bars adding up to 0).
+    with open(os.path.join(root, "presets", "cradle.json")) as f:
+        cradle = json.load(f)
+    p, a = cradle["balls"][0]["position"], cradle["rods"][0]["anchor"]
+    mgh = 0.17 * 9.81 * (math.dist(p, a) - (a[1] - p[1]))  # a pool ball's 0.17 kg raised h = L - (anchor - y)
+    e = s["readouts"].get("energy at the start", 0)
+    check(abs(e - mgh) < 1e-4, f"the cradle starts with m g h = {mgh:.4f} J ({e:.4f} J)")
     app.click_widget(s, "tab Tuning")
     s = app.wait(lambda s: "contact_time ball_ball" in s["readouts"], 30, "the probe's contact time is shown")
     before = s["readouts"]["contact_time ball_ball"]
