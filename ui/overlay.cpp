@@ -117,7 +117,10 @@ void line(ImDrawList* d, const Viewport& vp, const Vec3& a, const Vec3& b, ImU32
 
 void arrow(ImDrawList* d, const Viewport& vp, const Vec3& from, const Vec3& to, ImU32 color, float width) {
   const auto pa = vp.project(from), pb = vp.project(to);
-  if (pa && pb) flat_arrow(d, v2(*pa), v2(*pb), color, width);
+  if (!pa || !pb) return;
+  // On a dark edge: the yellow spin arrow over the white cue ball was all but invisible.
+  flat_arrow(d, v2(*pa), v2(*pb), IM_COL32(0, 0, 0, 170), width + 2.5f);
+  flat_arrow(d, v2(*pa), v2(*pb), color, width);
 }
 
 // A trail's points lie 2 mm apart on the table, under a pixel at most zooms: drawn, a point comes this many pixels
