@@ -248,6 +248,7 @@ void map_section(Lab& lab, MarginView& v) {
   ImGui::Combo("##map cells", &v.map_size, sizes, 2);
   f.label("replays");
   ImGui::SliderInt("##map replays", &v.map_samples, 10, 200, "%d per cell");
+  integer_entry();
   mark("map replays");
   if (!v.map_wanted) {
     if (ImGui::Button("Map aim x speed")) v.map_wanted = true;

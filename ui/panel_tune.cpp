@@ -260,6 +260,8 @@ bool world_section(Lab& lab) {
   f.label("max steps/call");
   changed |= ImGui::SliderInt("##maxsteps", &in.max_steps_per_call, 100, 1000000, "%d",
                               ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  integer_entry();
+  mark("max steps");
   f.label("physics/frame");
   slider("##budget", lab.settings.budget_ms, 1.0, 50.0, "%.0f ms");  // display only: no re-run
   return changed;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <set>
 #include <string_view>
 #include <imgui_internal.h>
 #include <utility>
@@ -28,6 +29,7 @@ constexpr float kMinControl = 130;   // px (unscaled): narrower, a slider is har
 std::map<std::string, Rect> current_marks, last_marks;
 std::map<std::string, double> current_readouts, last_readouts;
 std::string slider_note;  // take_slider_note()
+std::set<ImGuiID> current_integers, last_integers;  // integer_entry(): this frame's and the last one's
 }  // namespace
 
 float em(float pixels) { return pixels * ImGui::GetFontSize() / kBaseFont; }
@@ -88,20 +90,26 @@ bool slider(const char* id, double& v, double lo, double hi, const char* format,
 
 std::string take_slider_note() { return std::exchange(slider_note, std::string()); }
 
+void integer_entry() { current_integers.insert(ImGui::GetItemID()); }
+
 std::string vet_number_typing() {
   const ImGuiContext& g = *GImGui;
   const ImGuiIO& io = ImGui::GetIO();
-  // Every number entry here is a slider's or drag's typed entry (ctrl+click), whose filter lets through what this does.
+  // Every number entry here is a slider's or drag's typed entry (ctrl+click), whose filter lets through what this does:
+  // ImGui's CharsScientific for a double, CharsDecimal (no e) for an integer.
   if (g.ActiveId == 0 || g.TempInputId != g.ActiveId) return {};
+  const bool integer = last_integers.count(g.ActiveId) > 0;
+  const char* takes = integer ? "0123456789.+-*/" : "0123456789.+-*/eE";
   std::string dropped;
   for (ImWchar c : io.InputQueueCharacters) {
-    if (c < 0x20 || c == ' ' || (c < 0x80 && std::strchr("0123456789.+-*/eE", static_cast<char>(c)))) continue;
+    if (c < 0x20 || (c < 0x80 && c != ' ' && std::strchr(takes, static_cast<char>(c)))) continue;
     char utf8[5];
     dropped += ImTextCharToUtf8(utf8, c);
   }
   if (dropped.empty()) return {};
-  return "'" + dropped + "' is not part of a number: a number field takes digits, '.' for decimals, e for powers of "
-         "ten and signs";
+  return "'" + dropped + "' is not part of " + (integer ? "a whole number: the field takes digits and signs"
+                                                         : "a number: the field takes digits, '.' for decimals, e for "
+                                                           "powers of ten and signs");
 }
 
 bool tip_widget(CueStrike& cue, float size) {
@@ -373,6 +381,8 @@ void mark_rect(const std::string& name, const Rect& r) { current_marks[name] = r
 void new_marks_frame() {
   last_marks.swap(current_marks);
   current_marks.clear();
+  last_integers.swap(current_integers);
+  current_integers.clear();
   last_readouts.swap(current_readouts);
   current_readouts.clear();
 }

@@ -33,6 +33,7 @@ std::string take_slider_note();
 // Once a frame, before the panels: what was typed into the number field being edited that it drops ("'a,' is not
 // part of a number: ..."), where ImGui would drop it without a word; else empty.
 std::string vet_number_typing();
+void integer_entry();  // right after an integer slider: its typed entry takes no e (what vet_number_typing says)
 
 // A drawn ball face: click or drag to put the cue tip (right is the shooter's right, up is follow); the dashed
 // ring is the miscue limit. Returns true while it changes the offsets.
