@@ -1,6 +1,6 @@
 // One undo stack for everything the user does to the table: ball moves, adds and removals, aim and cue changes, a
-// break set up, the practice target, clearing the kept shots, shots and Next. Each entry is the scene as it was before the action, with a
-// label for the menu. A run of edits of the same kind (dragging the aim, nudging the speed) merges into one entry, so
+// break set up, the practice target, clearing kept shots, shots and Next. Each entry is the scene as it was before
+// the action, with a label for the menu. A run of edits of the same kind (dragging the aim, nudging the speed) merges into one entry, so
 // that one undo takes back the whole gesture. Tuned physics is not part of it (the tuning panel has its own reset),
 // except across a file load: undoing a load brings back the whole scene before it, its file, its tuned physics and
 // the lab's workbench.
@@ -54,8 +54,9 @@ class History {
   const std::string& redo_label() const;
   size_t size() const { return undo_.size(); }
 
-  // The step to go back to; `current` (and, when the step crosses a load, what `current_file` gives: called only then,
-  // since it copies the workbench; for a target's step, `current_target`) is kept for the way back. Call only when
+  // The step to go back to; `current` (and, when the step crosses a load or is one of the kept shots, what
+  // `current_file` gives: called only then, since it copies the workbench; for a target's step, `current_target`) is
+  // kept for the way back. Call only when
   // can_undo() / can_redo().
   using FileOf = std::function<SceneFile()>;
   HistoryStep undo(const Scene& current, const FileOf& current_file, const std::optional<Vec3>& current_target = {});

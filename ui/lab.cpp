@@ -176,7 +176,8 @@ void Lab::scene_changed() {
 
 void Lab::physics_changed() {
   if (compare.empty() && settings.view.compare && take_compare())
-    compare_label = shot ? "A: the shot before the first change" : "A: the prediction before the first change";
+    // A prediction still being worked out at the first change is not pinned: a later change pins the one before it.
+    compare_label = shot ? "A: the shot before the first change" : "A: the prediction before the change that pinned it";
   scene_changed();
   if (!shot) return;
   // The new run is shown at the moment the old one was, playing or paused as it was: a change made while stepping
@@ -316,6 +317,7 @@ void Lab::undo() {
 void Lab::take_step(HistoryStep step) {
   if (step.target) target = *step.target;
   if (step.kept) kept = std::move(*step.kept);
+  if (step.target || step.kept) return;  // the workbench alone: the scene stays as it is now
   if (step.file) {
     scene_path = std::move(step.file->path);
     loaded = std::move(step.file->loaded);

@@ -96,7 +96,7 @@ class Lab {
   std::vector<std::string> physics_changes() const;  // "materials.ball_ball.stiffness: 1e+10 -> 5e+09", ...
   void reset_physics();    // back to the loaded scene's materials, options and integrator
   void pin_compare();      // the current shot's trails (before a shot: the predicted paths) become the A of A/B
-  bool can_pin() const { return shot || prediction(); }
+  bool can_pin() const { return shot || prediction_seconds(); }  // a finished prediction, not copied
 
   // Shots and playback (lab.cpp).
   void shoot();

@@ -342,7 +342,8 @@ void Lab::keep_shot() {
   } else {
     k.label = "shot " + std::to_string(k.colour + 1);
   }
-  say(MessageKind::Note, "kept: " + k.label + (full ? " (the oldest kept shot made room)" : " (listed under Practice)"));
+  say(MessageKind::Note,
+      "kept: " + k.label + (full ? " (the oldest kept shot made room)" : " (listed under Practice)"));
   kept.push_back(std::move(k));
 }
 
@@ -368,7 +369,8 @@ void Lab::clear_kept() {
   if (kept.empty()) return;
   const size_t n = kept.size();
   history.record_kept("clear kept shots", scene, std::exchange(kept, {}));
-  say(MessageKind::Note, "cleared " + std::to_string(n) + " kept shot" + (n == 1 ? "" : "s") + " (Undo brings them back)");
+  say(MessageKind::Note,
+      "cleared " + std::to_string(n) + " kept shot" + (n == 1 ? "" : "s") + " (Undo brings them back)");
 }
 
 }  // namespace shotlab

@@ -131,7 +131,7 @@ void save_as_popup(Lab& lab, std::string& typed, const std::string& folder) {
   ImGui::SetNextItemWidth(em(420));
   const bool enter = ImGui::InputText("##saveas", &typed, ImGuiInputTextFlags_EnterReturnsTrue);
   mark("save path");
-  if (ImGui::IsItemEdited()) failed.clear();
+  if (ImGui::IsItemEdited()) failed.clear(), armed.clear();
   const std::string path = scene_file_path(typed, folder);
   const fs::path parent = fs::path(path).parent_path();
   std::error_code ec;
@@ -148,10 +148,11 @@ void save_as_popup(Lab& lab, std::string& typed, const std::string& folder) {
   const ImVec4 warn(1, 0.7f, 0.3f, 1);
   if (folder_typed) coloured_wrapped(warn, "that is a folder: add a file name");
   else if (preset) coloured_wrapped(warn, "that is a shipped preset: choose another name");
-  else if (exists && armed == path) coloured_wrapped(warn, "Return again, or Replace, writes over the file that exists");
+  else if (exists && armed == path)
+    coloured_wrapped(warn, "Return again, or Replace, writes over the file that exists");
   else if (exists) coloured_wrapped(ImVec4(1, 0.8f, 0.4f, 1), "a file of that name exists: Replace writes over it");
   else if (new_folder) coloured_wrapped(ImVec4(1, 0.8f, 0.4f, 1), "the folder %s does not exist yet: Save makes it",
-                                        parent.filename().string().c_str());
+                                        parent.string().c_str());
   if (!path.empty() && !folder_typed) {
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + em(420));  // a long path wraps under the box, not past the window
     ImGui::TextDisabled("saves %s", path.c_str());

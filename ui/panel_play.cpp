@@ -271,13 +271,13 @@ void notes_section(Lab& lab) {
   f.label("name");
   ImGui::SetNextItemWidth(-FLT_MIN);
   if (ImGui::InputText("##scene name", &name)) {
-    lab.history.record("name", lab.scene, "name");
+    lab.history.record("name and notes", lab.scene, "notes");  // one step with the notes, until Done
     lab.scene.name = std::move(name);
   }
   mark("scene name");
   std::string text = lab.scene.description;
   if (ImGui::InputTextMultiline("##notes", &text, ImVec2(-FLT_MIN, em(100)))) {
-    lab.history.record("notes", lab.scene, "notes");
+    lab.history.record("name and notes", lab.scene, "notes");
     lab.scene.description = std::move(text);
   }
   mark("notes");

@@ -72,18 +72,22 @@ struct BallRow {
 // The spin split as a player reads it: about the horizontal axis across the ball's path (positive: topspin, the way
 // it rolls), about the vertical (side spin), about the path itself. y is up.
 std::string spin_parts(const Vec3& w, const Vec3& v, double radius, double rest_speed) {
-  char out[200];
+  // y up, right-handed: a positive spin about it turns counter-clockwise seen from above.
+  auto turn = [](double about_up) {
+    return about_up >= 0 ? "counter-clockwise seen from above" : "clockwise seen from above";
+  };
+  char out[240];
   const double along = std::hypot(v.x, v.z);
   if (along < rest_speed) {
-    std::snprintf(out, sizeof out, "about the vertical (side spin): %.1f rad/s; about horizontal axes: %.1f rad/s",
-                  w.y, std::hypot(w.x, w.z));
+    std::snprintf(out, sizeof out, "side spin (about the vertical): %.1f rad/s %s; about horizontal axes: %.1f rad/s",
+                  std::abs(w.y), turn(w.y), std::hypot(w.x, w.z));
     return out;
   }
   const Vec3 path{v.x / along, 0, v.z / along}, across{path.z, 0, -path.x};  // across = up x path
   const double roll = glm::dot(w, across);
   std::snprintf(out, sizeof out, "%.1f rad/s of %s (rolling at this speed: %.1f of topspin)\nside spin (about the "
-                "vertical): %.1f rad/s; about its path: %.1f rad/s", std::abs(roll), roll >= 0 ? "topspin" : "backspin",
-                along / radius, w.y, glm::dot(w, path));
+                "vertical): %.1f rad/s %s; about its path: %.1f rad/s", std::abs(roll),
+                roll >= 0 ? "topspin" : "backspin", along / radius, std::abs(w.y), turn(w.y), glm::dot(w, path));
   return out;
 }
 
@@ -248,13 +252,14 @@ void energy_bars(const Lab& lab) {
     }
   const double potential = f.energy.potential - start.potential + swing;
   const double lost = start.total() - f.energy.total();
-  double scale = start.kinetic + start.elastic + swing;  // the largest energy of the shot spans the bars
+  const double at_start = start.kinetic + start.elastic + swing;  // J, what the bars add up to
+  double scale = at_start;  // the largest energy of the shot spans the bars
   if (lab.shot)
     for (const Frame& fr : lab.shot->frames()) scale = std::max(scale, fr.energy.kinetic + fr.energy.elastic);
   // A ball dropped into a pocket turns height into heat and sound beyond what ever moved: those bars fit too.
   scale = std::max({scale, kEnergyBarFloor, std::abs(potential), std::abs(lost)});
-  readout("energy at the start", start.kinetic + start.elastic + swing);
-  text_wrapped("Energy (J): the bars add up to the energy at the start, %.4g J", start.kinetic + start.elastic + swing);
+  readout("energy at the start", at_start);
+  text_wrapped("Energy (J): the bars add up to the energy at the start, %.4g J", at_start);
   bar_chart("energy", {{"moving", translation, IM_COL32(80, 170, 255, 255)},
                        {"spinning", rotation, IM_COL32(255, 220, 80, 255)},
                        {"in contacts", f.energy.elastic, IM_COL32(120, 230, 120, 255)},

@@ -137,7 +137,6 @@ json state_json(const Lab& lab, const ScreenInfo& screen) {
          {"frame_ms", screen.frame_ms},
          {"scene", lab.scene.name},
          {"scene_path", lab.scene_path},
-         {"scene_name", lab.scene.name},
          {"view_time", lab.view_time},
          {"playing", lab.playing},
          {"slowmo", st.slowmo},

@@ -10,8 +10,8 @@ namespace shotlab {
 
 // A unit that stays on the line of the number before it ("1.23 s" never ends one line and starts the next).
 inline bool is_unit(std::string_view w) {
-  static constexpr std::string_view kUnits[] = {"s", "ms", "us",  "m",   "mm",  "cm", "m/s", "rad/s", "deg", "N",
-                                                "J", "kg", "g",   "Hz",  "fps", "%",  "x",   "N/m",   "1/s", "rad"};
+  static constexpr std::string_view kUnits[] = {"s", "ms", "\xc2\xb5s", "\xc2\xb5m", "m",   "mm",  "cm", "m/s", "rad/s",
+                                                "deg", "N", "J", "kg", "g", "Hz", "fps", "%", "x", "N/m", "1/s", "rad"};
   if (!w.empty() && std::ispunct(static_cast<unsigned char>(w.back())) && w.back() != '%') w.remove_suffix(1);
   for (std::string_view u : kUnits)
     if (w == u) return true;

@@ -37,7 +37,8 @@ std::string format_tick(double value, const Ticks& ticks) {
 }
 
 TimeUnit time_unit(double span) {
-  if (span < 2e-3) return {1e6, "\xc2\xb5s"};  // kMicro
+  static const std::string micro = std::string(kMicro) + "s";
+  if (span < 2e-3) return {1e6, micro.c_str()};
   if (span < 0.2) return {1e3, "ms"};
   return {1.0, "s"};
 }

@@ -16,9 +16,9 @@ struct Ticks {
 Ticks nice_ticks(double lo, double hi, int max_ticks);
 std::string format_tick(double value, const Ticks& ticks);
 
-// A unit for a time axis spanning `span` seconds: s, ms or us, with the factor that converts seconds to it.
 inline constexpr const char* kMicro = "\xc2\xb5";  // the micro sign in UTF-8 (the UI font has it): "us" read oddly
 
+// A unit for a time axis spanning `span` seconds: s, ms or micro-s, with the factor that converts seconds to it.
 struct TimeUnit {
   double per_second;
   const char* name;

@@ -609,7 +609,7 @@ TEST_F(LabTest, BeforeAShotThePredictionIsPinnedAsA) {
   lab.physics_changed();
   ASSERT_FALSE(lab.compare.empty());
   EXPECT_EQ(lab.compare[0].back().position, predicted[0].back().position);  // the paths before the change
-  EXPECT_EQ(lab.compare_label, "A: the prediction before the first change");
+  EXPECT_EQ(lab.compare_label, "A: the prediction before the change that pinned it");
 }
 
 TEST_F(LabTest, TheCueBallIsNotDeleted) {
@@ -811,7 +811,10 @@ TEST_F(LabTest, ClearingKeptShotsIsUndone) {
   lab.clear_kept();
   EXPECT_TRUE(lab.kept.empty());
   EXPECT_EQ(lab.history.undo_label(), "clear kept shots");
+  lab.scene.allow_overlap = !lab.scene.allow_overlap;  // kept out of the history: the undo leaves it
+  const bool overlap = lab.scene.allow_overlap;
   lab.undo();
+  EXPECT_EQ(lab.scene.allow_overlap, overlap);
   ASSERT_EQ(lab.kept.size(), 2u);
   EXPECT_EQ(lab.kept[1].label, "follow 0.39 R, 1.80 m/s, aim 30.0 deg");
   EXPECT_EQ(lab.scene.cue->height, stroke.height);
@@ -839,6 +842,7 @@ TEST_F(LabTest, ACueStrikeTickedAgainIsTheSameStroke) {
   lab.undo();
   EXPECT_FALSE(lab.scene.cue);
   lab.undo();
+  ASSERT_TRUE(lab.scene.cue);
   EXPECT_EQ(lab.scene.cue->height, stroke.height);
 }
 
