@@ -233,7 +233,8 @@ int run_gui(const GuiOptions& options) {
         ImGui::NewFrame();
         new_marks_frame();
         readout("font size", ImGui::GetFontSize());
-        if (std::string note = vet_number_typing(); !note.empty()) lab.say(MessageKind::Refused, std::move(note));
+        if (TypingNote n = vet_number_typing(); !n.text.empty())
+          lab.say(n.refused ? MessageKind::Refused : MessageKind::Note, std::move(n.text));
         const Layout layout = frame_layout(settings, w, h);
         fit_camera(settings.camera, lab.scene, layout.view);
         follow_cue_ball(settings.camera, lab);

@@ -299,7 +299,10 @@ void Lab::undo() {
   const std::string what = history.undo_label();
   HistoryStep previous = history.undo(scene, [this] { return current_file(); }, target);
   if (previous.target || previous.kept) {  // only the practice target or the kept shots change: the shot stays
+    std::vector<KeptShot> since = previous.kept ? kept : std::vector<KeptShot>{};  // kept after the clear (K is no step)
     take_step(std::move(previous));
+    for (KeptShot& k : since) kept.push_back(std::move(k));
+    if (kept.size() > kMaxKeptShots) kept.erase(kept.begin(), kept.end() - kMaxKeptShots);
     return say(MessageKind::Note, "undone: " + what);
   }
   if (shot && !previous.file) ghost = trails(shot->sim().time());

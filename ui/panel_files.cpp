@@ -127,7 +127,11 @@ void save_as_popup(Lab& lab, std::string& typed, const std::string& folder) {
     armed.clear();
     return;
   }
-  ImGui::TextUnformatted("File (a .json scene):");
+  // The folder a relative name is taken in, up front: after a save there it is the scene's, and "drills/mine" typed
+  // again went into drills/drills.
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + em(420));
+  ImGui::Text("File (a .json scene; a relative name is taken in %s):", folder.c_str());
+  ImGui::PopTextWrapPos();
   ImGui::SetNextItemWidth(em(420));
   const bool enter = ImGui::InputText("##saveas", &typed, ImGuiInputTextFlags_EnterReturnsTrue);
   mark("save path");

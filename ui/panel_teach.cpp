@@ -259,7 +259,7 @@ void energy_bars(const Lab& lab) {
   // A ball dropped into a pocket turns height into heat and sound beyond what ever moved: those bars fit too.
   scale = std::max({scale, kEnergyBarFloor, std::abs(potential), std::abs(lost)});
   readout("energy at the start", at_start);
-  text_wrapped("Energy (J): the bars add up to the energy at the start, %.4g J", at_start);
+  text_wrapped("Energy (J): the bars add up to the energy at the start, %.4f J", at_start);  // as the bars read
   bar_chart("energy", {{"moving", translation, IM_COL32(80, 170, 255, 255)},
                        {"spinning", rotation, IM_COL32(255, 220, 80, 255)},
                        {"in contacts", f.energy.elastic, IM_COL32(120, 230, 120, 255)},
@@ -268,8 +268,8 @@ void energy_bars(const Lab& lab) {
             scale, "J");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("in contacts: elastic energy of squeezed contacts (a resting ball's weight presses it about a "
-                      "micrometre into the cloth: a few microjoules);\nheight: gravity's potential energy since the "
-                      "start (a ball sinks into the cloth, hops, falls into a pocket), for a ball on a rod above the "
+                      "micrometre into the cloth: a few microjoules);\nheight: gravity's potential energy, counted from "
+                      "where a ball starts (it sinks into the cloth, hops, falls into a pocket) or, on a rod, from the "
                       "bottom of its swing;\nheat, sound: what friction and "
                       "contact damping have taken out of the motion");
 }

@@ -92,24 +92,32 @@ std::string take_slider_note() { return std::exchange(slider_note, std::string()
 
 void integer_entry() { current_integers.insert(ImGui::GetItemID()); }
 
-std::string vet_number_typing() {
+TypingNote vet_number_typing() {
   const ImGuiContext& g = *GImGui;
-  const ImGuiIO& io = ImGui::GetIO();
+  ImGuiIO& io = ImGui::GetIO();
   // Every number entry here is a slider's or drag's typed entry (ctrl+click), whose filter lets through what this does:
   // ImGui's CharsScientific for a double, CharsDecimal (no e) for an integer.
   if (g.ActiveId == 0 || g.TempInputId != g.ActiveId) return {};
   const bool integer = last_integers.count(g.ActiveId) > 0;
   const char* takes = integer ? "0123456789.+-*/" : "0123456789.+-*/eE";
-  std::string dropped;
-  for (ImWchar c : io.InputQueueCharacters) {
-    if (c < 0x20 || (c < 0x80 && c != ' ' && std::strchr(takes, static_cast<char>(c)))) continue;
+  static ImGuiID entry = 0;    // the entry the characters dropped so far were typed into (one key a frame)
+  static std::string dropped;  // all of them, named in every note of that entry
+  if (entry != g.ActiveId) entry = g.ActiveId, dropped.clear();
+  const size_t before = dropped.size();
+  bool comma = false;
+  for (ImWchar& c : io.InputQueueCharacters) {
+    // A decimal comma in a number with decimals is its point (2,5 read 25 and was clamped); in a whole number a comma
+    // groups thousands, which ImGui's dropping of it keeps right.
+    if (c == ',' && !integer) c = '.', comma = true;
+    if (c < 0x20 || c == ',' || (c < 0x80 && c != ' ' && std::strchr(takes, static_cast<char>(c)))) continue;
     char utf8[5];
-    dropped += ImTextCharToUtf8(utf8, c);
+    dropped += std::string(dropped.empty() ? "'" : ", '") + ImTextCharToUtf8(utf8, c) + "'";
   }
-  if (dropped.empty()) return {};
-  return "'" + dropped + "' is not part of " + (integer ? "a whole number: the field takes digits and signs"
-                                                         : "a number: the field takes digits, '.' for decimals, e for "
-                                                           "powers of ten and signs");
+  if (dropped.size() == before) return {comma ? "',' is taken as the decimal point" : "", false};
+  return {dropped + " cannot be part of " + (integer ? "a whole number: the field takes digits and signs"
+                                                    : "a number: the field takes digits, '.' or ',' for decimals, e "
+                                                      "for powers of ten and signs"),
+          true};
 }
 
 bool tip_widget(CueStrike& cue, float size) {

@@ -30,9 +30,14 @@ class Fields {
 bool slider(const char* id, double& v, double lo, double hi, const char* format, bool log = false);
 // What the last slider entry that had to be clamped says ("stiffness: 1e+30 is outside ..."), once; else empty.
 std::string take_slider_note();
-// Once a frame, before the panels: what was typed into the number field being edited that it drops ("'a,' is not
-// part of a number: ..."), where ImGui would drop it without a word; else empty.
-std::string vet_number_typing();
+// Once a frame, before the panels: what was typed into the number field being edited that it drops ("'a', ' ' cannot
+// be part of a number: ...", refused), where ImGui would drop it without a word; a decimal comma is made the point
+// (a note says so). Empty when all is well.
+struct TypingNote {
+  std::string text;
+  bool refused = false;
+};
+TypingNote vet_number_typing();
 void integer_entry();  // right after an integer slider: its typed entry takes no e (what vet_number_typing says)
 
 // A drawn ball face: click or drag to put the cue tip (right is the shooter's right, up is follow); the dashed

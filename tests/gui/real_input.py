@@ -670,14 +670,20 @@ def developer(binary, root, display, work):
     time.sleep(0.5)
     s = app.state()
     check(abs(stiff(s) - 4e9) < 1, "Escape leaves the stiffness as it was")
-    # A character the field cannot take is dropped, and the note says which: a decimal comma would have made 2,5e9
-    # read 25e9 without a word.
+    # A decimal comma is the point (2,5e9 read 25e9 without a word); a character a number cannot hold is dropped,
+    # and the note names it.
     app.click_widget(s, "stiffness ball_ball", mods=("ctrl",))
     app.key("ctrl+a")
     app.type("2,5e9")
-    s = app.wait(lambda s: "is not part of a number" in s["message"], 10, "a comma typed is named")
-    check(s["message"].startswith("',' is not part of a number") and s["message_kind"] == "refused",
-          f"the note names the comma ({s['message']!r})")
+    app.key("Return")
+    s = app.wait(lambda s: abs(stiff(s) - 2.5e9) < 1, 10, "2,5e9 typed sets 2.5e9")
+    check("decimal point" in s["message"], f"the note says the comma was taken as the point ({s['message']!r})")
+    app.click_widget(s, "stiffness ball_ball", mods=("ctrl",))
+    app.key("ctrl+a")
+    app.type("3 x")
+    s = app.wait(lambda s: "cannot be part of a number" in s["message"], 10, "a letter typed is named")
+    check(s["message"].startswith("' ', 'x' cannot be part of a number") and s["message_kind"] == "refused",
+          f"the note names the space and the letter ({s['message']!r})")
     app.key("Escape")
     time.sleep(0.5)
     # A whole number takes no e: 1e5 would read 15.
@@ -687,8 +693,8 @@ def developer(binary, root, display, work):
     app.click_widget(s, "max steps", mods=("ctrl",))
     app.key("ctrl+a")
     app.type("1e5")
-    s = app.wait(lambda s: "is not part of a whole number" in s["message"], 10, "an e typed into a whole number")
-    check(s["message"].startswith("'e' is not part of a whole number"), f"the note names the e ({s['message']!r})")
+    s = app.wait(lambda s: "cannot be part of a whole number" in s["message"], 10, "an e typed into a whole number")
+    check(s["message"].startswith("'e' cannot be part of a whole number"), f"the note names the e ({s['message']!r})")
     app.key("Escape")
     time.sleep(0.3)
     s = scroll_into_view(app, "World and integrator")

@@ -823,6 +823,18 @@ TEST_F(LabTest, ClearingKeptShotsIsUndone) {
   EXPECT_TRUE(lab.kept.empty());
   lab.undo();
   EXPECT_EQ(lab.kept.size(), 2u);
+  // A shot kept after the clear stays when the clear is undone (K is no step of its own: undoing it lost that shot).
+  lab.clear_kept();
+  lab.scene.cue->speed = 3;
+  lab.shoot();
+  lab.keep_shot();
+  lab.undo();  // the shot
+  lab.undo();  // the clear
+  ASSERT_EQ(lab.kept.size(), 3u);
+  EXPECT_EQ(lab.kept[2].label, "follow 0.39 R, 3.00 m/s, aim 30.0 deg");
+  lab.redo();
+  ASSERT_EQ(lab.kept.size(), 1u);
+  EXPECT_EQ(lab.kept[0].label, "follow 0.39 R, 3.00 m/s, aim 30.0 deg");
 }
 
 // From a coach's trial: unticking the cue strike and ticking it again (then the only way to strike another ball) lost
