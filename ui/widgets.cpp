@@ -97,12 +97,13 @@ TypingNote vet_number_typing() {
   ImGuiIO& io = ImGui::GetIO();
   // Every number entry here is a slider's or drag's typed entry (ctrl+click), whose filter lets through what this does:
   // ImGui's CharsScientific for a double, CharsDecimal (no e) for an integer.
-  if (g.ActiveId == 0 || g.TempInputId != g.ActiveId) return {};
-  const bool integer = last_integers.count(g.ActiveId) > 0;
-  const char* takes = integer ? "0123456789.+-*/" : "0123456789.+-*/eE";
   static ImGuiID entry = 0;    // the entry the characters dropped so far were typed into (one key a frame)
   static std::string dropped;  // all of them, named in every note of that entry
-  if (entry != g.ActiveId) entry = g.ActiveId, dropped.clear();
+  const bool typing = g.ActiveId != 0 && g.TempInputId == g.ActiveId;
+  if (!typing || entry != g.ActiveId) entry = typing ? g.ActiveId : 0, dropped.clear();  // a new entry starts afresh
+  if (!typing) return {};
+  const bool integer = last_integers.count(g.ActiveId) > 0;
+  const char* takes = integer ? "0123456789.+-*/" : "0123456789.+-*/eE";
   const size_t before = dropped.size();
   bool comma = false;
   for (ImWchar& c : io.InputQueueCharacters) {

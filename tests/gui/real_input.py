@@ -686,6 +686,12 @@ def developer(binary, root, display, work):
           f"the note names the space and the letter ({s['message']!r})")
     app.key("Escape")
     time.sleep(0.5)
+    app.click_widget(app.state(), "stiffness ball_ball", mods=("ctrl",))  # a new entry names its own alone
+    app.key("ctrl+a")
+    app.type("5y")
+    s = app.wait(lambda s: s["message"].startswith("'y' cannot"), 10, "the next entry names only its own letter")
+    app.key("Escape")
+    time.sleep(0.5)
     # A whole number takes no e: 1e5 would read 15.
     s = scroll_into_view(app, "World and integrator")
     app.click_widget(s, "World and integrator")
