@@ -245,8 +245,9 @@ bool Lab::take_compare() {
 void Lab::pin_compare() {
   if (!take_compare()) return;
   const auto changes = physics_changes();
-  compare_label = changes.empty() ? "A: as loaded" : "A: pinned (" + std::to_string(changes.size()) + " changes)";
-  if (!shot) compare_label += ", predicted";
+  // Short: the line is cut at the panel's edge in presentation mode ("A: as loaded, predicte").
+  const std::string what = shot ? "A: " : "A, predicted: ";
+  compare_label = what + (changes.empty() ? "as loaded" : std::to_string(changes.size()) + " changes");
 }
 
 void Lab::start_shot(const Scene& start) {

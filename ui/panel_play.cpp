@@ -261,7 +261,12 @@ void notes_section(Lab& lab) {
     }
     if (tall > cap) ImGui::EndChild();
     else if (*text) text_wrapped("%s", text);
-    if (ImGui::SmallButton(lab.scene.description.empty() ? "Add notes" : "Edit name and notes")) editing = true;
+    // The long label where it fits: presentation mode's large text cut it to "Edit name and note".
+    const bool fits = ImGui::CalcTextSize("Edit name and notes").x + 2 * ImGui::GetStyle().FramePadding.x <=
+                      ImGui::GetContentRegionAvail().x;
+    const char* edit = lab.scene.description.empty() ? "Add notes###edit" : fits ? "Edit name and notes###edit"
+                                                                                  : "Edit###edit";
+    if (ImGui::SmallButton(edit)) editing = true;
     mark("Edit notes");
     return;
   }

@@ -199,8 +199,8 @@ void changes_section(Lab& lab) {
                                : "keep the predicted paths as A: later changes' predictions are drawn as B over them");
   ImGui::EndDisabled();
   ImGui::Checkbox("A/B overlay", &lab.settings.view.compare);
-  // One short line whatever it says (the reason above), the rest in its tooltip.
-  ImGui::TextDisabled("%s", lab.compare.empty() ? "A: none yet" : lab.compare_label.c_str());
+  // A short line, wrapped in a narrow panel (presentation mode cut it), the rest in its tooltip.
+  hint(lab.compare.empty() ? "A: none yet" : lab.compare_label);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("%s", !lab.compare.empty()       ? "A's trails are the dashed grey lines"
                             : lab.settings.view.compare ? "the first change pins the shot (or prediction) before it"

@@ -751,7 +751,7 @@ def developer(binary, root, display, work):
     s = app.wait(lambda s: "Pin as A" in s["widgets"] and s["prediction_ready"], 30, "the cut is predicted")
     app.click_widget(s, "Pin as A")
     s = app.wait(lambda s: s["physics"]["compare_trails"] == 2, 10, "Pin as A before a shot pins the prediction")
-    check(s["physics"]["compare_label"] == "A: as loaded, predicted", f"A says so ({s['physics']['compare_label']!r})")
+    check(s["physics"]["compare_label"] == "A, predicted: as loaded", f"A says so ({s['physics']['compare_label']!r})")
     s = app.state()
     if check("ball_pocket" in s["widgets"], "the cut's Tuning tab lists the pockets' lining"):
         s = scroll_into_view(app, "ball_pocket")

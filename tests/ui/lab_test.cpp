@@ -599,7 +599,7 @@ TEST_F(LabTest, BeforeAShotThePredictionIsPinnedAsA) {
   EXPECT_EQ(lab.compare[0].size(), predicted[0].size());
   EXPECT_EQ(lab.compare[0].back().position, predicted[0].back().position);
   EXPECT_TRUE(lab.compare_frames.empty());
-  EXPECT_EQ(lab.compare_label, "A: as loaded, predicted");
+  EXPECT_EQ(lab.compare_label, "A, predicted: as loaded");
 
   lab.reset_physics();  // A goes with a reset
   ASSERT_TRUE(lab.compare.empty());
